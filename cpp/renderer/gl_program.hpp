@@ -1,0 +1,20 @@
+// Compiling and linking GLSL programs with errors that name the stage and carry the driver's log.
+#pragma once
+
+#include <GLES3/gl3.h>
+
+#include <string>
+#include <vector>
+
+namespace conecurl {
+
+struct ProgramSource {
+    std::string vertex;
+    std::string fragment;
+    std::vector<const char*> transformFeedbackVaryings;  // captured interleaved, if any
+};
+
+// Returns the linked program, or 0 with `error` set to a readable message.
+GLuint buildProgram(const ProgramSource& source, std::string& error);
+
+}  // namespace conecurl

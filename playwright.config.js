@@ -1,0 +1,32 @@
+// Browser tests run in Debian's Chromium (never a downloaded one) with WebGL2 on SwiftShader, so they
+// behave the same on any machine without a GPU. The repository is served by scripts/serve.mjs.
+import { defineConfig } from '@playwright/test';
+
+const port = 8089;
+
+export default defineConfig({
+  testDir: 'tests/browser',
+  timeout: 60_000,
+  workers: 2,
+  forbidOnly: !!process.env.CI,
+  // Reference images live beside the tests; only scripts/update-references.sh rewrites them.
+  snapshotPathTemplate: '{testDir}/references/{arg}{ext}',
+  expect: { toHaveScreenshot: { animations: 'disabled', caret: 'hide' } },
+  use: {
+    baseURL: `http://127.0.0.1:${port}`,
+    viewport: { width: 800, height: 600 },
+    deviceScaleFactor: 1,
+    launchOptions: {
+      executablePath: process.env.CHROMIUM_PATH || '/usr/bin/chromium',
+      args: [
+        '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-background-networking',
+        '--disable-component-update', '--disable-sync', '--no-first-run',
+      ],
+    },
+  },
+  webServer: {
+    command: `node scripts/serve.mjs --port ${port}`,
+    url: `http://127.0.0.1:${port}/web/demo/`,
+    reuseExistingServer: !process.env.CI,
+  },
+});

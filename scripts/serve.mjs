@@ -1,0 +1,42 @@
+// A small static server for the demo and the browser tests: serves the repository read-only on
+// loopback with the MIME types wasm and ES modules need. Usage: node scripts/serve.mjs [--port N]
+import http from 'node:http';
+import fs from 'node:fs';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
+const portArg = process.argv.indexOf('--port');
+const port = Number(portArg > 0 ? process.argv[portArg + 1] : process.env.PORT || 8080);
+const host = '127.0.0.1';
+const types = {
+  '.html': 'text/html; charset=utf-8', '.js': 'text/javascript', '.mjs': 'text/javascript',
+  '.wasm': 'application/wasm', '.css': 'text/css', '.json': 'application/json',
+  '.png': 'image/png', '.jpg': 'image/jpeg', '.svg': 'image/svg+xml', '.ico': 'image/x-icon',
+};
+
+const server = http.createServer((req, res) => {
+  const url = new URL(req.url, `http://${host}`);
+  if (url.pathname === '/') {
+    res.writeHead(302, { Location: '/web/demo/' });
+    return res.end();
+  }
+  let file = path.normalize(path.join(root, decodeURIComponent(url.pathname)));
+  if (!file.startsWith(root + path.sep)) {  // no escaping the repository with ../
+    res.writeHead(403);
+    return res.end('forbidden');
+  }
+  if (fs.existsSync(file) && fs.statSync(file).isDirectory()) file = path.join(file, 'index.html');
+  fs.readFile(file, (err, data) => {
+    if (err) {
+      res.writeHead(404, { 'Content-Type': 'text/plain' });
+      return res.end(`not found: ${url.pathname}`);
+    }
+    res.writeHead(200, {
+      'Content-Type': types[path.extname(file)] || 'application/octet-stream',
+      'Cache-Control': 'no-cache',
+    });
+    res.end(data);
+  });
+});
+server.listen(port, host, () => console.log(`conecurl demo: http://${host}:${port}/`));

@@ -1,0 +1,10 @@
+// Loads the built wasm module in Node. Emscripten 3.1.6's ES-module output cannot fetch its .wasm
+// under Node, so the bytes are read here and passed as wasmBinary (see DEVELOPERS.md).
+import fs from 'node:fs';
+
+const dist = new URL('../../dist/', import.meta.url);
+
+export async function loadEngineForNode() {
+  const { default: createConeCurlEngine } = await import(new URL('conecurl-engine.mjs', dist));
+  return createConeCurlEngine({ wasmBinary: fs.readFileSync(new URL('conecurl-engine.wasm', dist)) });
+}
