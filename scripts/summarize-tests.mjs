@@ -9,9 +9,9 @@ const read = (name) => {
 };
 const suites = [];
 
-// CTest: "100% tests passed, 0 tests failed out of 57", once per native variant.
-for (const m of read('native.log').matchAll(/tests passed, (\d+) tests? failed out of (\d+)/g)) {
-  suites.push({ name: 'native', passed: Number(m[2]) - Number(m[1]), failed: Number(m[1]) });
+// CTest: "100% tests passed, 0 tests failed out of 57" after "ctest variant: NAME", once per variant.
+for (const m of read('native.log').matchAll(/ctest variant: (\S+)[\s\S]*?tests passed, (\d+) tests? failed out of (\d+)/g)) {
+  suites.push({ name: m[1], passed: Number(m[3]) - Number(m[2]), failed: Number(m[2]) });
 }
 const tap = read('node.tap');
 const tapCount = (key) => Number((tap.match(new RegExp(`^# ${key} (\\d+)`, 'm')) || [0, 0])[1]);

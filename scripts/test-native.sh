@@ -7,5 +7,6 @@ for variant in native native-sanitized; do
   [ "$variant" = native-sanitized ] && flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DCONECURL_SANITIZE=ON)
   [ -f "build/$variant/CMakeCache.txt" ] || cmake -S . -B "build/$variant" "${flags[@]}" >/dev/null
   cmake --build "build/$variant" -j2
+  echo "ctest variant: $variant"
   (cd "build/$variant" && ctest --output-on-failure)
 done
