@@ -1,26 +1,59 @@
-// Page fragment shader: picks the front or the back texture by which way the normal faces the eye
-// (Samuel, sec. 2.2); the back is sampled with u mirrored so it reads correctly once turned.
+// Leaf fragment shader: shows the side of the leaf that faces the eye, found from the normal
+// (Samuel, sec. 2.2), each side with its own texture mapping so it reads the right way round; then
+// diffuse light from that side's own normal, gutter shading at the spine, and the soft shadow that
+// lifted leaves cast on resting pages.
 
-uniform sampler2D uFrontTexture;
-uniform sampler2D uBackTexture;
-uniform vec3 uEye;             // camera position in world space
-uniform float uShading;        // 0: flat colour, 1: full diffuse from the normal
+uniform sampler2D uFacingTexture;  // the +z side in page space
+uniform sampler2D uAwayTexture;
+uniform mat3 uFacingUv;            // (x / w, y / h, 1) -> image (u, v) for each side
+uniform mat3 uAwayUv;
+uniform vec2 uPageSize;
+uniform vec3 uEye;
+uniform vec3 uLightDirection;      // unit, towards the light
+uniform float uLighting;           // 0 or 1
+uniform float uGutter;             // 0 or 1
+uniform float uShadow;             // 0 or 1: this leaf receives the shadow mask
+uniform sampler2D uShadowMask;     // alpha of the lifted leaves' shadow, in screen space
+uniform vec2 uShadowTexel;         // 1 / mask size
+uniform vec2 uViewportInverse;     // 1 / drawing buffer size: gl_FragCoord to mask coordinates
+uniform vec3 uPaper;               // colour under transparent texels
 
 in vec3 vWorldPosition;
 in vec3 vNormal;
-in vec2 vTexCoord;
+in vec2 vPagePoint;
 
 out vec4 outColor;
 
+const float kAmbient = 0.35;
+
+float diffuse(vec3 n) { return kAmbient + (1.0 - kAmbient) * max(dot(n, uLightDirection), 0.0); }
+
 void main() {
     vec3 n = normalize(vNormal);
-    vec3 toEye = normalize(uEye - vWorldPosition);
-    float facing = dot(n, toEye);
-    vec4 color = facing >= 0.0
-        ? texture(uFrontTexture, vTexCoord)
-        : texture(uBackTexture, vec2(1.0 - vTexCoord.x, vTexCoord.y));
-    // Light from the eye: a curl darkens as it turns away, so its shape reads as 3D.
-    float diffuse = abs(facing);
-    float light = mix(1.0, 0.55 + 0.45 * diffuse, uShading);
-    outColor = vec4(color.rgb * light, 1.0);
+    bool facing = dot(n, uEye - vWorldPosition) >= 0.0;
+    vec2 st = vPagePoint / uPageSize;
+    vec2 uv = facing ? (uFacingUv * vec3(st, 1.0)).xy : (uAwayUv * vec3(st, 1.0)).xy;
+    vec4 texel = facing ? texture(uFacingTexture, uv) : texture(uAwayTexture, uv);
+    vec3 color = mix(uPaper, texel.rgb, texel.a);
+
+    // The side seen is lit by its own normal (a back is lit as a back), relative to a flat page so
+    // resting pages keep their true colours.
+    vec3 sideNormal = facing ? n : -n;
+    float light = mix(1.0, diffuse(sideNormal) / diffuse(vec3(0.0, 0.0, 1.0)), uLighting);
+    // Paper curves down into the binding: darker within a few percent of the width of the spine.
+    light *= 1.0 - uGutter * 0.22 * exp(-st.x / 0.045);
+
+    if (uShadow > 0.0) {
+        // A 3x3 tent blur of the mask softens the projected edge.
+        vec2 at = gl_FragCoord.xy * uViewportInverse;
+        float shadow = 0.0;
+        for (int i = -1; i <= 1; ++i) {
+            for (int j = -1; j <= 1; ++j) {
+                float weight = (i == 0 ? 2.0 : 1.0) * (j == 0 ? 2.0 : 1.0);
+                shadow += weight * texture(uShadowMask, at + 2.0 * vec2(float(i), float(j)) * uShadowTexel).a;
+            }
+        }
+        light *= 1.0 - shadow / 16.0;
+    }
+    outColor = vec4(color * light, 1.0);
 }

@@ -1,25 +1,38 @@
-// Page vertex shader: the static grid holds flat page coordinates; the cone deformation and the
-// paper's finite-difference normal are computed here from the curl uniforms. The renderer prepends
-// "#version 300 es", precision and cone_curl.glsl.
+// Leaf vertex shader: the static grid holds flat page coordinates; the cone deformation and the
+// paper's finite-difference normal are computed here from the curl uniforms, then the leaf is placed
+// in the world (spine position, mirroring for backward turns). The renderer prepends
+// "#version 300 es", precision, and cone_curl.glsl; with SHADOW_PASS defined the leaf is instead
+// flattened onto the page plane along the light, for the shadow mask.
 
 uniform vec3 uCurl;            // theta, apexY, rho (sanitized in C++)
-uniform vec2 uPageSize;        // width, height in world units
 uniform float uNormalStep;     // finite-difference step, ~1e-3 of the page height
+uniform mat4 uPageToWorld;     // rigid placement of the leaf (may mirror)
 uniform mat4 uViewProjection;
+#ifdef SHADOW_PASS
+uniform vec3 uLightDirection;  // unit, towards the light
+#endif
 
-in vec2 aPagePoint;            // flat page coordinates: x from the spine, y from the bottom edge
+layout(location = 0) in vec2 aPagePoint;  // flat page coordinates: x from the spine, y along it
 
 out vec3 vWorldPosition;       // also captured by transform feedback for the GPU-vs-C++ test
-out vec3 vNormal;              // front-face normal; also captured
-out vec2 vTexCoord;            // front texture coordinates (u across from the spine, v down)
+out vec3 vNormal;              // world normal of the +z side; also captured
+out vec2 vPagePoint;
 
 void main() {
     vec3 p = curlPoint(aPagePoint, uCurl);
     // Samuel, eqs. (1)-(3): project two neighbours a small step away and cross the differences.
     vec3 ps = curlPoint(aPagePoint + vec2(uNormalStep, 0.0), uCurl);
     vec3 pt = curlPoint(aPagePoint + vec2(0.0, uNormalStep), uCurl);
-    vNormal = normalize(cross(ps - p, pt - p));
-    vWorldPosition = p;
-    vTexCoord = vec2(aPagePoint.x / uPageSize.x, 1.0 - aPagePoint.y / uPageSize.y);
-    gl_Position = uViewProjection * vec4(p, 1.0);
+    vec3 n = normalize(cross(ps - p, pt - p));
+    // n is the normal of the +z side, found before any mirroring: placing it keeps it on that side.
+    vNormal = mat3(uPageToWorld) * n;
+    vec4 world = uPageToWorld * vec4(p, 1.0);
+    vWorldPosition = world.xyz;
+    vPagePoint = aPagePoint;
+#ifdef SHADOW_PASS
+    // Where the light ray through this point meets the page plane: the farther up, the farther away.
+    world.xy -= uLightDirection.xy * (world.z / uLightDirection.z);
+    world.z = 0.0;
+#endif
+    gl_Position = uViewProjection * world;
 }

@@ -4,6 +4,8 @@
 
 #include "cone_deform.hpp"
 #include "curl_schedule.hpp"
+#include "js_values.hpp"
+#include "leaf_placement.hpp"
 
 namespace {
 
@@ -37,6 +39,15 @@ Vec3Value finiteDifferenceNormal(double x, double y, const CurlParams& params, d
 }
 
 double beta(double x, double y, const CurlParams& params) { return coneBeta({x, y}, params); }
+
+// The C++ reference of where the shader puts page point (x, y) of a leaf drawn as `draw`.
+Vec3Value leafToWorld(const LeafDraw& draw, const std::string& binding, double pageHeight, double x, double y) {
+    return toValue(leafPointToWorld(draw, js::bindingFromString(binding), pageHeight, {x, y}));
+}
+
+Vec3Value leafNormal(const LeafDraw& draw, const std::string& binding, double pageHeight, double x, double y) {
+    return toValue(leafNormalToWorld(draw, js::bindingFromString(binding), pageHeight, {x, y}));
+}
 
 }  // namespace
 
@@ -77,4 +88,6 @@ EMSCRIPTEN_BINDINGS(conecurl_core) {
     function("curlPoint", &curlPagePoint);
     function("curlNormalFiniteDifference", &finiteDifferenceNormal);
     function("coneBeta", &beta);
+    function("leafPointToWorld", &leafToWorld);
+    function("leafNormalToWorld", &leafNormal);
 }

@@ -1,4 +1,4 @@
-// Embind exposure of the WebGL2 page renderer. Thin: it converts JS values at the boundary, checks
+// Embind exposure of the WebGL2 book renderer. Thin: it converts JS values at the boundary, checks
 // them, and turns failures into JS Errors with a clear message; drawing logic stays in the renderer.
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
@@ -6,66 +6,59 @@
 #include <memory>
 #include <string>
 
-#include "page_renderer.hpp"
+#include "book_renderer.hpp"
+#include "js_values.hpp"
 
 namespace {
 
 using namespace conecurl;
 using emscripten::val;
 
-[[noreturn]] void throwError(const std::string& message) {
-    val::global("Error").new_(val("conecurl: " + message)).throw_();
-}
-
-std::unique_ptr<PageRenderer> createRenderer(const std::string& canvasTarget) {
-    auto renderer = std::make_unique<PageRenderer>(canvasTarget);
+std::unique_ptr<BookRenderer> createRenderer(const std::string& canvasTarget) {
+    auto renderer = std::make_unique<BookRenderer>(canvasTarget);
     if (!renderer->ok()) {
         const std::string message = renderer->error();
         renderer.reset();  // release the context before the JS exception skips C++ destructors
-        throwError(message);
+        js::throwError("Error", message);
     }
     return renderer;
 }
 
-void setPageSize(PageRenderer& r, double width, double height) {
-    if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width) || !std::isfinite(height)) {
-        throwError("page size must be two positive finite numbers");
-    }
-    r.setPageSize(width, height);
+// { lighting, shadows, gutter }: booleans; missing keys keep their current value.
+void setOptions(BookRenderer& r, val options) {
+    RenderOptions next = r.options();
+    auto flag = [&options](const char* name, bool& out) {
+        const val value = options[name];
+        if (value.isUndefined()) return;
+        if (!value.isTrue() && !value.isFalse()) js::throwError("TypeError", std::string(name) + " must be true or false");
+        out = value.isTrue();
+    };
+    flag("lighting", next.lighting);
+    flag("shadows", next.shadows);
+    flag("gutter", next.gutter);
+    r.setOptions(next);
 }
 
 // `pixels` is any array-like of width * height * 4 bytes (Uint8Array, Uint8ClampedArray).
-void setPageImage(PageRenderer& r, int side, int width, int height, val pixels) {
-    if (side != 0 && side != 1) throwError("side must be 0 (front) or 1 (back)");
+void setPageImage(BookRenderer& r, int page, int width, int height, val pixels) {
     const double expected = static_cast<double>(width) * height * 4.0;
     if (width <= 0 || height <= 0 || pixels["length"].as<double>() != expected) {
-        throwError("page image must be width * height * 4 RGBA bytes");
+        js::throwError("TypeError", "page image must be width * height * 4 RGBA bytes");
     }
     std::string problem;
     {
         std::vector<std::uint8_t> bytes(static_cast<size_t>(expected));
         val(emscripten::typed_memory_view(bytes.size(), bytes.data())).call<void>("set", pixels);
-        problem = r.setPageImage(static_cast<PageSide>(side), width, height, bytes.data());
+        problem = r.setPageImage(page, width, height, bytes.data());
     }
-    if (!problem.empty()) throwError(problem);
-}
-
-void drawAt(PageRenderer& r, double t) {
-    if (!std::isfinite(t)) throwError("turn time t must be a finite number in [0, 1]");
-    r.drawAt(t);
+    if (!problem.empty()) js::throwError("Error", problem);
 }
 
 val copyToFloat32Array(const std::vector<float>& data) {
     return val::global("Float32Array").new_(emscripten::typed_memory_view(data.size(), data.data()));
 }
 
-val captureCurledVertices(PageRenderer& r, const CurlParams& params) {
-    return copyToFloat32Array(r.captureCurledVertices(params));
-}
-
-val gridPoints(PageRenderer& r) { return copyToFloat32Array(r.grid().points); }
-
-val readPixels(PageRenderer& r) {
+val readPixels(BookRenderer& r) {
     const RgbaImage image = r.readPixels();
     val result = val::object();
     result.set("width", image.width);
@@ -79,22 +72,23 @@ val readPixels(PageRenderer& r) {
 
 EMSCRIPTEN_BINDINGS(conecurl_renderer) {
     using namespace emscripten;
-    class_<PageRenderer>("PageRenderer")
+    class_<BookRenderer>("BookRenderer")
         .class_function("create", &createRenderer)
-        .function("setPageSize", &setPageSize)
-        .function("pageWidth", &PageRenderer::pageWidth)
-        .function("pageHeight", &PageRenderer::pageHeight)
-        .function("setSchedule", &PageRenderer::setSchedule)
-        .function("schedule", &PageRenderer::schedule)
-        .function("setShading", &PageRenderer::setShading)
+        .function("setOptions", &setOptions)
         .function("setPageImage", &setPageImage)
-        .function("paramsAt", &PageRenderer::paramsAt)
-        .function("drawAt", &drawAt)
-        .function("draw", &PageRenderer::draw)
+        .function("releasePageImage", &BookRenderer::releasePageImage)
+        .function("hasPageImage", &BookRenderer::hasPageImage)
+        .function("residentPageImages", &BookRenderer::residentPageImages)
+        .function("draw", &BookRenderer::draw)
+        .function("framesDrawn", &BookRenderer::framesDrawn)
         .function("readPixels", &readPixels)
-        .function("captureCurledVertices", &captureCurledVertices)
-        .function("gridPoints", &gridPoints)
-        .function("gridColumns", optional_override([](PageRenderer& r) { return r.grid().columns; }))
-        .function("gridRows", optional_override([](PageRenderer& r) { return r.grid().rows; }))
-        .function("maxTextureSize", &PageRenderer::maxTextureSize);
+        .function("captureLeaf", optional_override([](BookRenderer& r, const Book& book, int index) {
+                      return copyToFloat32Array(r.captureLeaf(book, index));
+                  }))
+        .function("gridPoints", optional_override([](BookRenderer& r) { return copyToFloat32Array(r.grid().points); }))
+        .function("gridColumns", optional_override([](BookRenderer& r) { return r.grid().columns; }))
+        .function("gridRows", optional_override([](BookRenderer& r) { return r.grid().rows; }))
+        .function("setGridRows", &BookRenderer::setGridRows)
+        .function("maxTextureSize", &BookRenderer::maxTextureSize)
+        .function("recreateGpuObjects", &BookRenderer::recreateGpuObjects);
 }

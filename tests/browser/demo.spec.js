@@ -1,34 +1,52 @@
-// Browser: the demo page served by `npm start` loads without errors, shows the page, and its button
-// turns the page over and back, ending on exact frames.
+// Browser: the demo page served by `npm start` loads without errors, shows the book, turns pages
+// with its buttons and the keyboard, and opens frozen at an exact frame with ?t=.
 import { test, expect } from '@playwright/test';
 import { openReady } from './helpers.js';
 
-test('browser: demo loads with no console error and draws the page', async ({ page }) => {
+test('browser: demo loads with no console error and shows the cover', async ({ page }) => {
   const problems = await openReady(page, '/web/demo/');
   expect(problems).toEqual([]);
+  await expect(page.locator('#where')).toHaveText('Page 1 of 40');
   await expect(page.locator('#readout')).toContainText('θ 90.0°');
-  const drawn = await page.evaluate(() => {
-    const canvas = document.getElementById('book');
-    return canvas.width > 0 && canvas.height > 0;
-  });
-  expect(drawn).toBe(true);
 });
 
-test('browser: demo button turns the page to t=1 and back to t=0', async ({ page }) => {
+test('browser: demo Next and Prev buttons turn a leaf each way and settle', async ({ page }) => {
   await openReady(page, '/web/demo/');
-  await page.selectOption('#duration', '600');
-  await page.click('#turn');
-  await expect(page.locator('body')).toHaveAttribute('data-state', 'turned', { timeout: 15000 });
-  await expect(page.locator('#readout')).toContainText('t 1.000');
-  await expect(page.locator('#readout')).toContainText('ρ 180.0°');
-  await expect(page.locator('#turn')).toHaveText('Turn back');
-  await page.click('#turn');
+  await page.selectOption('#speed', '0.5');
+  await page.click('#next');
   await expect(page.locator('body')).toHaveAttribute('data-state', 'open', { timeout: 15000 });
-  await expect(page.locator('#readout')).toContainText('t 0.000');
+  await expect(page.locator('#where')).toHaveText('Pages 2–3 of 40');
+  await page.click('#next');
+  await expect(page.locator('#where')).toHaveText('Pages 4–5 of 40');
+  await page.click('#prev');
+  await expect(page.locator('#where')).toHaveText('Pages 2–3 of 40');
+  await expect(page.locator('body')).toHaveAttribute('data-state', 'open', { timeout: 15000 });
+});
+
+test('browser: demo turns with the arrow keys when the book has focus', async ({ page }) => {
+  await openReady(page, '/web/demo/?page=9');
+  await page.selectOption('#speed', '0.5');
+  await expect(page.locator('#where')).toHaveText('Pages 10–11 of 40');
+  await page.focus('#book');
+  // SwiftShader under a loaded CI machine draws few frames a second; each advances at most 0.1 s.
+  await page.keyboard.press('ArrowRight');
+  await expect(page.locator('#where')).toHaveText('Pages 12–13 of 40', { timeout: 15000 });
+  await page.keyboard.press('ArrowLeft');
+  await expect(page.locator('#where')).toHaveText('Pages 10–11 of 40', { timeout: 15000 });
 });
 
 test('browser: demo ?t=0.25 opens frozen at that frame with the schedule read out', async ({ page }) => {
-  await openReady(page, '/web/demo/?t=0.25');
+  await openReady(page, '/web/demo/?page=3&t=0.25');
   await expect(page.locator('#readout')).toContainText('t 0.250');
   await expect(page.locator('#readout')).toContainText('ρ 45.0°');
+});
+
+test('browser: demo switches display and direction without errors', async ({ page }) => {
+  const problems = await openReady(page, '/web/demo/?page=4');
+  for (const [id, value] of [['display', 'single'], ['direction', 'rtl'], ['direction', 'vertical'], ['display', 'double']]) {
+    await page.selectOption(`#${id}`, value);
+    await page.waitForTimeout(200);
+  }
+  await expect(page.locator('#where')).toContainText('of 40');
+  expect(problems).toEqual([]);
 });

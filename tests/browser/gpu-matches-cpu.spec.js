@@ -1,54 +1,87 @@
-// Browser (WebGL2 on SwiftShader): the vertex shader that draws the page, read back through transform
-// feedback, computes the same curled positions as the C++ reference, to within 1e-4 of the page height.
+// Browser (WebGL2 on SwiftShader): the vertex shader that draws each leaf, read back through
+// transform feedback, puts every vertex where the C++ reference (curlPoint placed by
+// leafPointToWorld) does, to within 1e-4 of the page height, for every spine position and both
+// directions of turn.
 import { test, expect } from '@playwright/test';
 import { openReady } from './helpers.js';
 
 const TIMES = [0, 0.05, 0.1, 0.15, 0.25, 0.3, 0.4, 0.5, 0.6, 0.75, 0.9, 1];
 
-test('browser: transform-feedback positions match C++ curlPoint at 12 turn times (max error < 1e-4 H)', async ({ page }) => {
-  await openReady(page, '/tests/browser/fixtures/curl-fixture.html');
-  const results = await page.evaluate((times) => {
-    const { engine, view } = window.fixture;
-    const renderer = view.renderer;
-    const points = renderer.gridPoints();
-    const height = renderer.pageHeight();
-    return times.map((t) => {
-      const params = renderer.paramsAt(t);
-      const captured = renderer.captureCurledVertices(params);
+// Runs in the page: poses a turn and compares the captured leaf with the C++ reference.
+async function measure(page, { direction, turn, times, pageCount = 6, start = 1, hardPages }) {
+  return page.evaluate(async ({ direction, turn, times, pageCount, start, hardPages }) => {
+    const { engine } = window.fixture;
+    const { BookView } = await import('/web/src/book-view.js');
+    const canvas = document.createElement('canvas');
+    canvas.style.cssText = 'width:320px;height:200px';
+    document.body.append(canvas);
+    const view = await BookView.create(canvas, { engine, pageCount, direction, hardPages });
+    view.jumpTo(start);
+    const binding = view.book.binding();
+    const height = view.book.pageHeight();
+    const results = [];
+    for (const t of times) {
+      view.showTurn(turn, t);
+      const frame = view.book.frame();
+      const index = frame.findIndex((leaf) => !leaf.resting);
+      const draw = frame[index];
+      const captured = view.renderer.captureLeaf(view.book, index);
+      const points = view.renderer.gridPoints();
       let maxError = 0;
       let maxNormalAngle = 0;
       for (let i = 0; i < points.length / 2; i++) {
-        const ref = engine.curlPoint(points[2 * i], points[2 * i + 1], params);
+        const [x, y] = [points[2 * i], points[2 * i + 1]];
+        const ref = engine.leafPointToWorld(draw, binding, height, x, y);
         const c = captured.subarray(6 * i, 6 * i + 6);
         maxError = Math.max(maxError, Math.abs(ref.x - c[0]), Math.abs(ref.y - c[1]), Math.abs(ref.z - c[2]));
-        const dot = ref.normal.x * c[3] + ref.normal.y * c[4] + ref.normal.z * c[5];
-        maxNormalAngle = Math.max(maxNormalAngle, Math.acos(Math.min(1, dot)));
+        const n = engine.leafNormalToWorld(draw, binding, height, x, y);
+        maxNormalAngle = Math.max(maxNormalAngle, Math.acos(Math.min(1, n.x * c[3] + n.y * c[4] + n.z * c[5])));
       }
-      return { t, vertices: points.length / 2, captured: captured.length / 6, maxError: maxError / height, maxNormalAngle };
+      results.push({ t, vertices: points.length / 2, captured: captured.length / 6, maxError: maxError / height, maxNormalAngle });
+    }
+    view.destroy();
+    canvas.remove();
+    return results;
+  }, { direction, turn, times, pageCount, start, hardPages });
+}
+
+for (const direction of ['ltr', 'rtl', 'vertical']) {
+  for (const turn of ['forward', 'backward']) {
+    test(`browser: ${direction} ${turn} turn: transform-feedback positions match C++ at 12 turn times (< 1e-4 H)`, async ({ page }) => {
+      await openReady(page, '/tests/browser/fixtures/curl-fixture.html');
+      const results = await measure(page, { direction, turn, times: TIMES });
+      console.log(`GPU vs C++, ${direction} ${turn}: worst ${Math.max(...results.map((r) => r.maxError)).toExponential(2)} H, `
+        + `normal ${Math.max(...results.map((r) => r.maxNormalAngle)).toExponential(2)} rad`);
+      for (const r of results) {
+        expect(r.captured, `every vertex captured at t=${r.t}`).toBe(r.vertices);
+        expect(r.maxError, `position error at t=${r.t}`).toBeLessThan(1e-4);
+        // The shader's normal is the paper's float32 forward difference (step 1e-3 H): first-order error
+        // of about step x curvature against the exact normal. 0.01 rad; a side mix-up would be ~pi.
+        expect(r.maxNormalAngle, `normal angle at t=${r.t}`).toBeLessThan(0.01);
+      }
     });
-  }, TIMES);
-  console.log('GPU vs C++ (error in page heights, normal angle in rad):');
-  for (const r of results) console.log(`  t=${r.t}: ${r.maxError.toExponential(2)}  normal ${r.maxNormalAngle.toExponential(2)}`);
-  for (const r of results) {
-    expect(r.captured, `every vertex captured at t=${r.t}`).toBe(r.vertices);
-    expect(r.maxError, `position error at t=${r.t}`).toBeLessThan(1e-4);
-    // The shader's normal is the paper's float32 forward difference (step 1e-3 H): first-order error
-    // of about step x curvature, against the exact normal; 0.01 rad is still far from a wrong side.
-    expect(r.maxNormalAngle, `normal angle at t=${r.t}`).toBeLessThan(0.01);
   }
+}
+
+test('browser: hard leaf (cover) turns rigidly and matches C++ too', async ({ page }) => {
+  await openReady(page, '/tests/browser/fixtures/curl-fixture.html');
+  const results = await measure(page, { direction: 'ltr', turn: 'forward', times: [0.2, 0.5, 0.8], start: 0, hardPages: [0, 1] });
+  for (const r of results) expect(r.maxError, `position error at t=${r.t}`).toBeLessThan(1e-4);
 });
 
-test('browser: the readback test would notice a wrong shader (different t gives a large error)', async ({ page }) => {
+test('browser: the readback comparison would notice a wrong pose (t 0.31 against 0.30 differs by > 1e-3)', async ({ page }) => {
   await openReady(page, '/tests/browser/fixtures/curl-fixture.html');
   const error = await page.evaluate(() => {
     const { engine, view } = window.fixture;
-    const renderer = view.renderer;
-    const points = renderer.gridPoints();
-    const captured = renderer.captureCurledVertices(renderer.paramsAt(0.31));
-    const ref = renderer.paramsAt(0.3);
+    view.showTurn('forward', 0.3);
+    const reference = view.book.frame().find((leaf) => !leaf.resting);
+    view.showTurn('forward', 0.31);
+    const index = view.book.frame().findIndex((leaf) => !leaf.resting);
+    const captured = view.renderer.captureLeaf(view.book, index);
+    const points = view.renderer.gridPoints();
     let maxError = 0;
     for (let i = 0; i < points.length / 2; i++) {
-      const p = engine.curlPoint(points[2 * i], points[2 * i + 1], ref);
+      const p = engine.leafPointToWorld(reference, 'left', 1, points[2 * i], points[2 * i + 1]);
       maxError = Math.max(maxError, Math.abs(p.x - captured[6 * i]), Math.abs(p.z - captured[6 * i + 2]));
     }
     return maxError;

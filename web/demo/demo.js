@@ -1,13 +1,17 @@
-// Demo wiring: loads the engine, shows the generated page, animates turns, and plots the schedule
-// the engine computes (theta, Ay, rho over t) with a marker at the frame on screen.
+// Demo wiring: a 40-page book drawn at run time, turned with buttons, keys or exact poses from the
+// scrubber, and the schedule the engine computes (theta, Ay, rho over t) plotted beside it.
 import { loadEngine } from '../src/engine.js';
-import { CurlPageView } from '../src/curl-page-view.js';
-import { drawFront, drawBack } from './page-art.js';
+import { BookView } from '../src/book-view.js';
+import { DEMO_PAGE_COUNT, drawBookPage, isHardPage } from './book-pages.js';
 
 const $ = (id) => document.getElementById(id);
 const deg = 180 / Math.PI;
+const PAGE_WINDOW = 4;  // pages kept as textures on each side of the open spread
 
-function plotSchedule(engine, t) {
+let engine;
+let view;
+
+function plotSchedule(t) {
   const canvas = $('plot');
   const g = canvas.getContext('2d');
   const { width: w, height: h } = canvas;
@@ -35,42 +39,83 @@ function plotSchedule(engine, t) {
   g.beginPath(); g.moveTo(t * w, 0); g.lineTo(t * w, h); g.stroke();
 }
 
-function showSchedule(engine, t) {
+function showSchedule(t) {
   const p = engine.curlAt(t);
   $('scrub').value = String(t);
   $('readout').textContent =
     `t ${t.toFixed(3)}  θ ${(p.theta * deg).toFixed(1)}°  Ay ${p.apexY.toFixed(2)}  ρ ${(p.rho * deg).toFixed(1)}°`;
-  plotSchedule(engine, t);
+  plotSchedule(t);
 }
 
-function show(engine, view, t) {
-  view.drawAt(t);
-  showSchedule(engine, t);
+// Keeps textures only for the pages near the open spread: memory stays flat however long the book.
+function loadPagesAround() {
+  const first = view.book.firstVisiblePage();
+  for (let page = 0; page < DEMO_PAGE_COUNT; page++) {
+    const near = Math.abs(page - first) <= PAGE_WINDOW;
+    const loaded = view.renderer.hasPageImage(page);
+    if (near && !loaded) view.setPageImage(page, drawBookPage(page));
+    else if (!near && loaded) view.releasePageImage(page);
+  }
+  const last = Math.min(DEMO_PAGE_COUNT - 1, first + (view.book.isSingle() || first === 0 ? 0 : 1));
+  $('where').textContent = first === last ? `Page ${first + 1} of ${DEMO_PAGE_COUNT}`
+    : `Pages ${first + 1}–${last + 1} of ${DEMO_PAGE_COUNT}`;
+}
+
+async function buildBook(page) {
+  view?.destroy();
+  view = await BookView.create($('book'), {
+    engine,
+    pageCount: DEMO_PAGE_COUNT,
+    display: $('display').value,
+    direction: $('direction').value,
+    hardPages: Array.from({ length: DEMO_PAGE_COUNT }, (_, i) => i).filter(isHardPage),
+    turnSeconds: Number($('speed').value),
+    lighting: $('lighting').checked,
+    shadows: $('shadows').checked,
+    gutter: $('gutter').checked,
+  });
+  view.jumpTo(view.book.positionOfPage(page));
+  loadPagesAround();
+}
+
+async function turn(direction) {
+  const turning = direction === 'forward' ? view.next() : view.prev();
+  loadPagesAround();
+  document.body.dataset.state = 'turning';
+  await turning;
+  loadPagesAround();  // a turn that had to wait for a moving leaf starts only now
+  if (!view.animating) document.body.dataset.state = 'open';
 }
 
 async function main() {
-  const engine = await loadEngine();
-  const view = await CurlPageView.create($('book'), { engine });
-  view.setImage('front', drawFront());
-  view.setImage('back', drawBack());
-  const fixed = new URLSearchParams(location.search).get('t');
-  show(engine, view, fixed === null ? 0 : Number(fixed));
+  engine = await loadEngine();
+  const params = new URLSearchParams(location.search);
+  await buildBook(Number(params.get('page') ?? 0));
+  const fixed = params.get('t');
+  if (fixed !== null) view.showTurn('forward', Number(fixed));
+  showSchedule(fixed === null ? 0 : Number(fixed));
 
-  $('turn').addEventListener('click', async () => {
-    const to = view.t < 0.5 ? 1 : 0;
-    $('turn').disabled = true;
-    document.body.dataset.state = 'turning';
-    await view.turnTo(to, { duration: Number($('duration').value), onFrame: (t) => showSchedule(engine, t) });
-    $('turn').textContent = to === 1 ? 'Turn back' : 'Turn page';
-    $('turn').disabled = false;
-    document.body.dataset.state = to === 1 ? 'turned' : 'open';
+  $('next').addEventListener('click', () => turn('forward'));
+  $('prev').addEventListener('click', () => turn('backward'));
+  $('book').addEventListener('keydown', (event) => {
+    const forwardKeys = view.book.binding() === 'right' ? ['ArrowLeft'] : ['ArrowRight', 'ArrowDown'];
+    const backwardKeys = view.book.binding() === 'right' ? ['ArrowRight'] : ['ArrowLeft', 'ArrowUp'];
+    if (forwardKeys.includes(event.key) || event.key === 'PageDown') turn('forward');
+    else if (backwardKeys.includes(event.key) || event.key === 'PageUp') turn('backward');
+    else return;
+    event.preventDefault();
   });
-  $('scrub').addEventListener('input', () => show(engine, view, Number($('scrub').value)));
-  $('shading').addEventListener('change', () => {
-    view.renderer.setShading($('shading').checked);
-    show(engine, view, view.t);
+  $('scrub').addEventListener('input', () => {
+    const t = Number($('scrub').value);
+    view.showTurn('forward', t);
+    showSchedule(t);
   });
-  new ResizeObserver(() => show(engine, view, view.t)).observe($('book'));
+  for (const id of ['display', 'direction', 'speed']) {
+    $(id).addEventListener('change', () => buildBook(view.book.firstVisiblePage()));
+  }
+  for (const id of ['lighting', 'shadows', 'gutter']) {
+    $(id).addEventListener('change', () => view.setOptions({ [id]: $(id).checked }));
+  }
   document.body.dataset.ready = 'true';
 }
 

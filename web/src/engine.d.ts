@@ -31,28 +31,88 @@ export interface Vec3 { x: number; y: number; z: number; }
 /** A curled page point and the analytic normal of the page's front there. */
 export interface CurledPoint extends Vec3 { normal: Vec3; }
 
-/** The WebGL2 renderer of one page. Call delete() (or CurlPageView.destroy()) to release it. */
-export interface PageRenderer {
-  setPageSize(width: number, height: number): void;
+/** One leaf as Book.frame() lists it: its two pages (-1: blank) and its pose. */
+export interface LeafDraw {
+  leaf: number;
+  frontPage: number;
+  backPage: number;
+  curl: CurlParams;
+  /** A backward turn, posed as the mirror image of a forward one. */
+  mirrored: boolean;
+  hard: boolean;
+  /** Flat in a stack (drawn first, receives shadows). */
+  resting: boolean;
+}
+
+export interface BookOptions {
+  pageCount: number;
+  display?: 'single' | 'double';
+  /** Where the spine is: 'left' (LTR books), 'right' (RTL), 'top' (calendars). */
+  binding?: 'left' | 'right' | 'top';
+  /** World units from the spine to the free edge; default 0.8. */
+  pageWidth?: number;
+  /** World units along the spine; default 1. */
+  pageHeight?: number;
+  /** Seconds per turn; default 1. */
+  turnSeconds?: number;
+  /** Indices of hard pages (covers): they turn rigidly. */
+  hardPages?: number[];
+}
+
+/** Book state and animation (C++). Invalid options throw a TypeError naming the option. Call delete(). */
+export interface Book {
+  pageCount(): number;
+  binding(): 'left' | 'right' | 'top';
+  isSingle(): boolean;
   pageWidth(): number;
   pageHeight(): number;
-  setSchedule(schedule: CurlSchedule): void;
-  schedule(): CurlSchedule;
-  setShading(on: boolean): void;
-  /** side 0: front, 1: back; pixels: width * height * 4 RGBA bytes, rows top to bottom. */
-  setPageImage(side: 0 | 1, width: number, height: number, pixels: ArrayLike<number>): void;
-  paramsAt(t: number): CurlParams;
-  drawAt(t: number): void;
-  draw(params: CurlParams): void;
+  leafCount(): number;
+  /** Spread (double) or page (single) where the book settles once turns in flight land. */
+  position(): number;
+  lastPosition(): number;
+  positionOfPage(page: number): number;
+  firstVisiblePage(): number;
+  /** False (nothing changes) at the end, if the leaf is already turning, or with 6 turns in flight. */
+  startTurn(direction: 'forward' | 'backward'): boolean;
+  /** Exact pose of the most recent turn, progress in [0, 1]. */
+  setLatestTurnProgress(progress: number): void;
+  /** Advances turns in flight; returns whether any is still moving. */
+  advance(seconds: number): boolean;
+  animating(): boolean;
+  jumpTo(position: number): void;
+  frame(): LeafDraw[];
+  delete(): void;
+}
+
+export interface RenderOptions {
+  lighting?: boolean;
+  shadows?: boolean;
+  gutter?: boolean;
+}
+
+/** The WebGL2 renderer of a book. Call delete() to release its context. */
+export interface BookRenderer {
+  setOptions(options: RenderOptions): void;
+  /** pixels: width * height * 4 RGBA bytes, rows top to bottom. Throws if too large for the GPU. */
+  setPageImage(page: number, width: number, height: number, pixels: ArrayLike<number>): void;
+  releasePageImage(page: number): void;
+  hasPageImage(page: number): boolean;
+  residentPageImages(): number;
+  draw(book: Book): void;
+  framesDrawn(): number;
   /** Pixels of the frame just drawn (same task), rows top to bottom. */
   readPixels(): { width: number; height: number; data: Uint8ClampedArray };
-  /** Per grid vertex: x y z of the curled position, then the shader's normal nx ny nz. */
-  captureCurledVertices(params: CurlParams): Float32Array;
+  /** Per grid vertex of frame leaf `index`: world x y z, then the shader's normal nx ny nz. */
+  captureLeaf(book: Book, index: number): Float32Array;
   /** Flat page coordinates (x, y) of the grid vertices. */
   gridPoints(): Float32Array;
   gridColumns(): number;
   gridRows(): number;
+  /** Fixed grid rows; 0 (default) chooses them from the canvas size for < 0.5 px error. */
+  setGridRows(rows: number): void;
   maxTextureSize(): number;
+  /** After a context restore: rebuild every GL object (page images must be set again). */
+  recreateGpuObjects(): void;
   delete(): void;
 }
 
@@ -65,11 +125,15 @@ export interface ConeCurlEngine {
   curlPoint(x: number, y: number, params: CurlParams): CurledPoint;
   curlNormalFiniteDifference(x: number, y: number, params: CurlParams, delta: number): Vec3;
   coneBeta(x: number, y: number, params: CurlParams): number;
-  PageRenderer: {
+  /** C++ reference of where the shader puts page point (x, y) of a leaf, and its +z side's normal. */
+  leafPointToWorld(draw: LeafDraw, binding: 'left' | 'right' | 'top', pageHeight: number, x: number, y: number): Vec3;
+  leafNormalToWorld(draw: LeafDraw, binding: 'left' | 'right' | 'top', pageHeight: number, x: number, y: number): Vec3;
+  Book: { create(options: BookOptions): Book };
+  BookRenderer: {
     /** Throws an Error ("conecurl: ...") if WebGL2 is unavailable on the target. */
-    create(canvasTarget: string): PageRenderer;
+    create(canvasTarget: string): BookRenderer;
   };
-  /** Emscripten's map from target names to elements; CurlPageView registers canvases here. */
+  /** Emscripten's map from target names to elements; BookView registers canvases here. */
   specialHTMLTargets: Record<string, EventTarget>;
 }
 

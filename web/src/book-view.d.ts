@@ -1,0 +1,50 @@
+// Types of BookView, the JS view of one book on a canvas. Kept beside book-view.js.
+import type { Book, BookRenderer, ConeCurlEngine, LoadEngineOptions, RenderOptions } from './engine.js';
+
+export interface BookViewOptions extends LoadEngineOptions, RenderOptions {
+  /** An engine already loaded with loadEngine(). */
+  engine?: ConeCurlEngine;
+  pageCount: number;
+  /** Default 'double'. */
+  display?: 'single' | 'double';
+  /** 'ltr' (spine left, default), 'rtl' (spine right), 'vertical' (spine at the top, a calendar). */
+  direction?: 'ltr' | 'rtl' | 'vertical';
+  /** World units from the spine to the free edge, and along the spine; default 0.8 x 1. */
+  pageWidth?: number;
+  pageHeight?: number;
+  /** Seconds per turn; default 1. */
+  turnSeconds?: number;
+  /** Indices of hard pages (covers): they turn rigidly. */
+  hardPages?: number[];
+}
+
+export class BookView {
+  /** Rejects with an Error if WebGL2 is unavailable, a TypeError naming a bad option. */
+  static create(canvas: HTMLCanvasElement, options: BookViewOptions): Promise<BookView>;
+  readonly engine: ConeCurlEngine;
+  readonly canvas: HTMLCanvasElement;
+  readonly book: Book;
+  /** Null after destroy(). */
+  readonly renderer: BookRenderer | null;
+  readonly pageCount: number;
+  /** Where the book settles once turns in flight land: a spread (double) or a page (single). */
+  readonly position: number;
+  readonly animating: boolean;
+  /** Frames drawn so far: the book draws only while something moves or changes. */
+  readonly framesDrawn: number;
+  setPageImage(page: number, source: CanvasImageSource | ImageData): void;
+  releasePageImage(page: number): void;
+  setOptions(options: RenderOptions): void;
+  /** Resolves true once every turn has landed, false if the book cannot turn that way. */
+  next(): Promise<boolean>;
+  prev(): Promise<boolean>;
+  jumpTo(position: number): void;
+  /** Exact frame of a turn from the settled position at progress t, with no clock running. */
+  showTurn(direction: 'forward' | 'backward', t: number): boolean;
+  /** Draws at once (same task as a following readPixels()). */
+  drawNow(): void;
+  readPixels(): { width: number; height: number; data: Uint8ClampedArray };
+  requestRender(): void;
+  /** Cancels animation, removes listeners, releases the GL context and the wasm objects. */
+  destroy(): void;
+}

@@ -1,0 +1,209 @@
+// One book on a canvas: JS ergonomics over the wasm Book (state, animation) and BookRenderer (GL):
+// canvas sizing, image decoding, and a render loop that runs only while something moves.
+import { loadEngine } from './engine.js';
+
+const BINDING_OF_DIRECTION = { ltr: 'left', rtl: 'right', vertical: 'top' };
+const MAX_FRAME_SECONDS = 0.1;  // after a stall (hidden tab), jump at most this far per frame
+let nextTargetId = 1;
+
+/** Reads any image source into RGBA pixels (rows top to bottom). */
+function toPixels(source) {
+  if (source instanceof ImageData) return source;
+  const width = source.naturalWidth || source.videoWidth || source.width;
+  const height = source.naturalHeight || source.videoHeight || source.height;
+  if (!(width > 0 && height > 0)) throw new TypeError('conecurl: page image has no size (not loaded yet?)');
+  const canvas = typeof OffscreenCanvas === 'function'
+    ? new OffscreenCanvas(width, height)
+    : Object.assign(document.createElement('canvas'), { width, height });
+  const context = canvas.getContext('2d', { willReadFrequently: true });
+  context.drawImage(source, 0, 0);
+  return context.getImageData(0, 0, width, height);
+}
+
+export class BookView {
+  /**
+   * @param {HTMLCanvasElement} canvas
+   * @param {import('./book-view.js').BookViewOptions} options
+   */
+  static async create(canvas, options = {}) {
+    if (!(canvas instanceof HTMLCanvasElement)) throw new TypeError('conecurl: canvas must be an HTMLCanvasElement');
+    const engine = options.engine || (await loadEngine(options));
+    return new BookView(engine, canvas, options);
+  }
+
+  constructor(engine, canvas, options) {
+    const direction = options.direction ?? 'ltr';
+    if (!(direction in BINDING_OF_DIRECTION)) {
+      throw new TypeError(`conecurl: direction must be 'ltr', 'rtl' or 'vertical', got ${String(direction)}`);
+    }
+    this.engine = engine;
+    this.canvas = canvas;
+    this.book = engine.Book.create({
+      pageCount: options.pageCount,
+      display: options.display ?? 'double',
+      binding: BINDING_OF_DIRECTION[direction],
+      pageWidth: options.pageWidth,
+      pageHeight: options.pageHeight,
+      turnSeconds: options.turnSeconds,
+      hardPages: options.hardPages,
+    });
+    this._target = `!conecurl-canvas-${nextTargetId++}`;
+    engine.specialHTMLTargets[this._target] = canvas;
+    try {
+      this.renderer = engine.BookRenderer.create(this._target);
+    } catch (error) {
+      delete engine.specialHTMLTargets[this._target];
+      this.book.delete();
+      throw error;
+    }
+    this.renderer.setOptions({
+      lighting: options.lighting ?? true, shadows: options.shadows ?? true, gutter: options.gutter ?? true,
+    });
+    this._sources = new Map();   // page -> image source, to upload again after a context loss
+    this._frame = 0;
+    this._lastTime = 0;
+    this._clockRunning = false;  // false while an exact pose is shown
+    this._poseFrom = null;
+    this._settled = [];
+    this._pending = [];          // turns asked for while the leaf they need was still in flight
+    this._onLost = (event) => { event.preventDefault(); cancelAnimationFrame(this._frame); this._frame = 0; };
+    this._onRestored = () => this._restore();
+    canvas.addEventListener('webglcontextlost', this._onLost);
+    canvas.addEventListener('webglcontextrestored', this._onRestored);
+    this._resizeObserver = typeof ResizeObserver === 'function' ? new ResizeObserver(() => this.requestRender()) : null;
+    this._resizeObserver?.observe(canvas);
+    this.requestRender();
+  }
+
+  get pageCount() { return this.book.pageCount(); }
+  /** Where the book settles once turns in flight land: a spread (double) or a page (single). */
+  get position() { return this.book.position(); }
+  get animating() { return this.book.animating(); }
+  /** Frames drawn so far (the book draws only while something moves). */
+  get framesDrawn() { return this.renderer.framesDrawn(); }
+
+  setPageImage(page, source) {
+    const image = toPixels(source);
+    this.renderer.setPageImage(page, image.width, image.height, image.data);
+    this._sources.set(page, source);
+    this.requestRender();
+  }
+
+  releasePageImage(page) {
+    this.renderer.releasePageImage(page);
+    this._sources.delete(page);
+    this.requestRender();
+  }
+
+  setOptions(options) {
+    this.renderer.setOptions(options);
+    this.requestRender();
+  }
+
+  /**
+   * Turns one leaf forward; resolves true when every turn in flight has landed, false if the book
+   * cannot turn that way. A turn asked for while the leaf it needs is still moving waits its turn.
+   */
+  next() { return this._turn('forward'); }
+  prev() { return this._turn('backward'); }
+
+  jumpTo(position) {
+    this._poseFrom = null;
+    this._pending.length = 0;
+    this.book.jumpTo(position);
+    this.requestRender();
+  }
+
+  /**
+   * Shows the exact frame of a turn from the settled position at progress t in [0, 1], with no
+   * clock running (tests, scrubbing). Calling it again re-poses from the same position.
+   */
+  showTurn(direction, t) {
+    if (this._poseFrom === null) this._poseFrom = this.book.position();
+    this._clockRunning = false;
+    this.book.jumpTo(this._poseFrom);
+    const started = this.book.startTurn(direction);
+    if (started) this.book.setLatestTurnProgress(t);
+    this.drawNow();
+    return started;
+  }
+
+  /** Draws the current state at once (same task), e.g. before readPixels(). */
+  drawNow() {
+    this._fitCanvas();
+    this.renderer.draw(this.book);
+  }
+
+  readPixels() { return this.renderer.readPixels(); }
+
+  requestRender() {
+    if (!this._frame && this.renderer) this._frame = requestAnimationFrame((now) => this._tick(now));
+  }
+
+  destroy() {
+    if (!this.renderer) return;
+    cancelAnimationFrame(this._frame);
+    this._frame = 0;
+    this._resizeObserver?.disconnect();
+    this.canvas.removeEventListener('webglcontextlost', this._onLost);
+    this.canvas.removeEventListener('webglcontextrestored', this._onRestored);
+    this.renderer.delete();
+    this.book.delete();
+    this.renderer = null;
+    delete this.engine.specialHTMLTargets[this._target];
+    this._sources.clear();
+    for (const resolve of this._settled.splice(0)) resolve();
+  }
+
+  _turn(direction) {
+    this._poseFrom = null;
+    const started = this._pending.length === 0 && this.book.startTurn(direction);
+    if (!started) {
+      if (!this.book.animating()) return Promise.resolve(false);
+      this._pending.push(direction);
+    }
+    this._clockRunning = true;
+    this.requestRender();
+    return new Promise((resolve) => this._settled.push(() => resolve(true)));
+  }
+
+  _tick(now) {
+    this._frame = 0;
+    if (!this.renderer) return;
+    if (this._clockRunning && this.book.animating()) {
+      const seconds = this._lastTime ? Math.min(MAX_FRAME_SECONDS, (now - this._lastTime) / 1000) : 0;
+      this.book.advance(seconds);
+      while (this._pending.length > 0 && this.book.startTurn(this._pending[0])) this._pending.shift();
+    }
+    this.drawNow();
+    if (this._clockRunning && this.book.animating()) {
+      this._lastTime = now;
+      this._frame = requestAnimationFrame((t) => this._tick(t));
+      return;
+    }
+    this._lastTime = 0;
+    this._clockRunning = false;
+    this._pending.length = 0;  // what is left could never start (the end of the book)
+    for (const resolve of this._settled.splice(0)) resolve();
+  }
+
+  _fitCanvas() {
+    const ratio = window.devicePixelRatio || 1;
+    const width = Math.max(1, Math.round(this.canvas.clientWidth * ratio));
+    const height = Math.max(1, Math.round(this.canvas.clientHeight * ratio));
+    if (this.canvas.width !== width || this.canvas.height !== height) {
+      this.canvas.width = width;
+      this.canvas.height = height;
+    }
+  }
+
+  _restore() {
+    // Every GL object is rebuilt from CPU-side state; page images from the sources kept here.
+    this.renderer.recreateGpuObjects();
+    for (const [page, source] of this._sources) {
+      const image = toPixels(source);
+      this.renderer.setPageImage(page, image.width, image.height, image.data);
+    }
+    this.requestRender();
+  }
+}
