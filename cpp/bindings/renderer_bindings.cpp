@@ -89,6 +89,7 @@ EMSCRIPTEN_BINDINGS(conecurl_renderer) {
         .function("gridColumns", optional_override([](BookRenderer& r) { return r.grid().columns; }))
         .function("gridRows", optional_override([](BookRenderer& r) { return r.grid().rows; }))
         .function("setGridRows", &BookRenderer::setGridRows)
+        .function("gridErrorPixels", &BookRenderer::gridErrorPixels)
         .function("maxTextureSize", &BookRenderer::maxTextureSize)
         .function("recreateGpuObjects", &BookRenderer::recreateGpuObjects);
 }

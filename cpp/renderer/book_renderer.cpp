@@ -145,6 +145,7 @@ void BookRenderer::destroyGpuObjects() {
     glDeleteTextures(1, &shadowTexture_);
     for (const auto& [page, texture] : pageTextures_) glDeleteTextures(1, &texture);
     pageTextures_.clear();
+    gridKey_ = GridKey{};  // the grid buffer is gone too
     leafProgram_ = shadowProgram_ = vertexArray_ = vertexBuffer_ = indexBuffer_ = captureBuffer_ = 0;
     paperTexture_ = shadowFramebuffer_ = shadowTexture_ = 0;
 }
@@ -153,6 +154,7 @@ void BookRenderer::recreateGpuObjects() {
     error_.clear();
     // The old names died with the lost context; forget them without deleting.
     pageTextures_.clear();
+    gridKey_ = GridKey{};  // the grid buffer is gone too
     leafProgram_ = shadowProgram_ = vertexArray_ = vertexBuffer_ = indexBuffer_ = captureBuffer_ = 0;
     paperTexture_ = shadowFramebuffer_ = shadowTexture_ = 0;
     createGpuObjects();
@@ -171,8 +173,11 @@ void BookRenderer::uploadGrid() {
     glBindVertexArray(0);
 }
 
-void BookRenderer::updateGrid(const Book& book, const Camera& camera) {
+void BookRenderer::updateGrid(const Book& book, const Camera& camera, int width, int height) {
     const BookConfig& c = book.config();
+    const GridKey key{width, height, requestedRows_, c.pageWidth, c.pageHeight, c.display, c.binding};
+    if (key == gridKey_) return;  // the choice costs milliseconds: never per frame
+    gridKey_ = key;
     int rows = requestedRows_;
     int columns = 0;
     if (rows <= 0) {
@@ -180,12 +185,14 @@ void BookRenderer::updateGrid(const Book& book, const Camera& camera) {
                                                            camera.pixelsPerUnit, camera.magnification);
         rows = chosen.rows;
         columns = chosen.columns;
+        gridErrorPixels_ = chosen.predictedErrorPixels;
     } else {
+        gridErrorPixels_ = std::nan("");
         columns = std::max(4, static_cast<int>(std::lround(rows * c.pageWidth / c.pageHeight)));
     }
     const double aspect = c.pageWidth / c.pageHeight;
     if (rows == grid_.rows && columns == grid_.columns && aspect == gridAspect_) return;
-    grid_ = makePageGrid(c.pageWidth, c.pageHeight, columns, rows);  // only on a size change
+    grid_ = makePageGrid(c.pageWidth, c.pageHeight, columns, rows);
     gridAspect_ = aspect;
     uploadGrid();
 }
@@ -309,7 +316,7 @@ void BookRenderer::draw(const Book& book) {
     drawingWidth_ = width;
     drawingHeight_ = height;
     const Camera camera = cameraFor(book, width, height);
-    updateGrid(book, camera);
+    updateGrid(book, camera, width, height);
     const BookFrame frame = book.frame();
     ++framesDrawn_;
 

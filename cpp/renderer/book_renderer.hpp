@@ -66,6 +66,8 @@ public:
     // Grid rows for the page mesh; columns follow the page's aspect. 0 chooses from the canvas size.
     void setGridRows(int rows) { requestedRows_ = rows; }
     const PageGrid& grid() const { return grid_; }
+    // The chosen grid's verified mesh error in pixels at the current canvas (NaN for fixed rows).
+    double gridErrorPixels() const { return gridErrorPixels_; }
     int maxTextureSize() const { return maxTextureSize_; }
 
     // After a lost context is restored: recreates every GL object from CPU-side state. Page images
@@ -83,7 +85,7 @@ private:
     bool makeCurrent();
     void createGpuObjects();
     void destroyGpuObjects();
-    void updateGrid(const Book& book, const Camera& camera);
+    void updateGrid(const Book& book, const Camera& camera, int width, int height);
     void uploadGrid();
     Camera cameraFor(const Book& book, int width, int height) const;
     void ensureShadowTarget(int width, int height);
@@ -97,6 +99,18 @@ private:
     int requestedRows_ = 0;
     PageGrid grid_;
     double gridAspect_ = 0.0;
+    double gridErrorPixels_ = 0.0;
+    struct GridKey {  // what the grid choice depends on: it is made again only when this changes
+        int width = 0, height = 0, requestedRows = -1;
+        double pageWidth = 0.0, pageHeight = 0.0;
+        Display display = Display::Double;
+        Binding binding = Binding::Left;
+        bool operator==(const GridKey& o) const {
+            return width == o.width && height == o.height && requestedRows == o.requestedRows &&
+                   pageWidth == o.pageWidth && pageHeight == o.pageHeight && display == o.display &&
+                   binding == o.binding;
+        }
+    } gridKey_;
     int maxTextureSize_ = 0;
     float maxAnisotropy_ = 0.0f;
     int drawingWidth_ = 0;

@@ -214,3 +214,51 @@ test('browser: ten quick turns end on the right spread, and a quick back-and-for
   });
   expect(after).toEqual({ position: 10, animating: false });
 });
+
+test('browser: the grid is chosen for the canvas: finer on a larger canvas, error within half a pixel', async ({ page }) => {
+  await openReady(page, `${FIXTURE}?position=1`);
+  const sizes = await page.evaluate(() => {
+    const { view } = window.fixture;
+    const out = [];
+    for (const [w, h] of [[320, 200], [640, 400], [1600, 1000]]) {
+      view.canvas.style.width = `${w}px`;
+      view.canvas.style.height = `${h}px`;
+      view.drawNow();
+      out.push({ rows: view.renderer.gridRows(), error: view.renderer.gridErrorPixels() });
+    }
+    return out;
+  });
+  for (const { error } of sizes) expect(error).toBeLessThanOrEqual(0.5);
+  expect(sizes[0].rows).toBeLessThan(sizes[1].rows);
+  expect(sizes[1].rows).toBeLessThan(sizes[2].rows);
+});
+
+test('browser: after WebGL context loss and restore every GPU object and page is back', async ({ page }) => {
+  await openReady(page, `${FIXTURE}?position=1`);
+  const before = await page.evaluate(() => {
+    const { view, pageAt } = window.fixture;
+    view.drawNow();
+    const p = view.readPixels();
+    return [pageAt(p, 110, 300), pageAt(p, 530, 300)];
+  });
+  expect(before).toEqual([1, 2]);
+  const after = await page.evaluate(async () => {
+    const { view, pageAt } = window.fixture;
+    const gl = view.canvas.getContext('webgl2');
+    const lose = gl.getExtension('WEBGL_lose_context');
+    const event = (name) => new Promise((resolve) => view.canvas.addEventListener(name, resolve, { once: true }));
+    const lost = event('webglcontextlost');
+    lose.loseContext();
+    await lost;
+    await new Promise((resolve) => setTimeout(resolve, 50));  // Chrome ignores a restore in the same task
+    const restored = event('webglcontextrestored');
+    lose.restoreContext();
+    await restored;
+    await new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve)));
+    view.drawNow();
+    const p = view.readPixels();
+    return { pages: [pageAt(p, 110, 300), pageAt(p, 530, 300)], resident: view.renderer.residentPageImages() };
+  });
+  expect(after.pages).toEqual([1, 2]);
+  expect(after.resident).toBe(8);
+});

@@ -116,6 +116,8 @@ async function main() {
   for (const id of ['lighting', 'shadows', 'gutter']) {
     $(id).addEventListener('change', () => view.setOptions({ [id]: $(id).checked }));
   }
+  // For the console and scripts/measure-turn.mjs.
+  window.conecurlDemo = { engine, get view() { return view; } };
   document.body.dataset.ready = 'true';
 }
 

@@ -108,6 +108,8 @@ export interface BookRenderer {
   gridPoints(): Float32Array;
   gridColumns(): number;
   gridRows(): number;
+  /** Verified mesh error of the chosen grid, in pixels at the current canvas (NaN with fixed rows). */
+  gridErrorPixels(): number;
   /** Fixed grid rows; 0 (default) chooses them from the canvas size for < 0.5 px error. */
   setGridRows(rows: number): void;
   maxTextureSize(): number;
