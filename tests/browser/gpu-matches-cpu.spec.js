@@ -48,7 +48,7 @@ async function measure(page, { direction, turn, times, pageCount = 6, start = 1,
 for (const direction of ['ltr', 'rtl', 'vertical']) {
   for (const turn of ['forward', 'backward']) {
     test(`browser: ${direction} ${turn} turn: transform-feedback positions match C++ at 12 turn times (< 1e-4 H)`, async ({ page }) => {
-      await openReady(page, '/tests/browser/fixtures/curl-fixture.html');
+      await openReady(page, '/tests/browser/fixtures/book-fixture.html?pages=2&sides=1&position=0');
       const results = await measure(page, { direction, turn, times: TIMES });
       console.log(`GPU vs C++, ${direction} ${turn}: worst ${Math.max(...results.map((r) => r.maxError)).toExponential(2)} H, `
         + `normal ${Math.max(...results.map((r) => r.maxNormalAngle)).toExponential(2)} rad`);
@@ -64,13 +64,13 @@ for (const direction of ['ltr', 'rtl', 'vertical']) {
 }
 
 test('browser: hard leaf (cover) turns rigidly and matches C++ too', async ({ page }) => {
-  await openReady(page, '/tests/browser/fixtures/curl-fixture.html');
+  await openReady(page, '/tests/browser/fixtures/book-fixture.html?pages=2&sides=1&position=0');
   const results = await measure(page, { direction: 'ltr', turn: 'forward', times: [0.2, 0.5, 0.8], start: 0, hardPages: [0, 1] });
   for (const r of results) expect(r.maxError, `position error at t=${r.t}`).toBeLessThan(1e-4);
 });
 
 test('browser: the readback comparison would notice a wrong pose (t 0.31 against 0.30 differs by > 1e-3)', async ({ page }) => {
-  await openReady(page, '/tests/browser/fixtures/curl-fixture.html');
+  await openReady(page, '/tests/browser/fixtures/book-fixture.html?pages=2&sides=1&position=0');
   const error = await page.evaluate(() => {
     const { engine, view } = window.fixture;
     view.showTurn('forward', 0.3);

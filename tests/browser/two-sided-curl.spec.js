@@ -3,7 +3,7 @@
 import { test, expect } from '@playwright/test';
 import { openReady } from './helpers.js';
 
-const FIXTURE = '/tests/browser/fixtures/curl-fixture.html';
+const FIXTURE = '/tests/browser/fixtures/book-fixture.html?pages=2&sides=1&position=0';
 const CANVAS = { width: 640, height: 400 };
 const SPINE_X = CANVAS.width / 2;
 
@@ -62,8 +62,8 @@ test('browser: every frame of a turn draws the page (no blank frame over 101 t v
 // and text a little differently, so up to 0.5% of pixels may differ by more than the 0.1 threshold.
 for (const t of [0, 0.05, 0.15, 0.3, 0.6, 0.9, 1]) {
   test(`browser: frame at t=${t} matches its reference image`, async ({ page }) => {
-    await openReady(page, `${FIXTURE}?t=${t}`);
-    await expect(page.locator('#page')).toHaveScreenshot(`curl-t${t.toFixed(2)}.png`, {
+    await openReady(page, `${FIXTURE}&turn=forward&t=${t}`);
+    await expect(page.locator('#book')).toHaveScreenshot(`curl-t${t.toFixed(2)}.png`, {
       maxDiffPixelRatio: 0.005,
       threshold: 0.1,
     });

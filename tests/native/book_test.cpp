@@ -1,5 +1,6 @@
 // Native (GoogleTest via CTest) tests of the book model: which leaves a frame draws and in what pose,
 // the turn state machine, and the placement tables that put every page in the world reading upright.
+#include "test_support.hpp"
 #include "book.hpp"
 
 #include <gtest/gtest.h>
@@ -814,12 +815,7 @@ LeafDraw drawWith(const Pose& pose, const CurlParams& curl) {
 
 dvec3 toWorld(const glm::dmat4& m, dvec3 p) { return dvec3(m * dvec4(p, 1.0)); }
 
-std::string str(dvec3 v) {
-    std::ostringstream os;
-    os.precision(17);
-    os << "(" << v.x << ", " << v.y << ", " << v.z << ")";
-    return os.str();
-}
+using conecurl::testing::str;
 
 // Axis-aligned rectangle in world x, y.
 struct Rect {

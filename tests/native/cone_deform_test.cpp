@@ -1,5 +1,6 @@
 // Native (GoogleTest via CTest) tests of the cone deformation: the eight invariants and the pitfall
 // guards of shared/docs/cone-curl-math.md, held over the whole schedule and a dense page grid.
+#include "test_support.hpp"
 #include "cone_deform.hpp"
 
 #include <gtest/gtest.h>
@@ -96,12 +97,7 @@ std::string num(double x) {
     return os.str();
 }
 
-std::string str(dvec3 v) {
-    std::ostringstream os;
-    os.precision(17);
-    os << "(" << v.x << ", " << v.y << ", " << v.z << ")";
-    return os.str();
-}
+using conecurl::testing::str;
 
 // The largest error seen and where; NaN is kept once seen (it is the worst of all).
 struct Worst {
