@@ -1,0 +1,61 @@
+// Types of Flipbook, the public entry point. Kept beside flipbook.js.
+
+export type PageSource = string | HTMLImageElement | HTMLCanvasElement | ImageBitmap | Blob;
+
+export interface PageEntry {
+  src: PageSource;
+  /** Text of the page for screen readers. */
+  alt?: string;
+  /** Turns rigidly, like a cover. */
+  hard?: boolean;
+}
+
+export interface FlipbookOptions {
+  /** The pages, first to last; at least one. A URL is loaded with CORS. */
+  pages: Array<PageSource | PageEntry>;
+  /** 'auto' (default) shows two pages when the container is wider than 1.2x its height. */
+  display?: 'single' | 'double' | 'auto';
+  /** 'ltr' (default), 'rtl' (spine on the right), 'vertical' (spine at the top, a calendar). */
+  direction?: 'ltr' | 'rtl' | 'vertical';
+  /** Page to open at; default 0. */
+  startPage?: number;
+  /** Milliseconds per turn; default 1000. */
+  duration?: number;
+  /** The first and last pages turn rigidly; default false. */
+  hardCovers?: boolean;
+  lighting?: boolean;
+  shadows?: boolean;
+  gutter?: boolean;
+  /** Pages kept loaded on each side of the open spread; default 4. */
+  loadWindow?: number;
+  /** Where the engine's .wasm is served, if not next to its JS. */
+  wasmUrl?: string;
+}
+
+export interface FlipbookEventMap {
+  ready: CustomEvent<{ page: number }>;
+  progress: CustomEvent<{ loaded: number; total: number }>;
+  turnstart: CustomEvent<{ direction: 'forward' | 'backward'; page: number }>;
+  turned: CustomEvent<{ page: number }>;
+  pageerror: CustomEvent<{ index: number; error: Error }>;
+}
+
+export class Flipbook extends EventTarget {
+  /** Rejects with a TypeError naming a bad option, or an Error if WebGL2 is unavailable. */
+  static create(container: HTMLElement, options: FlipbookOptions): Promise<Flipbook>;
+  readonly pageCount: number;
+  /** First visible page at the settled position. */
+  readonly page: number;
+  readonly display: 'single' | 'double';
+  /** Resolve true when the turn has landed, false if the book cannot turn that way. */
+  next(): Promise<boolean>;
+  prev(): Promise<boolean>;
+  /** Turns leaf by leaf to page `index` (or jumps with animate: false); RangeError if out of range. */
+  flip(index: number, options?: { animate?: boolean }): Promise<void>;
+  /** Releases the canvas, the GL context, the wasm objects and the loaded pages; idempotent. */
+  destroy(): void;
+  addEventListener<K extends keyof FlipbookEventMap>(type: K, listener: (event: FlipbookEventMap[K]) => void,
+    options?: boolean | AddEventListenerOptions): void;
+  addEventListener(type: string, listener: EventListenerOrEventListenerObject | null,
+    options?: boolean | AddEventListenerOptions): void;
+}
