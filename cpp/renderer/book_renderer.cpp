@@ -177,6 +177,7 @@ void BookRenderer::updateGrid(const Book& book, const Camera& camera, int width,
     const BookConfig& c = book.config();
     const GridKey key{width, height, requestedRows_, c.pageWidth, c.pageHeight, c.display, c.binding};
     if (key == gridKey_) return;  // the choice costs milliseconds: never per frame
+    const bool samePage = key.pageWidth == gridKey_.pageWidth && key.pageHeight == gridKey_.pageHeight;
     gridKey_ = key;
     int rows = requestedRows_;
     int columns = 0;
@@ -190,10 +191,9 @@ void BookRenderer::updateGrid(const Book& book, const Camera& camera, int width,
         gridErrorPixels_ = std::nan("");
         columns = std::max(4, static_cast<int>(std::lround(rows * c.pageWidth / c.pageHeight)));
     }
-    const double aspect = c.pageWidth / c.pageHeight;
-    if (rows == grid_.rows && columns == grid_.columns && aspect == gridAspect_) return;
+    // A resize that lands on the same grid for the same page keeps the buffer as it is.
+    if (rows == grid_.rows && columns == grid_.columns && samePage) return;
     grid_ = makePageGrid(c.pageWidth, c.pageHeight, columns, rows);
-    gridAspect_ = aspect;
     uploadGrid();
 }
 
@@ -270,7 +270,8 @@ void BookRenderer::ensureShadowTarget(int width, int height) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void BookRenderer::setLeafUniforms(const Uniforms& u, const Book& book, const LeafDraw& leaf, const Camera& camera) {
+LeafPlacement BookRenderer::setPlacementUniforms(const Uniforms& u, const Book& book, const LeafDraw& leaf,
+                                                 const Camera& camera) {
     const BookConfig& c = book.config();
     const LeafPlacement placement = placeLeaf(c.binding, leaf.mirrored, c.pageHeight);
     const glm::mat4 pageToWorld(placement.pageToWorld);
@@ -280,7 +281,13 @@ void BookRenderer::setLeafUniforms(const Uniforms& u, const Book& book, const Le
     glUniformMatrix4fv(u.pageToWorld, 1, GL_FALSE, glm::value_ptr(pageToWorld));
     glUniformMatrix4fv(u.viewProjection, 1, GL_FALSE, glm::value_ptr(camera.viewProjection));
     glUniform3f(u.lightDirection, kLightDirection.x, kLightDirection.y, kLightDirection.z);
-    if (u.facingUv < 0) return;  // the shadow program needs no more
+    return placement;
+}
+
+void BookRenderer::setSurfaceUniforms(const Book& book, const LeafDraw& leaf, const LeafPlacement& placement,
+                                      const Camera& camera) {
+    const Uniforms& u = leafUniforms_;
+    const BookConfig& c = book.config();
     const glm::mat3 facingUv(placement.facingUv);
     const glm::mat3 awayUv(placement.awayUv);
     glUniformMatrix3fv(u.facingUv, 1, GL_FALSE, glm::value_ptr(facingUv));
@@ -302,7 +309,7 @@ void BookRenderer::setLeafUniforms(const Uniforms& u, const Book& book, const Le
 }
 
 void BookRenderer::drawLeaf(const Book& book, const LeafDraw& leaf, const Camera& camera, bool receiveShadow) {
-    setLeafUniforms(leafUniforms_, book, leaf, camera);
+    setSurfaceUniforms(book, leaf, setPlacementUniforms(leafUniforms_, book, leaf, camera), camera);
     glUniform1f(leafUniforms_.shadow, receiveShadow ? 1.0f : 0.0f);
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(grid_.indices.size()), GL_UNSIGNED_INT, nullptr);
 }
@@ -341,7 +348,7 @@ void BookRenderer::draw(const Book& book) {
         glUniform1f(shadowUniforms_.pageWidth, static_cast<float>(book.config().pageWidth));
         for (int i = 0; i < frame.count; ++i) {
             if (frame.leaves[i].resting) continue;
-            setLeafUniforms(shadowUniforms_, book, frame.leaves[i], camera);
+            setPlacementUniforms(shadowUniforms_, book, frame.leaves[i], camera);
             glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(grid_.indices.size()), GL_UNSIGNED_INT, nullptr);
         }
         glDisable(GL_BLEND);
@@ -406,7 +413,7 @@ std::vector<float> BookRenderer::captureLeaf(const Book& book, int drawIndex) {
 
     glUseProgram(leafProgram_);
     Camera camera = cameraFor(book, std::max(1, drawingWidth_), std::max(1, drawingHeight_));
-    setLeafUniforms(leafUniforms_, book, frame.leaves[drawIndex], camera);
+    setPlacementUniforms(leafUniforms_, book, frame.leaves[drawIndex], camera);  // positions and normals only
     glBindVertexArray(vertexArray_);
     glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, captureBuffer_);
     glEnable(GL_RASTERIZER_DISCARD);

@@ -14,6 +14,7 @@
 #include <glm/vec3.hpp>
 
 #include "book.hpp"
+#include "leaf_placement.hpp"
 #include "page_grid.hpp"
 
 namespace conecurl {
@@ -98,7 +99,6 @@ private:
     int framesDrawn_ = 0;
     int requestedRows_ = 0;
     PageGrid grid_;
-    double gridAspect_ = 0.0;
     double gridErrorPixels_ = 0.0;
     struct GridKey {  // what the grid choice depends on: it is made again only when this changes
         int width = 0, height = 0, requestedRows = -1;
@@ -124,7 +124,9 @@ private:
         GLint shadowTexel = -1, viewportInverse = -1, paper = -1, shadowStrength = -1, pageWidth = -1;
     };
     static Uniforms locate(GLuint program);
-    void setLeafUniforms(const Uniforms& u, const Book& book, const LeafDraw& leaf, const Camera& camera);
+    // Where the leaf is (both programs); then how its surface looks (the leaf program only).
+    LeafPlacement setPlacementUniforms(const Uniforms& u, const Book& book, const LeafDraw& leaf, const Camera& camera);
+    void setSurfaceUniforms(const Book& book, const LeafDraw& leaf, const LeafPlacement& placement, const Camera& camera);
 
     GLuint leafProgram_ = 0;
     GLuint shadowProgram_ = 0;
