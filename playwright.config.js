@@ -2,7 +2,8 @@
 // behave the same on any machine without a GPU. The repository is served by scripts/serve.mjs.
 import { defineConfig } from '@playwright/test';
 
-const port = 8089;
+// CONECURL_TEST_PORT lets several checkouts run their browser tests side by side.
+const port = Number(process.env.CONECURL_TEST_PORT) || 8089;
 
 export default defineConfig({
   testDir: 'tests/browser',
