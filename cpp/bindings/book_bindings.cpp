@@ -7,7 +7,9 @@
 #include <string>
 
 #include "book.hpp"
+#include "book_camera.hpp"
 #include "js_values.hpp"
+#include "page_drag.hpp"
 
 namespace {
 
@@ -81,6 +83,93 @@ val frameToJs(const Book& book) {
     return leaves;
 }
 
+// --- dragging: canvas pixels of the drawing buffer, grips as plain JS objects ------------------------
+
+BookCamera cameraOf(const Book& book, double width, double height) {
+    if (!(width >= 1.0 && height >= 1.0 && width < 1e5 && height < 1e5)) {
+        js::throwError("RangeError", "canvas size must be at least 1x1 pixels");
+    }
+    return bookCamera(book.config(), static_cast<int>(width), static_cast<int>(height));
+}
+
+glm::dvec2 pixelOf(double x, double y) {
+    if (!std::isfinite(x) || !std::isfinite(y)) js::throwError("RangeError", "pointer position must be finite");
+    return {x, y};
+}
+
+val gripToJs(const Grip& grip) {
+    val out = val::object();
+    out.set("backward", grip.backward);
+    out.set("flippedY", grip.flippedY);
+    out.set("x", grip.pagePoint.x);
+    out.set("y", grip.pagePoint.y);
+    out.set("nearCorner", grip.nearCorner);
+    return out;
+}
+
+Grip gripFromJs(const val& grip) {
+    if (grip.isNull() || grip.isUndefined() || !grip["x"].isNumber() || !grip["y"].isNumber()) {
+        js::throwError("TypeError", "grip must be an object from gripAt()");
+    }
+    Grip out;
+    out.backward = grip["backward"].isTrue();
+    out.flippedY = grip["flippedY"].isTrue();
+    out.pagePoint = {grip["x"].as<double>(), grip["y"].as<double>()};
+    out.nearCorner = grip["nearCorner"].isTrue();
+    return out;
+}
+
+val gripAtPixel(const Book& book, double x, double y, double width, double height) {
+    const std::optional<Grip> grip = gripAt(book, cameraOf(book, width, height), pixelOf(x, y));
+    return grip ? gripToJs(*grip) : val::null();
+}
+
+bool startHeld(Book& book, val grip) {
+    const Grip g = gripFromJs(grip);
+    return book.startHeldTurn(g.backward ? TurnDirection::Backward : TurnDirection::Forward, g.flippedY);
+}
+
+// Solves the pose that keeps the grip under the pointer and makes it the held leaf's target; returns
+// the distance in pixels left between them (0 where the pointer is within reach).
+double dragHeld(Book& book, val grip, double x, double y, double width, double height) {
+    if (!book.holding()) js::throwError("Error", "no held turn to drag (startHeldTurn first)");
+    const DragPose solved = solveDragPose(book, cameraOf(book, width, height), gripFromJs(grip), pixelOf(x, y),
+                                          book.heldTarget());
+    book.setHeldTarget(solved.pose);
+    return solved.errorPixels;
+}
+
+// Lets the held turn go, completing it or letting it fall back; returns true if it completes.
+bool releaseHeld(Book& book, val grip, double x, double y, double vx, double vy, double width, double height) {
+    if (!book.holding()) return false;
+    const bool complete = shouldCompleteTurn(book, cameraOf(book, width, height), gripFromJs(grip), pixelOf(x, y),
+                                             std::isfinite(vx) && std::isfinite(vy) ? glm::dvec2(vx, vy) : glm::dvec2(0.0));
+    book.releaseHeldTurn(complete);
+    return complete;
+}
+
+void hintHeld(Book& book, val grip, double amount) {
+    if (!book.holding()) return;
+    book.setHeldPose(hoverHintPose(book, gripFromJs(grip), std::isfinite(amount) ? amount : 0.0));
+}
+
+val gripPixelNow(const Book& book, val grip, double width, double height) {
+    const glm::dvec2 p = gripPixel(book, cameraOf(book, width, height), gripFromJs(grip), book.heldPose());
+    val out = val::array();
+    out.call<void>("push", p.x);
+    out.call<void>("push", p.y);
+    return out;
+}
+
+val viewProjection(const Book& book, double width, double height) {
+    const BookCamera camera = cameraOf(book, width, height);
+    val out = val::global("Float64Array").new_(16);
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r) out.set(c * 4 + r, camera.viewProjection[c][r]);
+    }
+    return out;
+}
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(conecurl_book) {
@@ -91,6 +180,7 @@ EMSCRIPTEN_BINDINGS(conecurl_book) {
         .field("backPage", &LeafDraw::backPage)
         .field("curl", &LeafDraw::curl)
         .field("mirrored", &LeafDraw::mirrored)
+        .field("flippedY", &LeafDraw::flippedY)
         .field("hard", &LeafDraw::hard)
         .field("resting", &LeafDraw::resting);
 
@@ -110,6 +200,16 @@ EMSCRIPTEN_BINDINGS(conecurl_book) {
         .function("setLatestTurnProgress", &Book::setLatestTurnProgress)
         .function("advance", &Book::advance)
         .function("animating", &Book::animating)
+        .function("moving", &Book::moving)
+        .function("gripAt", &gripAtPixel)
+        .function("startHeldTurn", &startHeld)
+        .function("holding", &Book::holding)
+        .function("dragHeldTurn", &dragHeld)
+        .function("releaseHeldTurn", &releaseHeld)
+        .function("cancelHeldTurn", optional_override([](Book& b) { b.releaseHeldTurn(false); }))
+        .function("hintHeldTurn", &hintHeld)
+        .function("gripPixel", &gripPixelNow)
+        .function("viewProjection", &viewProjection)
         .function("jumpTo", &Book::jumpTo)
         .function("frame", &frameToJs);
 }

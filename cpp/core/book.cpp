@@ -9,6 +9,9 @@
 namespace conecurl {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
+constexpr double kHeldCatchUpSeconds = 0.05;
+constexpr double kHeldSnapRadians = 0.08;
+constexpr double kHeldSnapApexLog = 0.25;
 }
 
 CurlParams rigidTurnAt(double progress, double pageHeight) {
@@ -69,7 +72,8 @@ bool Book::inFlight(int leaf) const {
 }
 
 bool Book::startTurn(TurnDirection direction) {
-    if (turnCount_ >= kMaxTurnsInFlight) return false;
+    // A held leaf lies on top of the stack it came from: nothing may turn over it until it is let go.
+    if (turnCount_ >= kMaxTurnsInFlight || holding()) return false;
     const bool forward = direction == TurnDirection::Forward;
     if (forward ? position_ >= lastPosition() : position_ <= 0) return false;
     const int leaf = forward ? position_ : position_ - 1;
@@ -84,17 +88,151 @@ void Book::setLatestTurnProgress(double progress) {
     turns_[turnCount_ - 1].progress = std::clamp(std::isnan(progress) ? 0.0 : progress, 0.0, 1.0);
 }
 
+bool Book::moving() const {
+    for (int i = 0; i < turnCount_; ++i) {
+        const Turn& turn = turns_[i];
+        if (!turn.held) return true;
+        if (turn.heldPose.theta != turn.heldTarget.theta || turn.heldPose.apexY != turn.heldTarget.apexY ||
+            turn.heldPose.rho != turn.heldTarget.rho) {
+            return true;
+        }
+    }
+    return false;
+}
+
 bool Book::advance(double seconds) {
     if (!(seconds > 0.0)) return animating();
     const double step = seconds / config_.turnSeconds;
+    // A held pose catches up with its target with this time constant, and snaps when close.
+    const double follow = 1.0 - std::exp(-seconds / kHeldCatchUpSeconds);
     int kept = 0;
     for (int i = 0; i < turnCount_; ++i) {
         Turn turn = turns_[i];
-        turn.progress += step;
-        if (turn.progress < 1.0) turns_[kept++] = turn;  // the rest land
+        if (turn.held) {
+            CurlParams& pose = turn.heldPose;
+            const CurlParams& target = turn.heldTarget;
+            pose.theta += (target.theta - pose.theta) * follow;
+            pose.apexY += (target.apexY - pose.apexY) * follow;
+            pose.rho += (target.rho - pose.rho) * follow;
+            if (std::abs(target.theta - pose.theta) < 1e-4 && std::abs(target.rho - pose.rho) < 1e-4 &&
+                std::abs(target.apexY - pose.apexY) < 1e-4 * config_.pageHeight) {
+                pose = target;
+            }
+        }
+        if (!turn.held) turn.progress += turn.fallingBack ? -step : step;
+        if (turn.fallingBack ? turn.progress > 0.0 : turn.progress < 1.0) turns_[kept++] = turn;  // the rest land
     }
     turnCount_ = kept;
     return animating();
+}
+
+int Book::heldIndex() const {
+    for (int i = 0; i < turnCount_; ++i) {
+        if (turns_[i].held) return i;
+    }
+    return -1;
+}
+
+bool Book::holding() const { return heldIndex() >= 0; }
+
+TurnDirection Book::heldDirection() const {
+    const int i = heldIndex();
+    return i >= 0 ? turns_[i].direction : TurnDirection::Forward;
+}
+
+bool Book::heldFlippedY() const {
+    const int i = heldIndex();
+    return i >= 0 && turns_[i].flippedY;
+}
+
+int Book::heldLeaf() const {
+    const int i = heldIndex();
+    return i >= 0 ? turns_[i].leaf : -1;
+}
+
+bool Book::startHeldTurn(TurnDirection direction, bool flippedY) {
+    if (!startTurn(direction)) return false;
+    Turn& turn = turns_[turnCount_ - 1];
+    turn.held = true;
+    turn.flippedY = flippedY;
+    turn.heldPose = scheduledPose(turn.leaf, 0.0);
+    turn.heldTarget = turn.heldPose;
+    return true;
+}
+
+void Book::setHeldPose(const CurlParams& pose) {
+    const int i = heldIndex();
+    if (i < 0) return;
+    CurlParams clean = sanitize(pose);
+    clean.rho = std::clamp(clean.rho, 0.0, kPi);
+    turns_[i].heldPose = clean;
+    turns_[i].heldTarget = clean;
+}
+
+void Book::setHeldTarget(const CurlParams& pose) {
+    const int i = heldIndex();
+    if (i < 0) return;
+    CurlParams clean = sanitize(pose);
+    clean.rho = std::clamp(clean.rho, 0.0, kPi);
+    Turn& turn = turns_[i];
+    turn.heldTarget = clean;
+    // Small steps (a pointer followed move by move) show at once; a jump is eased by advance().
+    const CurlParams& shown = turn.heldPose;
+    if (std::abs(clean.theta - shown.theta) < kHeldSnapRadians && std::abs(clean.rho - shown.rho) < kHeldSnapRadians &&
+        std::abs(std::log(clean.apexY / shown.apexY)) < kHeldSnapApexLog) {
+        turn.heldPose = clean;
+    }
+}
+
+CurlParams Book::heldTarget() const {
+    const int i = heldIndex();
+    return i >= 0 ? turns_[i].heldTarget : scheduledPose(0, 0.0);
+}
+
+CurlParams Book::heldPose() const {
+    const int i = heldIndex();
+    return i >= 0 ? turns_[i].heldPose : scheduledPose(0, 0.0);
+}
+
+void Book::releaseHeldTurn(bool complete) {
+    const int i = heldIndex();
+    if (i < 0) return;
+    Turn& turn = turns_[i];
+    const CurlParams pose = turn.heldPose;  // from where it is seen, not where it was heading
+    // The progress whose rotation is the pose's: rho = pi t (soft), rho = pi/2 (1 - cos pi t) (hard).
+    const double r = std::clamp(pose.rho / kPi, 0.0, 1.0);
+    const double from = isHardLeaf(turn.leaf) ? std::acos(1.0 - 2.0 * r) / kPi : r;
+    const CurlParams scheduled = scheduledPose(turn.leaf, from);
+    turn.held = false;
+    turn.progress = from;
+    turn.blendFrom = from;
+    turn.thetaOffset = pose.theta - scheduled.theta;
+    turn.apexOffset = pose.apexY - scheduled.apexY;
+    if (!complete) {
+        turn.fallingBack = true;
+        position_ += turn.direction == TurnDirection::Forward ? -1 : 1;
+    }
+    // A turn released at its very end (or start) lands in the next advance.
+    if (complete ? from >= 1.0 : from <= 0.0) turn.progress = complete ? 1.0 - 1e-9 : 1e-9;
+}
+
+CurlParams Book::scheduledPose(int leaf, double progress) const {
+    return isHardLeaf(leaf) ? rigidTurnAt(progress, config_.pageHeight)
+                            : sanitize(curlAt(progress, config_.schedule, config_.pageHeight));
+}
+
+CurlParams Book::poseOf(const Turn& turn) const {
+    if (turn.held) return turn.heldPose;
+    CurlParams pose = scheduledPose(turn.leaf, turn.progress);
+    if (turn.thetaOffset == 0.0 && turn.apexOffset == 0.0) return pose;
+    // What the pointer left of the pose fades out smoothly by the end the turn is heading to.
+    const double span = turn.fallingBack ? turn.blendFrom : 1.0 - turn.blendFrom;
+    const double left = turn.fallingBack ? turn.progress : 1.0 - turn.progress;
+    const double f = span > 0.0 ? std::clamp(left / span, 0.0, 1.0) : 0.0;
+    const double w = f * f * (3.0 - 2.0 * f);
+    pose.theta += w * turn.thetaOffset;
+    pose.apexY += w * turn.apexOffset;
+    return sanitize(pose);
 }
 
 void Book::jumpTo(int position) {
@@ -142,8 +280,8 @@ BookFrame Book::frame() const {
         draw.backPage = backPageOf(turn.leaf);
         draw.hard = isHardLeaf(turn.leaf);
         draw.mirrored = turn.direction == TurnDirection::Backward;
-        draw.curl = draw.hard ? rigidTurnAt(turn.progress, config_.pageHeight)
-                              : sanitize(curlAt(turn.progress, config_.schedule, config_.pageHeight));
+        draw.flippedY = turn.flippedY;
+        draw.curl = poseOf(turn);
         frame.leaves[frame.count++] = draw;
     }
     return frame;

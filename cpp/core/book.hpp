@@ -35,6 +35,7 @@ struct LeafDraw {
     int backPage = kNoPage;
     CurlParams curl{};        // rho 0: resting unturned; pi: resting turned
     bool mirrored = false;    // a backward turn, posed as the mirror image of a forward one
+    bool flippedY = false;    // curled from the far end of the spine (a drag from the top corner)
     bool hard = false;
     bool resting = false;     // flat in a stack: drawn first, receives shadows
 };
@@ -67,10 +68,34 @@ public:
     // Advances every turn in flight; turns that reach 1 land. Returns whether any is still in flight.
     bool advance(double seconds);
     bool animating() const { return turnCount_ > 0; }
+    // Whether time changes the frame: a turn in flight that is not held, or a held one still
+    // catching up with its target pose. A resting book or a still held leaf needs no new frames.
+    bool moving() const;
     // Jumps to a position at once, dropping turns in flight.
     void jumpTo(int position);
 
+    // Held turns follow a pointer: the pose is set from outside (see page_drag.hpp) until the turn
+    // is let go. At most one is held; starting one fails where startTurn would, or while one is held.
+    bool startHeldTurn(TurnDirection direction, bool flippedY);
+    bool holding() const;
+    TurnDirection heldDirection() const;
+    bool heldFlippedY() const;
+    int heldLeaf() const;
+    // Shows `pose` at once.
+    void setHeldPose(const CurlParams& pose);
+    // Moves towards `pose`: at once for a small step, else catching up over a few frames of advance()
+    // (a pointer that the pose in hand could not follow without a jump).
+    void setHeldTarget(const CurlParams& pose);
+    CurlParams heldPose() const;    // as shown
+    CurlParams heldTarget() const;  // where it is heading
+    // Lets the held turn go from its pose: it completes, or falls back to where it started (the
+    // position steps back at once). Either way it blends into the schedule with no jump: rho carries
+    // on along the schedule from where it is, theta and apex offsets fade out by the turn's end.
+    void releaseHeldTurn(bool complete);
+
     bool isHardLeaf(int leaf) const;
+    // The pose of a leaf turning at progress p (soft: the schedule; hard: rigid).
+    CurlParams scheduledPose(int leaf, double progress) const;
     BookFrame frame() const;
 
 private:
@@ -78,7 +103,17 @@ private:
         int leaf;
         TurnDirection direction;
         double progress;
+        bool flippedY = false;
+        bool held = false;          // pose comes from heldPose
+        bool fallingBack = false;   // runs from progress down to 0, then lands where it started
+        CurlParams heldPose{};
+        CurlParams heldTarget{};
+        double blendFrom = 0.0;     // progress at release; offsets fade from there to the end
+        double thetaOffset = 0.0;   // released pose minus the schedule's, at blendFrom
+        double apexOffset = 0.0;
     };
+    CurlParams poseOf(const Turn& turn) const;
+    int heldIndex() const;
     int frontPageOf(int leaf) const;
     int backPageOf(int leaf) const;
     bool inFlight(int leaf) const;

@@ -13,7 +13,7 @@ glm::dmat3 uvMap(double us, double ur, double u0, double vs, double vr, double v
 
 }  // namespace
 
-LeafPlacement placeLeaf(Binding binding, bool mirrored, double h) {
+LeafPlacement placeLeaf(Binding binding, bool mirrored, double h, bool flippedY) {
     // Page point (x, y, z) -> world, centred on the middle of the spine.
     glm::dmat4 m(1.0);
     glm::dmat3 frontUv;
@@ -46,6 +46,18 @@ LeafPlacement placeLeaf(Binding binding, bool mirrored, double h) {
         m = m * flipX;
         handedness = -handedness;
     }
+    if (flippedY) {
+        // Page point (x, y) of the curl is the leaf's point (x, h - y): the cone, whose apex lies below
+        // y = 0, then lifts the corner at the far end of the spine. The +z side stays the +z side.
+        glm::dmat4 flipY(1.0);
+        flipY[1][1] = -1.0;
+        flipY[3][1] = h;
+        m = m * flipY;
+        handedness = -handedness;
+        const glm::dmat3 flipV = uvMap(1, 0, 0, 0, -1, 1);  // (s, r) -> (s, 1 - r)
+        frontUv = frontUv * flipV;
+        backUv = backUv * flipV;
+    }
     // Mirrored page space has the leaf's back page on its +z side: the same physical point, the
     // same texel, only which side faces up swaps.
     return LeafPlacement{m, handedness, mirrored ? backUv : frontUv, mirrored ? frontUv : backUv, mirrored};
@@ -65,13 +77,13 @@ ViewFrame viewFrameFor(Display display, Binding binding, double w, double h) {
 }
 
 glm::dvec3 leafPointToWorld(const LeafDraw& draw, Binding binding, double h, glm::dvec2 q) {
-    const LeafPlacement placement = placeLeaf(binding, draw.mirrored, h);
+    const LeafPlacement placement = placeLeaf(binding, draw.mirrored, h, draw.flippedY);
     const glm::dvec3 p = curlPoint(q, draw.curl);
     return glm::dvec3(placement.pageToWorld * glm::dvec4(p, 1.0));
 }
 
 glm::dvec3 leafNormalToWorld(const LeafDraw& draw, Binding binding, double h, glm::dvec2 q) {
-    const LeafPlacement placement = placeLeaf(binding, draw.mirrored, h);
+    const LeafPlacement placement = placeLeaf(binding, draw.mirrored, h, draw.flippedY);
     // A normal found in page space belongs to the +z side; a mirror moves it but keeps it on that side.
     return glm::dmat3(placement.pageToWorld) * curlNormalAnalytic(q, draw.curl);
 }

@@ -21,7 +21,9 @@ struct LeafPlacement {
     bool facingIsBackPage;   // true for mirrored leaves: their +z side is the leaf's back page
 };
 
-LeafPlacement placeLeaf(Binding binding, bool mirrored, double pageHeight);
+// `flippedY` poses the curl from the other end of the spine (a drag from the top corner): page point
+// (x, y) of the curl is the leaf's point (x, pageHeight - y).
+LeafPlacement placeLeaf(Binding binding, bool mirrored, double pageHeight, bool flippedY = false);
 
 // The camera's target: centre and half extents, in world units, of what the view must show.
 struct ViewFrame {

@@ -26,8 +26,6 @@ constexpr char kShaderPrelude[] = "#version 300 es\nprecision highp float;\n";
 constexpr GLenum kTextureMaxAnisotropy = 0x84FE;     // EXT_texture_filter_anisotropic
 constexpr GLenum kMaxTextureMaxAnisotropy = 0x84FF;
 constexpr double kNormalStepOfHeight = 1e-3;         // the math doc's finite-difference step
-constexpr float kFieldOfViewY = 24.0f;               // degrees; mild perspective so a lift reads as one
-constexpr float kFrameMargin = 1.3f;                 // room around the pages for leaves lifting up
 constexpr float kShadowStrength = 0.45f;
 constexpr int kShadowDownscale = 2;                  // the mask is blurred anyway
 constexpr int kDefaultRows = 48;                     // before the first canvas size is known
@@ -233,24 +231,10 @@ GLuint BookRenderer::textureFor(int page) const {
 }
 
 BookRenderer::Camera BookRenderer::cameraFor(const Book& book, int width, int height) const {
-    const BookConfig& c = book.config();
-    const ViewFrame frame = viewFrameFor(c.display, c.binding, c.pageWidth, c.pageHeight);
-    const float aspect = static_cast<float>(width) / static_cast<float>(height);
-    const float tanHalf = std::tan(glm::radians(kFieldOfViewY) * 0.5f);
-    const float halfW = static_cast<float>(frame.halfExtent.x) * kFrameMargin;
-    const float halfH = static_cast<float>(frame.halfExtent.y) * kFrameMargin;
-    const float distance = std::max(halfH / tanHalf, halfW / (tanHalf * aspect));
-    const glm::vec3 center(static_cast<float>(frame.center.x), static_cast<float>(frame.center.y), 0.0f);
-    Camera camera;
-    camera.eye = center + glm::vec3(0.0f, 0.0f, distance);
-    const float reach = static_cast<float>(std::max(c.pageWidth, c.pageHeight));
-    const glm::mat4 projection =
-        glm::perspective(glm::radians(kFieldOfViewY), aspect, 0.02f * distance, distance + 2.0f * reach);
-    camera.viewProjection = projection * glm::lookAt(camera.eye, center, glm::vec3(0.0f, 1.0f, 0.0f));
-    camera.pixelsPerUnit = static_cast<float>(height) / (2.0f * distance * tanHalf);
-    // A leaf standing on its spine comes a page width nearer the eye.
-    camera.magnification = distance / std::max(distance - static_cast<float>(c.pageWidth), 0.25f * distance);
-    return camera;
+    // The core's camera, in float for the GPU: pointer input is solved against the same one.
+    const BookCamera c = bookCamera(book.config(), width, height);
+    return Camera{glm::mat4(c.viewProjection), glm::vec3(c.eye), static_cast<float>(c.pixelsPerUnit),
+                  static_cast<float>(c.magnification)};
 }
 
 void BookRenderer::ensureShadowTarget(int width, int height) {
@@ -273,7 +257,7 @@ void BookRenderer::ensureShadowTarget(int width, int height) {
 LeafPlacement BookRenderer::setPlacementUniforms(const Uniforms& u, const Book& book, const LeafDraw& leaf,
                                                  const Camera& camera) {
     const BookConfig& c = book.config();
-    const LeafPlacement placement = placeLeaf(c.binding, leaf.mirrored, c.pageHeight);
+    const LeafPlacement placement = placeLeaf(c.binding, leaf.mirrored, c.pageHeight, leaf.flippedY);
     const glm::mat4 pageToWorld(placement.pageToWorld);
     glUniform3f(u.curl, static_cast<float>(leaf.curl.theta), static_cast<float>(leaf.curl.apexY),
                 static_cast<float>(leaf.curl.rho));

@@ -14,6 +14,7 @@
 #include <glm/vec3.hpp>
 
 #include "book.hpp"
+#include "book_camera.hpp"
 #include "leaf_placement.hpp"
 #include "page_grid.hpp"
 

@@ -128,9 +128,15 @@ export class BookView {
     return started;
   }
 
+  /** Resolves when every turn in flight has landed and no leaf is held. */
+  settle() {
+    if (!this.book.animating()) return Promise.resolve();
+    return new Promise((resolve) => this._settled.push(resolve));
+  }
+
   /** Draws the current state at once (same task), e.g. before readPixels(). */
   drawNow() {
-    this._fitCanvas();
+    this.fitCanvas();
     this.renderer.draw(this.book);
   }
 
@@ -170,31 +176,42 @@ export class BookView {
   _tick(now) {
     this._frame = 0;
     if (!this.renderer) return;
-    if (this._clockRunning && this.book.animating()) {
+    if (this._clockRunning && this.book.moving()) {
       const seconds = this._lastTime ? Math.min(MAX_FRAME_SECONDS, (now - this._lastTime) / 1000) : 0;
       this.book.advance(seconds);
       while (this._pending.length > 0 && this.book.startTurn(this._pending[0])) this._pending.shift();
     }
     this.drawNow();
-    if (this._clockRunning && this.book.animating()) {
+    if (this._clockRunning && this.book.moving()) {
       this._lastTime = now;
       this._frame = requestAnimationFrame((t) => this._tick(t));
       return;
     }
     this._lastTime = 0;
+    if (this.book.holding()) return;  // a held leaf lying still: the next pointer move wakes us
     this._clockRunning = false;
     this._pending.length = 0;  // what is left could never start (the end of the book)
     for (const resolve of this._settled.splice(0)) resolve();
   }
 
-  _fitCanvas() {
+  /** After the held leaf's pose changed (dragged, hinted, released): draw and run the clock until it rests. */
+  heldChanged() {
+    this._poseFrom = null;
+    this._clockRunning = true;
+    this.requestRender();
+  }
+
+  /** Sizes the drawing buffer to the canvas's CSS size x devicePixelRatio; returns that size. */
+  fitCanvas() {
     const ratio = window.devicePixelRatio || 1;
     const width = Math.max(1, Math.round(this.canvas.clientWidth * ratio));
     const height = Math.max(1, Math.round(this.canvas.clientHeight * ratio));
     if (this.canvas.width !== width || this.canvas.height !== height) {
       this.canvas.width = width;
       this.canvas.height = height;
+      this.requestRender();  // resizing cleared the buffer
     }
+    return { width, height };
   }
 
   _restore() {

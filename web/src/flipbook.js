@@ -3,6 +3,7 @@
 // state into events. Drawing and animation stay in the engine (BookView over the wasm).
 import { loadEngine } from './engine.js';
 import { BookView } from './book-view.js';
+import { PointerDrag } from './pointer-drag.js';
 
 const OPTION_CHECKS = {
   pages: (v) => (Array.isArray(v) && v.length > 0) || 'a non-empty array of page sources',
@@ -120,6 +121,8 @@ export class Flipbook extends EventTarget {
   destroy() {
     if (this._destroyed) return;
     this._destroyed = true;
+    this._pointer?.destroy();
+    this._pointer = null;
     this._view?.destroy();
     this._view = null;
     this._canvas.remove();
@@ -144,6 +147,17 @@ export class Flipbook extends EventTarget {
       gutter: this._settings.gutter,
     });
     this._view.jumpTo(this._view.book.positionOfPage(this._settings.startPage));
+    this._pointer = new PointerDrag(this._view, {
+      onTurnStart: (direction) => {
+        this._emit('turnstart', { direction, page: this.page, drag: true });
+        this._loadAround();
+      },
+      onTurnEnd: (completed) => {
+        if (this._destroyed) return;
+        this._loadAround();
+        this._emit(completed ? 'turned' : 'turncancel', { page: this.page });
+      },
+    });
     await this._loadAround();
     this._emit('ready', { page: this.page });
   }

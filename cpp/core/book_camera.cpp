@@ -1,0 +1,58 @@
+// Camera framing and projections; see book_camera.hpp.
+#include "book_camera.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/ext/matrix_clip_space.hpp>
+#include <glm/ext/matrix_transform.hpp>
+#include <glm/matrix.hpp>
+
+#include "leaf_placement.hpp"
+
+namespace conecurl {
+namespace {
+constexpr double kFieldOfViewY = 24.0 * 3.14159265358979323846 / 180.0;  // mild: a lift reads as one
+constexpr double kFrameMargin = 1.3;  // room around the pages for leaves lifting up
+}  // namespace
+
+BookCamera bookCamera(const BookConfig& c, int width, int height) {
+    BookCamera camera;
+    camera.width = std::max(1, width);
+    camera.height = std::max(1, height);
+    const ViewFrame frame = viewFrameFor(c.display, c.binding, c.pageWidth, c.pageHeight);
+    const double aspect = static_cast<double>(camera.width) / camera.height;
+    const double tanHalf = std::tan(kFieldOfViewY * 0.5);
+    const double halfW = frame.halfExtent.x * kFrameMargin;
+    const double halfH = frame.halfExtent.y * kFrameMargin;
+    const double distance = std::max(halfH / tanHalf, halfW / (tanHalf * aspect));
+    const glm::dvec3 center(frame.center.x, frame.center.y, 0.0);
+    camera.eye = center + glm::dvec3(0.0, 0.0, distance);
+    const double reach = std::max(c.pageWidth, c.pageHeight);
+    const glm::dmat4 projection = glm::perspective(kFieldOfViewY, aspect, 0.02 * distance, distance + 2.0 * reach);
+    camera.viewProjection = projection * glm::lookAt(camera.eye, center, glm::dvec3(0.0, 1.0, 0.0));
+    camera.pixelsPerUnit = camera.height / (2.0 * distance * tanHalf);
+    // A leaf standing on its spine comes a page width nearer the eye.
+    camera.magnification = distance / std::max(distance - c.pageWidth, 0.25 * distance);
+    return camera;
+}
+
+glm::dvec2 worldToPixel(const BookCamera& camera, glm::dvec3 world) {
+    const glm::dvec4 clip = camera.viewProjection * glm::dvec4(world, 1.0);
+    const double w = clip.w > 1e-12 ? clip.w : 1e-12;  // behind the eye cannot happen for a book
+    return {(clip.x / w + 1.0) * 0.5 * camera.width, (1.0 - clip.y / w) * 0.5 * camera.height};
+}
+
+glm::dvec3 pixelToTable(const BookCamera& camera, glm::dvec2 pixel) {
+    const glm::dmat4 inverse = glm::inverse(camera.viewProjection);
+    const double nx = 2.0 * pixel.x / camera.width - 1.0;
+    const double ny = 1.0 - 2.0 * pixel.y / camera.height;
+    const glm::dvec4 nearPoint = inverse * glm::dvec4(nx, ny, -1.0, 1.0);
+    const glm::dvec4 farPoint = inverse * glm::dvec4(nx, ny, 1.0, 1.0);
+    const glm::dvec3 a = glm::dvec3(nearPoint) / nearPoint.w;
+    const glm::dvec3 b = glm::dvec3(farPoint) / farPoint.w;
+    const double s = a.z / (a.z - b.z);  // the camera looks straight down: a.z > 0 > b.z
+    return a + (b - a) * s;
+}
+
+}  // namespace conecurl

@@ -1,0 +1,54 @@
+// Dragging a page by its corner or edge: which leaf a pointer takes hold of, the cone pose that keeps
+// the grabbed point under the pointer (solved on every move), the hover hint, and the release decision.
+#pragma once
+
+#include <optional>
+
+#include <glm/vec2.hpp>
+
+#include "book.hpp"
+#include "book_camera.hpp"
+
+namespace conecurl {
+
+// How far round the cone (radians) the grabbed point may roll: the schedule's own corner peaks at
+// 2.2253. Further, the point would curl inside the roll, out of sight, while "under the pointer".
+inline constexpr double kMaxGripRoll = 2.25;
+
+// A point of a leaf taken hold of, in the page space of the curl that will move it: x from the spine,
+// y from the end of the spine where the cone's apex sits (flippedY: the far end, for top corners).
+struct Grip {
+    bool backward = false;       // the leaf turns back (it lies on the turned side)
+    bool flippedY = false;       // taken nearer the far end of the spine
+    glm::dvec2 pagePoint{0.0};   // the grabbed point
+    bool nearCorner = false;     // close enough to a free corner for the hover hint
+};
+
+// The leaf point under a canvas pixel that a press would take hold of, if a leaf there can turn.
+// In single display the spine-side quarter of the page takes hold of the previous leaf (which lies
+// outside the view) by its free edge at the pointer's height.
+std::optional<Grip> gripAt(const Book& book, const BookCamera& camera, glm::dvec2 pixel);
+
+// Canvas pixel where the grabbed point is drawn with the held turn in `pose`.
+glm::dvec2 gripPixel(const Book& book, const BookCamera& camera, const Grip& grip, const CurlParams& pose);
+
+struct DragPose {
+    CurlParams pose;
+    double errorPixels;  // from the grabbed point's projection to the pointer; 0 where reachable
+};
+
+// The pose that puts the grabbed point under `pixel`, continued from `start` (the previous pose). Of
+// the poses that do, the one nearest the schedule's pose at the same rotation; where none does, the
+// nearest reachable one. Hard leaves stay flat and only rotate.
+DragPose solveDragPose(const Book& book, const BookCamera& camera, const Grip& grip, glm::dvec2 pixel,
+                       const CurlParams& start);
+
+// On release at `pixel` moving at `velocity` (pixels per second): complete the turn when the pointer
+// is past the spine, unless flung back; fall back when short of it, unless flung on.
+bool shouldCompleteTurn(const Book& book, const BookCamera& camera, const Grip& grip, glm::dvec2 pixel,
+                        glm::dvec2 velocity);
+
+// The slight lift shown while the pointer hovers near a corner; `amount` in [0, 1] eases it in.
+CurlParams hoverHintPose(const Book& book, const Grip& grip, double amount);
+
+}  // namespace conecurl

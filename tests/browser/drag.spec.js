@@ -1,0 +1,161 @@
+// Browser: dragging a page by its corner with mouse and touch — the grabbed corner follows the pointer
+// (measured from the GPU's own vertices), release completes or falls back, hovering lifts the corner.
+import { test, expect } from '@playwright/test';
+import { openReady } from './helpers.js';
+
+const FIXTURE = '/tests/browser/fixtures/flipbook-fixture.html';
+
+/** Opens a double-page book at pages 1-2 and returns CSS pixels along the path a corner takes in a turn. */
+async function openBookAndCornerPath(page, { corner = 'bottom', steps = 24 } = {}) {
+  await openReady(page, FIXTURE);
+  return page.evaluate(async ({ corner, steps }) => {
+    const pages = Array.from({ length: 8 }, (_, i) => window.makeNumberedPage(i));
+    const book = await window.Flipbook.create(document.getElementById('container'), {
+      pages, display: 'double', startPage: 2, duration: 600,
+    });
+    window.book = book;
+    window.events = [];
+    for (const type of ['turnstart', 'turned', 'turncancel']) {
+      book.addEventListener(type, (e) => window.events.push({ type, ...e.detail }));
+    }
+    const view = book._view;
+    const engine = view.engine;
+    const { width, height } = view.fitCanvas();
+    const vp = view.book.viewProjection(width, height);
+    const rect = view.canvas.getBoundingClientRect();
+    const w = view.book.pageWidth();
+    const h = view.book.pageHeight();
+    const toCss = ([x, y, z]) => {
+      const cx = vp[0] * x + vp[4] * y + vp[8] * z + vp[12];
+      const cy = vp[1] * x + vp[5] * y + vp[9] * z + vp[13];
+      const cw = vp[3] * x + vp[7] * y + vp[11] * z + vp[15];
+      return { x: rect.left + ((cx / cw + 1) / 2) * rect.width, y: rect.top + ((1 - cy / cw) / 2) * rect.height };
+    };
+    window.toCss = toCss;
+    const top = corner === 'top';
+    const path = [];
+    for (let i = 0; i <= steps; i++) {
+      const draw = {
+        leaf: 1, frontPage: 2, backPage: 3, mirrored: false, flippedY: top, hard: false, resting: false,
+        curl: engine.curlAtWith((0.85 * i) / steps, engine.defaultSchedule(), h),
+      };
+      const p = engine.leafPointToWorld(draw, 'left', h, w, 0);
+      path.push(toCss([p.x, p.y, p.z]));
+    }
+    return path;
+  }, { corner, steps });
+}
+
+/** Where the GPU drew the grabbed corner: the held leaf's corner vertex by transform feedback, projected. */
+function gpuCornerCss(page) {
+  return page.evaluate(() => {
+    const view = window.book._view;
+    const frame = view.book.frame();
+    const index = frame.findIndex((leaf) => !leaf.resting);
+    const vertices = view.renderer.captureLeaf(view.book, index);
+    const points = view.renderer.gridPoints();
+    const w = view.book.pageWidth();
+    // The grid vertex at page point (w, 0): the bottom free corner in the curl's page space.
+    let best = 0;
+    for (let i = 0; i < points.length / 2; i++) {
+      const d = Math.hypot(points[2 * i] - w, points[2 * i + 1]);
+      if (d < Math.hypot(points[2 * best] - w, points[2 * best + 1])) best = i;
+    }
+    return window.toCss([vertices[6 * best], vertices[6 * best + 1], vertices[6 * best + 2]]);
+  });
+}
+
+async function settleFrames(page) {
+  // The held pose catches up within a few frames; SwiftShader frames are slow, so wait for rest.
+  await page.waitForFunction(() => !window.book._view.book.moving());
+}
+
+for (const corner of ['bottom', 'top']) {
+  test(`browser: a mouse dragging the ${corner} corner keeps it within 2 px of the pointer (GPU vertices), and release past the spine turns the page`, async ({ page }) => {
+    const path = await openBookAndCornerPath(page, { corner });
+    await page.mouse.move(path[0].x, path[0].y);
+    await page.mouse.down();
+    let worst = 0;
+    for (let i = 1; i < path.length; i++) {
+      await page.mouse.move(path[i].x, path[i].y);
+      if (i % 4 === 0 || i === path.length - 1) {
+        await settleFrames(page);
+        const drawn = await gpuCornerCss(page);
+        worst = Math.max(worst, Math.hypot(drawn.x - path[i].x, drawn.y - path[i].y));
+      }
+    }
+    expect(worst, 'distance from the pointer to the drawn corner, CSS px').toBeLessThan(2);
+    await page.mouse.up();
+    await page.waitForFunction(() => window.events.some((e) => e.type === 'turned'));
+    const { events, pageNow } = await page.evaluate(() => ({ events: window.events, pageNow: window.book.page }));
+    expect(events.map((e) => e.type)).toEqual(['turnstart', 'turned']);
+    expect(events[0]).toMatchObject({ direction: 'forward', drag: true });
+    expect(pageNow).toBe(3);
+    console.log(`drag-follow (${corner} corner): worst ${worst.toFixed(3)} CSS px over ${path.length} pointer positions`);
+  });
+}
+
+test('browser: a drag released short of the spine falls back with turncancel and the book stays', async ({ page }) => {
+  const path = await openBookAndCornerPath(page);
+  await page.mouse.move(path[0].x, path[0].y);
+  await page.mouse.down();
+  for (let i = 1; i <= 2; i++) await page.mouse.move(path[i].x, path[i].y, { steps: 2 });
+  await page.waitForTimeout(150);  // stand still: no fling
+  await page.mouse.move(path[2].x + 0.5, path[2].y);
+  await page.mouse.up();
+  await page.waitForFunction(() => window.events.some((e) => e.type === 'turncancel' || e.type === 'turned'));
+  await page.waitForFunction(() => !window.book._view.book.animating());
+  const state = await page.evaluate(() => ({ types: window.events.map((e) => e.type), pageNow: window.book.page }));
+  expect(state.types).toEqual(['turnstart', 'turncancel']);
+  expect(state.pageNow).toBe(1);
+  // It keeps working: a click-free next() still turns.
+  expect(await page.evaluate(() => window.book.next())).toBe(true);
+  expect(await page.evaluate(() => window.book.page)).toBe(3);
+});
+
+test('browser: a quick fling towards the spine completes the turn from a short drag', async ({ page }) => {
+  const path = await openBookAndCornerPath(page);
+  await page.mouse.move(path[0].x, path[0].y);
+  await page.mouse.down();
+  for (let i = 1; i <= 8; i++) await page.mouse.move(path[i].x, path[i].y);  // fast: no waits between moves
+  await page.mouse.up();
+  await page.waitForFunction(() => window.events.some((e) => e.type === 'turned' || e.type === 'turncancel'));
+  await page.waitForFunction(() => !window.book._view.book.animating());
+  expect(await page.evaluate(() => window.events.map((e) => e.type))).toEqual(['turnstart', 'turned']);
+});
+
+test('browser: hovering the mouse near a corner lifts it, and moving away lays it flat again', async ({ page }) => {
+  const path = await openBookAndCornerPath(page);
+  await page.waitForFunction(() => !window.book._view.book.animating());
+  const shot = async () => page.screenshot({ clip: { x: path[0].x - 80, y: path[0].y - 80, width: 90, height: 90 } });
+  await page.mouse.move(path[0].x - 300, path[0].y - 150);
+  await page.waitForTimeout(300);
+  const flat = await shot();
+  await page.mouse.move(path[0].x - 4, path[0].y - 4);
+  await page.waitForFunction(() => window.book._view.book.holding() && !window.book._view.book.moving());
+  const lifted = await shot();
+  expect(lifted.equals(flat)).toBe(false);
+  await page.mouse.move(path[0].x - 300, path[0].y - 150);
+  await page.waitForFunction(() => !window.book._view.book.animating());
+  await page.waitForTimeout(200);
+  expect((await shot()).equals(flat)).toBe(true);
+  expect(await page.evaluate(() => window.book.page)).toBe(1);
+});
+
+test('browser: a touch drag from the corner across the spine turns the page (touch pointer events)', async ({ browser }) => {
+  const context = await browser.newContext({ hasTouch: true, viewport: { width: 800, height: 600 } });
+  const page = await context.newPage();
+  const path = await openBookAndCornerPath(page);
+  const cdp = await context.newCDPSession(page);
+  const touch = (type, p) => cdp.send('Input.dispatchTouchEvent', {
+    type, touchPoints: type === 'touchEnd' ? [] : [{ x: p.x, y: p.y, id: 1 }],
+  });
+  await touch('touchStart', path[0]);
+  for (let i = 1; i < path.length; i++) await touch('touchMove', path[i]);
+  await page.waitForTimeout(150);
+  await touch('touchMove', path[path.length - 1]);
+  await touch('touchEnd', path[path.length - 1]);
+  await page.waitForFunction(() => window.events.some((e) => e.type === 'turned'));
+  expect(await page.evaluate(() => window.book.page)).toBe(3);
+  await context.close();
+});
