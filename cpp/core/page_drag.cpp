@@ -25,7 +25,9 @@ constexpr double kMinTheta = 0.08;            // radians: tighter cones roll the
 constexpr double kApexNearest = 0.05;         // apex distance below the page, in page heights
 constexpr double kApexFarthest = 15.0;
 constexpr double kPriorPixelsPerUnit = 2.0;   // weak: the pointer decides, the schedule breaks ties
-constexpr double kRollPixelsPerRadian = 400.0;
+constexpr double kMaxWrap = 2.6;              // radians round the cone; the schedule's corner peaks at 2.2253
+constexpr double kWrapPixelsPerRadian = 400.0;
+constexpr int kVisibilitySamples = 48;        // along the grabbed point's row, for the hidden-point test
 constexpr double kApexWeight = 0.5;           // log apex distance counts half in the shape prior
 constexpr double kFollowPixels = 0.5;         // a pose this close to the pointer follows it
 constexpr int kScreenIterations = 6;          // steps each restart gets before the best few are refined
@@ -34,8 +36,8 @@ constexpr size_t kRefined = 4;
 constexpr double kRestartProgress[] = {0.0025, 0.005, 0.01, 0.015, 0.02, 0.03, 0.04, 0.06, 0.08, 0.1,
                                        0.15, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0};
 constexpr double kFlingPagesPerSecond = 0.8;  // a release faster than this decides by its direction
-constexpr double kHintLift = 0.06;            // the hover hint lifts the corner this much of the page height
-constexpr double kHintApex = 0.6;             // ... on a cone whose apex is this far below the page
+constexpr double kHintLift = 0.08;            // the hover hint lifts the corner this much of the page height
+constexpr double kHintApex = 0.15;            // ... on a cone whose apex is this far below the page
 
 struct Unknowns {
     double c;    // cos theta: 0 flat, towards 1 tightly curled
@@ -98,9 +100,29 @@ public:
     const Bounds& bounds() const { return bounds_; }
     double height() const { return book_.config().pageHeight; }
 
-    glm::dvec2 pixelOf(const CurlParams& pose) const {
-        const glm::dvec3 world = glm::dvec3(placement_.pageToWorld * glm::dvec4(curlPoint(grip_.pagePoint, pose), 1.0));
-        return worldToPixel(camera_, world);
+    glm::dvec3 worldOf(glm::dvec2 pagePoint, const CurlParams& pose) const {
+        return glm::dvec3(placement_.pageToWorld * glm::dvec4(curlPoint(pagePoint, pose), 1.0));
+    }
+
+    glm::dvec2 pixelOf(const CurlParams& pose) const { return worldToPixel(camera_, worldOf(grip_.pagePoint, pose)); }
+
+    // Samples the leaf along the grabbed point's row (the curl's cross-section there): hidden if one
+    // lies on the line of sight in front of it. Neighbours within two samples are part of the point.
+    bool visible(const CurlParams& pose) const {
+        const double w = book_.config().pageWidth;
+        const double spacing = w / kVisibilitySamples;
+        const glm::dvec3 target = worldOf(grip_.pagePoint, pose);
+        const glm::dvec3 sight = target - camera_.eye;
+        const double length2 = glm::dot(sight, sight);
+        for (int k = 0; k <= kVisibilitySamples; ++k) {
+            const double x = spacing * k;
+            if (std::abs(x - grip_.pagePoint.x) <= 2.0 * spacing) continue;
+            const glm::dvec3 q = worldOf({x, grip_.pagePoint.y}, pose);
+            const double along = glm::dot(q - camera_.eye, sight) / length2;
+            if (along <= 0.0 || along >= 1.0) continue;  // behind the eye or beyond the point
+            if (glm::length(q - (camera_.eye + sight * along)) < 0.6 * spacing) return false;
+        }
+        return true;
     }
 
     std::array<double, 5> residuals(const Unknowns& u) const {
@@ -109,10 +131,12 @@ public:
         if (bounds_.rotateOnly) return {d.x, d.y, 0.0, 0.0, 0.0};
         const glm::dvec2 shape(u.c, kApexWeight * u.b);
         const glm::dvec2 off = shape - nearestScheduleShape(shape);
-        // The grabbed point must stay on the outside of the curl, where the eye can see it: rolled no
-        // further round the cone than the schedule ever rolls a corner.
-        const double rolled = std::max(0.0, std::abs(coneBeta(grip_.pagePoint, pose)) - kMaxGripRoll);
-        return {d.x, d.y, kPriorPixelsPerUnit * off.x, kPriorPixelsPerUnit * off.y, kRollPixelsPerRadian * rolled};
+        // No part of the leaf may wrap further round the cone than kMaxWrap: beyond pi it would fold
+        // through itself (the guards clamp it there, collapsing the page onto a line). The free corner
+        // at the apex end wraps furthest.
+        const double wrap = coneBeta({book_.config().pageWidth, 0.0}, pose);
+        return {d.x, d.y, kPriorPixelsPerUnit * off.x, kPriorPixelsPerUnit * off.y,
+                kWrapPixelsPerRadian * std::max(0.0, wrap - kMaxWrap)};
     }
 
     static double cost(const std::array<double, 5>& r) {
@@ -253,6 +277,10 @@ std::optional<Grip> gripAt(const Book& book, const BookCamera& camera, glm::dvec
     return std::nullopt;
 }
 
+bool gripVisible(const Book& book, const BookCamera& camera, const Grip& grip, const CurlParams& pose) {
+    return PoseProblem(book, camera, grip, {0.0, 0.0}).visible(pose);
+}
+
 glm::dvec2 gripPixel(const Book& book, const BookCamera& camera, const Grip& grip, const CurlParams& pose) {
     return PoseProblem(book, camera, grip, {0.0, 0.0}).pixelOf(pose);
 }
@@ -270,15 +298,16 @@ DragPose solveDragPose(const Book& book, const BookCamera& camera, const Grip& g
         return std::abs(u.c - from.c) + 0.3 * std::abs(u.b - from.b) + std::abs(u.rho - from.rho);
     };
     // Continue from the previous pose: the page moves with the pointer and never jumps between
-    // branches while that pose still follows it.
+    // branches while that pose still follows it (and shows the point it holds).
     Unknowns best = problem.solve(from);
     double bestError = pixelError(best);
-    if (bestError > kFollowPixels) {
+    const bool bestVisible = problem.visible(toParams(best, h));
+    if (bestError > kFollowPixels || !bestVisible) {
         // Lost the pointer (a fast move, or one the pose in hand cannot follow without a jump, as
-        // when a flat page is first pulled inwards). Screen a spread of starts with a few steps each:
-        // the schedule's poses, and tight, middling and loose cones about the present rotation; refine
-        // the most promising, and of those that follow the pointer as well as any, take the one
-        // nearest the pose in hand.
+        // when a flat page is first pulled inwards), or the point went inside the curl. Screen a
+        // spread of starts with a few steps each: the schedule's poses, and tight, middling and loose
+        // cones about the present rotation; refine the most promising, and of the visible ones that
+        // follow the pointer as well as any, take the one nearest the pose in hand.
         std::vector<Unknowns> starts;
         for (const double t : kRestartProgress) starts.push_back(toUnknowns(book.scheduledPose(gripLeaf(book, grip), t), h));
         for (const double c : {0.5, 0.9, 0.99}) {
@@ -292,14 +321,17 @@ DragPose solveDragPose(const Book& book, const BookCamera& camera, const Grip& g
             screened.emplace_back(PoseProblem::cost(problem.residuals(u)), u);
         }
         std::sort(screened.begin(), screened.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-        std::vector<std::pair<Unknowns, double>> found{{best, bestError}};
-        double leastError = bestError;
-        for (size_t i = 0; i < std::min<size_t>(kRefined, screened.size()); ++i) {
+        std::vector<std::pair<Unknowns, double>> found;
+        if (bestVisible) found.emplace_back(best, bestError);
+        double leastError = 1e300;
+        for (const auto& [u, error] : found) leastError = std::min(leastError, error);
+        for (size_t i = 0; i < screened.size() && found.size() < kRefined + 1; ++i) {
             const Unknowns u = problem.solve(screened[i].second);
+            if (!problem.visible(toParams(u, h))) continue;
             found.emplace_back(u, pixelError(u));
             leastError = std::min(leastError, found.back().second);
         }
-        if (leastError < bestError - kFollowPixels) {
+        if (!found.empty() && (!bestVisible || leastError < bestError - kFollowPixels)) {
             double nearest = 1e300;
             for (const auto& [u, error] : found) {
                 if (error <= leastError + kFollowPixels && change(u) < nearest) {
@@ -329,20 +361,20 @@ bool shouldCompleteTurn(const Book& book, const BookCamera& camera, const Grip& 
 }
 
 CurlParams hoverHintPose(const Book& book, const Grip& grip, double amount) {
-    // A cone with its apex close below the page curls the corner and leaves the far end of the edge
-    // nearly flat; theta is found by bisection so the corner rises amount * kHintLift page heights.
+    // A cone with its apex close below the page curls the corner at the apex end most; theta is
+    // found by bisection so that corner rises amount * kHintLift page heights.
+    (void)grip;  // the grip chose the corner already: its curl's page space puts it at (width, 0)
     const double h = book.config().pageHeight;
     const double w = book.config().pageWidth;
     const double lift = kHintLift * h * std::clamp(std::isnan(amount) ? 0.0 : amount, 0.0, 1.0);
-    (void)grip;
+    const double apex = -kHintApex * h;
     double flat = kPi / 2.0;
-    double curled = 0.2;
-    for (int i = 0; i < 50; ++i) {
+    double curled = 0.3;
+    for (int i = 0; i < 48; ++i) {
         const double theta = 0.5 * (flat + curled);
-        const double z = curlPoint({w, 0.0}, CurlParams{theta, -kHintApex * h, 0.0}).z;
-        (z < lift ? flat : curled) = theta;
+        (curlPoint({w, 0.0}, CurlParams{theta, apex, 0.0}).z < lift ? flat : curled) = theta;
     }
-    return sanitize(CurlParams{0.5 * (flat + curled), -kHintApex * h, 0.0});
+    return sanitize(CurlParams{0.5 * (flat + curled), apex, 0.0});
 }
 
 }  // namespace conecurl

@@ -11,10 +11,6 @@
 
 namespace conecurl {
 
-// How far round the cone (radians) the grabbed point may roll: the schedule's own corner peaks at
-// 2.2253. Further, the point would curl inside the roll, out of sight, while "under the pointer".
-inline constexpr double kMaxGripRoll = 2.25;
-
 // A point of a leaf taken hold of, in the page space of the curl that will move it: x from the spine,
 // y from the end of the spine where the cone's apex sits (flippedY: the far end, for top corners).
 struct Grip {
@@ -32,6 +28,10 @@ std::optional<Grip> gripAt(const Book& book, const BookCamera& camera, glm::dvec
 // Canvas pixel where the grabbed point is drawn with the held turn in `pose`.
 glm::dvec2 gripPixel(const Book& book, const BookCamera& camera, const Grip& grip, const CurlParams& pose);
 
+// Whether the eye sees the grabbed point with the held turn in `pose`: false where another part of
+// the leaf lies in front of it (the point curled inside a roll). Sampled along the point's row.
+bool gripVisible(const Book& book, const BookCamera& camera, const Grip& grip, const CurlParams& pose);
+
 struct DragPose {
     CurlParams pose;
     double errorPixels;  // from the grabbed point's projection to the pointer; 0 where reachable
@@ -39,7 +39,8 @@ struct DragPose {
 
 // The pose that puts the grabbed point under `pixel`, continued from `start` (the previous pose). Of
 // the poses that do, the one nearest the schedule's pose at the same rotation; where none does, the
-// nearest reachable one. Hard leaves stay flat and only rotate.
+// nearest reachable one. Poses that hide the grabbed point inside the curl count as out of reach.
+// Hard leaves stay flat and only rotate.
 DragPose solveDragPose(const Book& book, const BookCamera& camera, const Grip& grip, glm::dvec2 pixel,
                        const CurlParams& start);
 
