@@ -3,6 +3,7 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -69,7 +70,8 @@ Book createBook(val options) {
     return Book(config);
 }
 
-bool startTurn(Book& book, const std::string& direction) {
+bool startTurn(Book& book, val directionValue) {
+    const std::string direction = directionValue.isString() ? directionValue.as<std::string>() : "";
     if (direction != "forward" && direction != "backward") {
         js::throwError("TypeError", "direction must be 'forward' or 'backward', got '" + direction + "'");
     }
@@ -194,11 +196,17 @@ EMSCRIPTEN_BINDINGS(conecurl_book) {
         .function("leafCount", &Book::leafCount)
         .function("position", &Book::position)
         .function("lastPosition", &Book::lastPosition)
-        .function("positionOfPage", &Book::positionOfPage)
+        .function("positionOfPage", optional_override([](const Book& b, val page) {
+                      return b.positionOfPage(js::wholeNumber(page, "page", 0, std::max(0, b.config().pageCount - 1)));
+                  }))
         .function("firstVisiblePage", &Book::firstVisiblePage)
         .function("startTurn", &startTurn)
-        .function("setLatestTurnProgress", &Book::setLatestTurnProgress)
-        .function("advance", &Book::advance)
+        .function("setLatestTurnProgress", optional_override([](Book& b, val progress) {
+                      b.setLatestTurnProgress(js::finiteNumber(progress, "progress", 0.0, 1.0));
+                  }))
+        .function("advance", optional_override([](Book& b, val seconds) {
+                      return b.advance(js::finiteNumber(seconds, "seconds", 0.0, 1e9));
+                  }))
         .function("animating", &Book::animating)
         .function("moving", &Book::moving)
         .function("gripAt", &gripAtPixel)
@@ -210,6 +218,8 @@ EMSCRIPTEN_BINDINGS(conecurl_book) {
         .function("hintHeldTurn", &hintHeld)
         .function("gripPixel", &gripPixelNow)
         .function("viewProjection", &viewProjection)
-        .function("jumpTo", &Book::jumpTo)
+        .function("jumpTo", optional_override([](Book& b, val position) {
+                      b.jumpTo(js::wholeNumber(position, "position", 0, b.lastPosition()));
+                  }))
         .function("frame", &frameToJs);
 }

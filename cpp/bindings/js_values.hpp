@@ -4,6 +4,7 @@
 
 #include <emscripten/val.h>
 
+#include <cmath>
 #include <string>
 
 #include "book.hpp"
@@ -12,6 +13,26 @@ namespace conecurl::js {
 
 [[noreturn]] inline void throwError(const char* type, const std::string& message) {
     emscripten::val::global(type).new_(emscripten::val("conecurl: " + message)).throw_();
+}
+
+// A JS number that must be a whole number in [lo, hi]: anything else (NaN, a string, 2.5, out of
+// range) is refused with a RangeError naming the argument, never coerced to 0 behind the caller's back.
+inline int wholeNumber(const emscripten::val& value, const char* name, double lo, double hi) {
+    const double number = value.isNumber() ? value.as<double>() : NAN;
+    if (!(number >= lo && number <= hi) || number != static_cast<double>(static_cast<long long>(number))) {
+        throwError("RangeError", std::string(name) + " must be a whole number from " + std::to_string(static_cast<long long>(lo)) +
+                                     " to " + std::to_string(static_cast<long long>(hi)));
+    }
+    return static_cast<int>(number);
+}
+
+// A JS number that must be finite and in [lo, hi].
+inline double finiteNumber(const emscripten::val& value, const char* name, double lo, double hi) {
+    const double number = value.isNumber() ? value.as<double>() : NAN;
+    if (!(number >= lo && number <= hi)) {
+        throwError("RangeError", std::string(name) + " must be a number from " + std::to_string(lo) + " to " + std::to_string(hi));
+    }
+    return number;
 }
 
 inline Binding bindingFromString(const std::string& name) {

@@ -40,7 +40,8 @@ void setOptions(BookRenderer& r, val options) {
 }
 
 // `pixels` is any array-like of width * height * 4 bytes (Uint8Array, Uint8ClampedArray).
-void setPageImage(BookRenderer& r, int page, int width, int height, val pixels) {
+void setPageImage(BookRenderer& r, val pageValue, int width, int height, val pixels) {
+    const int page = js::wholeNumber(pageValue, "page", 0, 1e6);
     const double expected = static_cast<double>(width) * height * 4.0;
     if (width <= 0 || height <= 0 || pixels["length"].as<double>() != expected) {
         js::throwError("TypeError", "page image must be width * height * 4 RGBA bytes");
@@ -76,19 +77,25 @@ EMSCRIPTEN_BINDINGS(conecurl_renderer) {
         .class_function("create", &createRenderer)
         .function("setOptions", &setOptions)
         .function("setPageImage", &setPageImage)
-        .function("releasePageImage", &BookRenderer::releasePageImage)
-        .function("hasPageImage", &BookRenderer::hasPageImage)
+        .function("releasePageImage", optional_override([](BookRenderer& r, val page) {
+                      r.releasePageImage(js::wholeNumber(page, "page", 0, 1e6));
+                  }))
+        .function("hasPageImage", optional_override([](BookRenderer& r, val page) {
+                      return r.hasPageImage(js::wholeNumber(page, "page", 0, 1e6));
+                  }))
         .function("residentPageImages", &BookRenderer::residentPageImages)
         .function("draw", &BookRenderer::draw)
         .function("framesDrawn", &BookRenderer::framesDrawn)
         .function("readPixels", &readPixels)
-        .function("captureLeaf", optional_override([](BookRenderer& r, const Book& book, int index) {
-                      return copyToFloat32Array(r.captureLeaf(book, index));
+        .function("captureLeaf", optional_override([](BookRenderer& r, const Book& book, val index) {
+                      return copyToFloat32Array(r.captureLeaf(book, js::wholeNumber(index, "leaf draw index", 0, kMaxLeafDraws - 1)));
                   }))
         .function("gridPoints", optional_override([](BookRenderer& r) { return copyToFloat32Array(r.grid().points); }))
         .function("gridColumns", optional_override([](BookRenderer& r) { return r.grid().columns; }))
         .function("gridRows", optional_override([](BookRenderer& r) { return r.grid().rows; }))
-        .function("setGridRows", &BookRenderer::setGridRows)
+        .function("setGridRows", optional_override([](BookRenderer& r, val rows) {
+                      r.setGridRows(js::wholeNumber(rows, "rows", 0, 512));  // 0: chosen from the canvas
+                  }))
         .function("gridErrorPixels", &BookRenderer::gridErrorPixels)
         .function("maxTextureSize", &BookRenderer::maxTextureSize)
         .function("recreateGpuObjects", &BookRenderer::recreateGpuObjects);

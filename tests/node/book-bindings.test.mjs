@@ -58,3 +58,35 @@ test('node: leafPointToWorld places a resting page on its side of the spine for 
   assert.ok(at(right, 'top').y < -0.6 && at(left, 'top').y > 0.6);
   book.delete();
 });
+
+test('node: numbers crossing into the engine are checked: NaN, strings, fractions and out-of-range indices throw a RangeError naming the argument', () => {
+  const book = engine.Book.create({ pageCount: 10 });
+  const refused = [
+    ['position', () => book.jumpTo(NaN)],
+    ['position', () => book.jumpTo('3')],
+    ['position', () => book.jumpTo(2.5)],
+    ['position', () => book.jumpTo(book.lastPosition() + 1)],
+    ['position', () => book.jumpTo(-1)],
+    ['page', () => book.positionOfPage(10)],
+    ['page', () => book.positionOfPage(undefined)],
+    ['seconds', () => book.advance(NaN)],
+    ['seconds', () => book.advance(-0.1)],
+    ['progress', () => book.setLatestTurnProgress(Infinity)],
+    ['progress', () => book.setLatestTurnProgress(1.5)],
+    ['pointer position', () => book.gripAt(NaN, 0, 100, 100)],
+    ['canvas size', () => book.gripAt(1, 1, 0, 100)],
+  ];
+  for (const [name, call] of refused) {
+    assert.throws(call, (error) => error instanceof RangeError && error.message.startsWith(`conecurl: ${name}`),
+      `expected a RangeError naming '${name}'`);
+  }
+  assert.throws(() => book.startTurn(5), (error) => error instanceof TypeError && /direction/.test(error.message));
+  assert.throws(() => book.startHeldTurn(null), (error) => error instanceof TypeError && /grip/.test(error.message));
+  assert.throws(() => book.dragHeldTurn({ x: 0, y: 0 }, 1, 1, 100, 100), /no held turn/);
+  // The book was left as it was by every refused call, and still works.
+  assert.equal(book.position(), 0);
+  book.jumpTo(3);
+  assert.equal(book.position(), 3);
+  assert.equal(book.startTurn('forward'), true);
+  book.delete();
+});

@@ -90,7 +90,8 @@ async function turn(direction) {
 async function main() {
   engine = await loadEngine();
   const params = new URLSearchParams(location.search);
-  await buildBook(Number(params.get('page') ?? 0));
+  const requested = Math.floor(Number(params.get('page') ?? 0)) || 0;
+  await buildBook(Math.min(DEMO_PAGE_COUNT - 1, Math.max(0, requested)));
   const fixed = params.get('t');
   if (fixed !== null) view.showTurn('forward', Number(fixed));
   showSchedule(fixed === null ? 0 : Number(fixed));
