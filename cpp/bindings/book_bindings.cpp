@@ -62,7 +62,7 @@ Book createBook(val options) {
             const val page = hard[i];
             const double index = page.isNumber() ? page.as<double>() : -1.0;
             if (index < 0 || index >= config.pageCount || index != std::floor(index)) {
-                js::throwError("TypeError", "hardPages[" + std::to_string(i) + "] is not a page index");
+                js::throwError("TypeError", "hardPages[" + js::digits(i) + "] is not a page index");
             }
             config.hardPages[static_cast<size_t>(index)] = true;
         }
@@ -202,10 +202,10 @@ EMSCRIPTEN_BINDINGS(conecurl_book) {
         .function("firstVisiblePage", &Book::firstVisiblePage)
         .function("startTurn", &startTurn)
         .function("setLatestTurnProgress", optional_override([](Book& b, val progress) {
-                      b.setLatestTurnProgress(js::finiteNumber(progress, "progress", 0.0, 1.0));
+                      b.setLatestTurnProgress(js::finiteNumber(progress, "progress", 0.0, 1.0, "0 to 1"));
                   }))
         .function("advance", optional_override([](Book& b, val seconds) {
-                      return b.advance(js::finiteNumber(seconds, "seconds", 0.0, 1e9));
+                      return b.advance(js::finiteNumber(seconds, "seconds", 0.0, 1e9, "0 to 1e9"));
                   }))
         .function("animating", &Book::animating)
         .function("moving", &Book::moving)

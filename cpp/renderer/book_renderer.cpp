@@ -32,6 +32,13 @@ constexpr int kDefaultRows = 48;                     // before the first canvas 
 const glm::vec3 kLightDirection = glm::normalize(glm::vec3(-0.35f, 0.45f, 1.0f));  // upper left, in front
 constexpr std::uint8_t kPaper[4] = {250, 247, 240, 255};
 
+// Digits of a whole number; std::to_string's snprintf would bring printf's float formatting into the wasm.
+std::string decimal(int n) {
+    if (n < 0) return "-" + decimal(-n);
+    std::string out(1, static_cast<char>('0' + n % 10));
+    return n >= 10 ? decimal(n / 10) + out : out;
+}
+
 }  // namespace
 
 BookRenderer::BookRenderer(const std::string& canvasTarget) {
@@ -199,8 +206,8 @@ std::string BookRenderer::setPageImage(int page, int width, int height, const st
     if (page < 0) return "page index must not be negative";
     if (width <= 0 || height <= 0 || !rgba) return "page image must have a positive size";
     if (width > maxTextureSize_ || height > maxTextureSize_) {
-        return "page image " + std::to_string(width) + "x" + std::to_string(height) +
-               " exceeds MAX_TEXTURE_SIZE " + std::to_string(maxTextureSize_);
+        return "page image " + decimal(width) + "x" + decimal(height) + " exceeds MAX_TEXTURE_SIZE " +
+               decimal(maxTextureSize_);
     }
     if (!makeCurrent()) return "the WebGL2 context is not available";
     GLuint& texture = pageTextures_[page];
