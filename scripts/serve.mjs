@@ -1,13 +1,12 @@
 // A small static server for the demo and the browser tests: serves the repository read-only on
 // loopback with the MIME types wasm and ES modules need. Usage: node scripts/serve.mjs [--port N]
+// The consumer tests import serveDirectory() to serve a built app or an unpacked package the same way.
 import http from 'node:http';
 import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 
-const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
-const portArg = process.argv.indexOf('--port');
-const port = Number(portArg > 0 ? process.argv[portArg + 1] : process.env.PORT || 8080);
+const repositoryRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const host = '127.0.0.1';
 const types = {
   '.html': 'text/html; charset=utf-8', '.js': 'text/javascript', '.mjs': 'text/javascript',
@@ -15,28 +14,45 @@ const types = {
   '.png': 'image/png', '.jpg': 'image/jpeg', '.svg': 'image/svg+xml', '.ico': 'image/x-icon',
 };
 
-const server = http.createServer((req, res) => {
-  const url = new URL(req.url, `http://${host}`);
-  if (url.pathname === '/') {
-    res.writeHead(302, { Location: '/web/demo/' });
-    return res.end();
-  }
-  let file = path.normalize(path.join(root, decodeURIComponent(url.pathname)));
-  if (!file.startsWith(root + path.sep)) {  // no escaping the repository with ../
-    res.writeHead(403);
-    return res.end('forbidden');
-  }
-  if (fs.existsSync(file) && fs.statSync(file).isDirectory()) file = path.join(file, 'index.html');
-  fs.readFile(file, (err, data) => {
-    if (err) {
-      res.writeHead(404, { 'Content-Type': 'text/plain' });
-      return res.end(`not found: ${url.pathname}`);
+/**
+ * Serves `root` on 127.0.0.1:`port` (0: any free port). `home` is where '/' redirects, if anywhere.
+ * Resolves with { server, url } once listening.
+ */
+export function serveDirectory(root, { port = 0, home = null } = {}) {
+  root = path.resolve(root);
+  const server = http.createServer((req, res) => {
+    const url = new URL(req.url, `http://${host}`);
+    if (url.pathname === '/' && home) {
+      res.writeHead(302, { Location: home });
+      return res.end();
     }
-    res.writeHead(200, {
-      'Content-Type': types[path.extname(file)] || 'application/octet-stream',
-      'Cache-Control': 'no-cache',
+    let file = path.normalize(path.join(root, decodeURIComponent(url.pathname)));
+    if (file !== root && !file.startsWith(root + path.sep)) {  // no escaping the root with ../
+      res.writeHead(403);
+      return res.end('forbidden');
+    }
+    if (fs.existsSync(file) && fs.statSync(file).isDirectory()) file = path.join(file, 'index.html');
+    fs.readFile(file, (err, data) => {
+      if (err) {
+        res.writeHead(404, { 'Content-Type': 'text/plain' });
+        return res.end(`not found: ${url.pathname}`);
+      }
+      res.writeHead(200, {
+        'Content-Type': types[path.extname(file)] || 'application/octet-stream',
+        'Cache-Control': 'no-cache',
+      });
+      res.end(data);
     });
-    res.end(data);
   });
-});
-server.listen(port, host, () => console.log(`conecurl demo: http://${host}:${port}/`));
+  return new Promise((resolve, reject) => {
+    server.once('error', reject);
+    server.listen(port, host, () => resolve({ server, url: `http://${host}:${server.address().port}/` }));
+  });
+}
+
+if (process.argv[1] && path.resolve(process.argv[1]) === fileURLToPath(import.meta.url)) {
+  const portArg = process.argv.indexOf('--port');
+  const port = Number(portArg > 0 ? process.argv[portArg + 1] : process.env.PORT || 8080);
+  const { url } = await serveDirectory(repositoryRoot, { port, home: '/web/demo/' });
+  console.log(`conecurl demo: ${url}`);
+}

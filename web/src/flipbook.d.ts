@@ -52,6 +52,8 @@ export class Flipbook extends EventTarget {
   prev(): Promise<boolean>;
   /** Turns leaf by leaf to page `index` (or jumps with animate: false); RangeError if out of range. */
   flip(index: number, options?: { animate?: boolean }): Promise<void>;
+  /** Switches the effects on a live book; any other option is a TypeError (it needs a new book). */
+  setOptions(options: Pick<FlipbookOptions, 'lighting' | 'shadows' | 'gutter'>): void;
   /** Releases the canvas, the GL context, the wasm objects and the loaded pages; idempotent. */
   destroy(): void;
   addEventListener<K extends keyof FlipbookEventMap>(type: K, listener: (event: FlipbookEventMap[K]) => void,

@@ -73,7 +73,7 @@ export class Flipbook extends EventTarget {
     if (!(container instanceof HTMLElement)) throw new TypeError('conecurl: container must be an HTMLElement');
     const settings = validate(options);
     const engine = await loadEngine(settings.wasmUrl ? { wasmUrl: settings.wasmUrl } : {});
-    const book = new Flipbook(container, settings, engine);
+    const book = new this(container, settings, engine);  // `this`: subclasses get their own instances
     await book._build();
     return book;
   }
@@ -116,6 +116,18 @@ export class Flipbook extends EventTarget {
       const turned = await this._turn(target > this._view.position ? 'forward' : 'backward');
       if (!turned || this._destroyed) return;
     }
+  }
+
+  /** Switches lighting, shadows and gutter shading on a live book; other options need a new book. */
+  setOptions(options) {
+    this._alive();
+    if (options === null || typeof options !== 'object') throw new TypeError('conecurl: options must be an object');
+    const checked = validate({ ...options, pages: this._settings.pages });  // a TypeError names a bad value
+    const fixed = Object.keys(options).find((key) => !['lighting', 'shadows', 'gutter'].includes(key));
+    if (fixed) throw new TypeError(`conecurl: option '${fixed}' cannot change on a live book (only lighting, shadows, gutter)`);
+    for (const key of Object.keys(options)) this._settings[key] = checked[key];
+    const { lighting, shadows, gutter } = this._settings;
+    this._view.setOptions({ lighting, shadows, gutter });
   }
 
   destroy() {

@@ -1,0 +1,149 @@
+// Browser: the packed npm package in real consumers. Once per run, `npm pack` makes the tarball; a Vite
+// app (tests/consumers/vite-app) installs it and is built with the repository's vite, and a static page
+// (tests/consumers/static-page) gets the tarball unpacked beside it. What shows is judged from screenshots.
+import { test, expect } from '@playwright/test';
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { serveDirectory } from '../../scripts/serve.mjs';
+import {
+  copyTemplate, installTarball, packTo, repositoryRoot, unpackTo, writePageImages,
+} from '../consumers/package-tools.mjs';
+import { pageAtColor } from './fixtures/test-pages.js';
+import { decodePng } from './png.js';
+
+const PAGE_COUNT = 6;
+let work;
+let viteApp;
+let viteSite;
+let staticSite;
+
+test.describe.configure({ mode: 'serial' });  // the tests share one tarball, one build, two servers
+test.use({ viewport: { width: 800, height: 900 } });
+
+test.beforeAll(async () => {
+  work = fs.mkdtempSync(path.join(os.tmpdir(), 'conecurl-consumers-'));
+  const tarball = packTo(work);
+
+  viteApp = copyTemplate('vite-app', path.join(work, 'vite-app'));
+  writePageImages(path.join(viteApp, 'public/pages'), PAGE_COUNT);
+  installTarball(tarball, viteApp);
+  execFileSync(path.join(repositoryRoot, 'node_modules/.bin/vite'), ['build', viteApp, '--logLevel', 'warn'],
+    { cwd: viteApp, stdio: 'pipe' });
+  viteSite = await serveDirectory(path.join(viteApp, 'dist'));
+
+  const site = copyTemplate('static-page', path.join(work, 'static-page'));
+  writePageImages(path.join(site, 'pages'), PAGE_COUNT);
+  unpackTo(tarball, path.join(site, 'node_modules/conecurl'));
+  staticSite = await serveDirectory(site);
+});
+
+test.afterAll(async () => {
+  viteSite?.server.close();
+  staticSite?.server.close();
+  if (work) fs.rmSync(work, { recursive: true, force: true });
+});
+
+/** Console errors, uncaught exceptions and failed requests of a page, collected from the start. */
+function watchProblems(page) {
+  const problems = [];
+  page.on('pageerror', (error) => problems.push(`uncaught: ${error.message}`));
+  page.on('console', (message) => { if (message.type() === 'error') problems.push(`console: ${message.text()}`); });
+  page.on('response', (response) => { if (response.status() >= 400) problems.push(`${response.status()}: ${response.url()}`); });
+  return problems;
+}
+
+/** Share of an element's on-screen pixels that show each test page's colour. */
+async function pageShares(locator) {
+  const { width, height, data } = decodePng(await locator.screenshot());
+  const counts = new Array(PAGE_COUNT).fill(0);
+  let samples = 0;
+  for (let y = 0; y < height; y += 2) {
+    for (let x = 0; x < width; x += 2) {
+      const i = (y * width + x) * 4;
+      const index = pageAtColor([data[i], data[i + 1], data[i + 2]], PAGE_COUNT);
+      if (index >= 0) counts[index]++;
+      samples++;
+    }
+  }
+  return counts.map((count) => count / samples);
+}
+
+async function waitForFlag(page) {
+  await page.waitForFunction(() => document.body.dataset.ready || document.body.dataset.error);
+  expect(await page.evaluate(() => document.body.dataset.error || null), 'the page reported an error').toBeNull();
+}
+
+// A page image fills about 30% of a 640x400 book showing it; its number and corner mark take a little.
+const SHOWN = 0.2;
+const ABSENT = 0.005;
+
+test('browser: a Vite app built from the packed tarball shows a Flipbook from conecurl and a <cone-flipbook> from conecurl/element, with the wasm in its build', async ({ page }) => {
+  const assets = fs.readdirSync(path.join(viteApp, 'dist/assets'));
+  expect(assets.filter((name) => /^conecurl-engine-[\w-]+\.wasm$/.test(name))).toHaveLength(1);
+  const problems = watchProblems(page);
+  await page.goto(viteSite.url);
+  await waitForFlag(page);
+
+  const flipbook = await pageShares(page.locator('#flipbook'));  // opens at page 0, alone on the right
+  expect(flipbook[0]).toBeGreaterThan(SHOWN);
+  for (const share of flipbook.slice(1)) expect(share).toBeLessThan(ABSENT);
+
+  const element = await pageShares(page.locator('cone-flipbook'));  // start-page="2": the spread 1, 2
+  expect(element[1]).toBeGreaterThan(SHOWN);
+  expect(element[2]).toBeGreaterThan(SHOWN);
+  for (const index of [0, 3, 4, 5]) expect(element[index]).toBeLessThan(ABSENT);
+
+  const state = await page.evaluate(() => ({ book: window.app.book.page, element: window.app.element.page }));
+  expect(state).toEqual({ book: 0, element: 1 });
+  expect(problems).toEqual([]);
+});
+
+test('browser: a static page imports <cone-flipbook> from the unpacked package (import map): its child images become the book, and next() turns it and fires turned', async ({ page }) => {
+  await page.addInitScript(() => {
+    // Capture-phase listeners on the document hear the element's (non-bubbling) events from the start.
+    window.bookEvents = [];
+    for (const type of ['ready', 'turnstart', 'turned', 'pageerror', 'error']) {
+      document.addEventListener(type, (event) => {
+        if (event.target.localName === 'cone-flipbook') window.bookEvents.push([type, event.detail]);
+      }, true);
+    }
+  });
+  const problems = watchProblems(page);
+  await page.goto(staticSite.url);
+  await page.waitForFunction(() => window.bookEvents.some(([type]) => type === 'ready' || type === 'error'));
+  const book = page.locator('cone-flipbook');
+
+  const before = await pageShares(book);
+  expect(before[0]).toBeGreaterThan(SHOWN);
+  for (const share of before.slice(1)) expect(share).toBeLessThan(ABSENT);
+
+  const turned = await book.evaluate((element) => element.next());
+  expect(turned).toBe(true);
+  const after = await pageShares(book);
+  expect(after[0]).toBeLessThan(ABSENT);
+  expect(after[1]).toBeGreaterThan(SHOWN);
+  expect(after[2]).toBeGreaterThan(SHOWN);
+
+  const events = await page.evaluate(() => window.bookEvents);
+  expect(events).toEqual([
+    ['ready', { page: 0 }],
+    ['turnstart', { direction: 'forward', page: 1 }],
+    ['turned', { page: 1 }],
+  ]);
+  expect(await book.evaluate((element) => element.book.pageCount)).toBe(PAGE_COUNT);
+  expect(problems).toEqual([]);
+});
+
+test('browser: without JavaScript the static page shows the child images of <cone-flipbook> instead of a blank box', async ({ browser }) => {
+  const context = await browser.newContext({ javaScriptEnabled: false, viewport: { width: 800, height: 900 } });
+  try {
+    const page = await context.newPage();
+    await page.goto(staticSite.url, { waitUntil: 'load' });
+    const shares = await pageShares(page.locator('cone-flipbook'));
+    expect(shares[0]).toBeGreaterThan(SHOWN);  // the cover image, laid out as a plain <img>
+  } finally {
+    await context.close();
+  }
+});

@@ -1,0 +1,269 @@
+// Browser: the <cone-flipbook> element: attributes as options, child <img> pages, events re-dispatched
+// from the element, live and rebuilding attribute changes, errors that name the attribute, and the
+// book's lifetime following the element's place in the document.
+import { test, expect } from '@playwright/test';
+import { openReady } from './helpers.js';
+
+const FIXTURE = '/tests/browser/fixtures/element-fixture.html';
+
+test('browser: <cone-flipbook> attributes become Flipbook options (display, direction, start-page, duration, hard-covers, load-window, lighting)', async ({ page }) => {
+  const problems = await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    const pages = Array.from({ length: 10 }, (_, i) => window.pageUrl(i)).join(' ');
+    const element = window.makeElement({
+      pages, display: 'double', direction: 'rtl', 'start-page': '3', duration: '250', 'hard-covers': 'true',
+      'load-window': '1', lighting: 'false',
+    });
+    document.getElementById('stage').append(element);
+    const book = await element.whenReady();
+    return {
+      same: book === element.book,
+      display: element.display,
+      page: element.page,
+      pageCount: element.pageCount,
+      // Right to left: the spread's first page (3) lies right of the spine, the second (4) left of it.
+      leftRight: window.pagesAt(element, [[150, 300], [490, 300]]),
+      resident: book._view.renderer.residentPageImages(),
+      settings: (({ duration, hardCovers, lighting, loadWindow }) => ({ duration, hardCovers, lighting, loadWindow }))(book._settings),
+    };
+  });
+  expect(result.same).toBe(true);
+  expect(result.display).toBe('double');
+  expect(result.page).toBe(3);
+  expect(result.pageCount).toBe(10);
+  expect(result.leftRight).toEqual([4, 3]);
+  // load-window 1: pages 2..5 around the spread (3, 4), not all ten.
+  expect(result.resident).toBe(4);
+  expect(result.settings).toEqual({ duration: 250, hardCovers: true, lighting: false, loadWindow: 1 });
+  expect(problems).toEqual([]);
+});
+
+test('browser: child <img> elements are the pages in order with their alt text, hidden while the book shows; a new child rebuilds at the same page', async ({ page }) => {
+  const problems = await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    const images = [0, 1, 2].map((i) => [window.pageUrl(i), `Page ${i} of the test book`]);
+    const element = window.makeElement({ display: 'single' }, images);
+    document.getElementById('stage').append(element);
+    const book = await element.whenReady();
+    const first = {
+      pageCount: element.pageCount,
+      alts: book._pages.map((p) => p.alt),
+      centre: window.pagesAt(element, [[320, 300]])[0],
+      childWidths: [...element.querySelectorAll('img')].map((img) => img.getBoundingClientRect().width),
+      canvasWidth: element.shadowRoot.querySelector('canvas').getBoundingClientRect().width,
+    };
+    await element.flip(1, { animate: false });
+    const rebuilt = new Promise((resolve) => element.addEventListener('ready', resolve, { once: true }));
+    element.append(Object.assign(document.createElement('img'), { src: window.pageUrl(3), alt: 'Page 3' }));
+    await rebuilt;
+    return { first, rebuilt: { pageCount: element.pageCount, page: element.page, same: element.book === book, centre: window.pagesAt(element, [[320, 300]])[0] } };
+  });
+  expect(result.first.pageCount).toBe(3);
+  expect(result.first.alts).toEqual(['Page 0 of the test book', 'Page 1 of the test book', 'Page 2 of the test book']);
+  expect(result.first.centre).toBe(0);
+  expect(result.first.childWidths).toEqual([0, 0, 0]);  // not rendered: no slot while the book shows
+  expect(result.first.canvasWidth).toBe(640);
+  expect(result.rebuilt).toEqual({ pageCount: 4, page: 1, same: false, centre: 1 });
+  expect(problems).toEqual([]);
+});
+
+test('browser: <cone-flipbook> re-dispatches ready, progress, pageerror, turnstart and turned with the Flipbook\'s own detail; next() before ready waits for the book', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    const pages = [window.pageUrl(0), '/no/such/page.png', window.pageUrl(2), window.pageUrl(3)].join(' ');
+    const element = window.makeElement({ pages, display: 'double', duration: '200' });
+    const events = [];
+    for (const type of ['ready', 'progress', 'pageerror', 'turnstart', 'turned']) {
+      element.addEventListener(type, (event) => events.push(event));
+    }
+    document.getElementById('stage').append(element);
+    const turned = await element.next();  // asked before the book exists
+    const fromBook = [];
+    element.book.addEventListener('turned', (event) => fromBook.push(event));
+    await element.prev();
+    const last = events.at(-1);
+    return {
+      turned,
+      types: events.map((event) => event.type),
+      isCustom: events.every((event) => event instanceof CustomEvent && event.target === element),
+      details: events.filter((e) => e.type !== 'progress').map((e) => [e.type, e.detail.error ? e.detail.error.message : e.detail]),
+      lastProgress: events.filter((e) => e.type === 'progress').at(-1).detail,
+      sameDetail: fromBook.length === 1 && last.type === 'turned' && last.detail === fromBook[0].detail,
+    };
+  });
+  expect(result.turned).toBe(true);
+  expect(result.isCustom).toBe(true);
+  expect(result.types.filter((type) => type === 'progress').length).toBeGreaterThanOrEqual(4);
+  expect(result.lastProgress).toEqual({ loaded: 4, total: 4 });
+  const [pageerror, ...rest] = result.details;
+  expect(pageerror[0]).toBe('pageerror');
+  expect(pageerror[1]).toContain('/no/such/page.png');
+  expect(rest).toEqual([
+    ['ready', { page: 0 }],
+    ['turnstart', { direction: 'forward', page: 1 }],
+    ['turned', { page: 1 }],
+    ['turnstart', { direction: 'backward', page: 0 }],
+    ['turned', { page: 0 }],
+  ]);
+  expect(result.sameDetail).toBe(true);  // the element passes on the Flipbook's detail object itself
+});
+
+test('browser: lighting, shadows and gutter attributes change the frame of the same live book; other attributes rebuild it at the current page', async ({ page }) => {
+  const problems = await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    const pages = Array.from({ length: 8 }, (_, i) => window.pageUrl(i)).join(' ');
+    const element = window.makeElement({ pages, display: 'double', 'start-page': '1' });
+    document.getElementById('stage').append(element);
+    const book = await element.whenReady();
+    const frameAt = () => { book._view.showTurn('forward', 0.3); return Uint8Array.from(book._view.readPixels().data); };
+    const lit = frameAt();
+    element.setAttribute('lighting', 'false');
+    element.setAttribute('shadows', 'false');
+    element.setAttribute('gutter', 'false');
+    const flat = frameAt();
+    element.removeAttribute('lighting');  // absent means the default, on
+    element.removeAttribute('shadows');
+    element.removeAttribute('gutter');
+    const litAgain = frameAt();
+    const changed = (a, b) => { let n = 0; for (let i = 0; i < a.length; i += 4) if (Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]) > 12) n++; return n / (a.length / 4); };
+    const live = { same: element.book === book, effectsOff: changed(lit, flat), effectsBack: changed(lit, litAgain) };
+
+    await element.flip(5, { animate: false });
+    const rebuilt = new Promise((resolve) => element.addEventListener('ready', (e) => resolve(e.detail), { once: true }));
+    element.setAttribute('display', 'single');
+    const detail = await rebuilt;
+    return {
+      live,
+      rebuild: { detail, page: element.page, display: element.display, newBook: element.book !== book, oldDestroyed: book._view === null, canvases: element.shadowRoot.querySelectorAll('canvas').length },
+    };
+  });
+  expect(result.live.same).toBe(true);
+  expect(result.live.effectsOff).toBeGreaterThan(0.05);  // shading and shadow touch well over 5% of the frame
+  expect(result.live.effectsBack).toBe(0);
+  expect(result.rebuild).toEqual({ detail: { page: 5 }, page: 5, display: 'single', newBook: true, oldDestroyed: true, canvases: 1 });
+  expect(problems).toEqual([]);
+});
+
+test('browser: a bad attribute fires an error event with a TypeError naming the attribute, logs it, shows it, and the book builds once it is fixed', async ({ page }) => {
+  const problems = await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    const three = [0, 1, 2].map((i) => window.pageUrl(i)).join(' ');
+    const cases = [
+      [{ pages: three, duration: 'fast' }, ['duration', '300']],
+      [{ pages: three, display: 'triple' }, ['display', 'auto']],
+      [{ pages: three, 'start-page': '7' }, ['start-page', '2']],
+      [{ pages: three, lighting: 'yes' }, ['lighting', 'false']],
+      [{ pages: three, 'load-window': '0.5' }, ['load-window', '2']],
+      [{ pages: three, direction: 'upwards' }, ['direction', 'vertical']],
+      [{}, ['pages', three]],
+    ];
+    const out = [];
+    for (const [attributes, [name, goodValue]] of cases) {
+      const element = window.makeElement(attributes);
+      const events = [];
+      element.addEventListener('error', (event) => events.push(event.detail.error));
+      document.getElementById('stage').append(element);
+      const rejection = await element.whenReady().then(() => null, (error) => error);
+      const panel = element.shadowRoot.querySelector('[part=error]');
+      const shown = { visible: !panel.hidden && panel.getBoundingClientRect().height > 0, text: panel.textContent };
+      element.setAttribute(name, goodValue);
+      const fixed = await element.whenReady().then((book) => book === element.book, (error) => error.message);
+      out.push({
+        name,
+        events: events.map((e) => `${e.name}: ${e.message}`),
+        sameError: rejection === events[0],
+        shown,
+        fixed,
+        panelHiddenAfterFix: panel.hidden,
+      });
+      element.remove();
+    }
+    // A bad value for a live attribute is reported and the book keeps its setting and keeps working.
+    const element = window.makeElement({ pages: three });
+    document.getElementById('stage').append(element);
+    const book = await element.whenReady();
+    const errors = [];
+    element.addEventListener('error', (event) => errors.push(event.detail.error.message));
+    element.setAttribute('shadows', 'maybe');
+    const turned = await element.next();
+    return { out, live: { errors, same: element.book === book, turned, shadows: book._settings.shadows } };
+  });
+  for (const { name, events, sameError, shown, fixed, panelHiddenAfterFix } of result.out) {
+    expect(events, `attribute ${name}`).toHaveLength(1);
+    expect(events[0]).toMatch(/^TypeError: conecurl: <cone-flipbook> /);
+    expect(events[0]).toContain(name === 'pages' ? "'pages' attribute" : `attribute '${name}'`);
+    expect(sameError, `whenReady() rejects with the reported error (${name})`).toBe(true);
+    expect(shown.visible).toBe(true);
+    expect(shown.text).toContain(events[0].replace(/^TypeError: /, ''));
+    expect(fixed, `fixing ${name} builds the book`).toBe(true);
+    expect(panelHiddenAfterFix).toBe(true);
+  }
+  expect(result.live.errors).toHaveLength(1);
+  expect(result.live.errors[0]).toContain("attribute 'shadows'");
+  expect(result.live).toMatchObject({ same: true, turned: true, shadows: true });
+  // Each error also went to the console.
+  const logged = problems.filter((text) => text.includes('conecurl: <cone-flipbook>'));
+  expect(logged).toHaveLength(result.out.length + 1);
+});
+
+test('browser: removing <cone-flipbook> destroys its book and releases its canvas; a move keeps the book; destroy() empties it; putting it back rebuilds', async ({ page }) => {
+  const problems = await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    const before = window.liveCanvases();
+    const pages = Array.from({ length: 6 }, (_, i) => window.pageUrl(i)).join(' ');
+    const element = window.makeElement({ pages, display: 'double' });
+    document.getElementById('stage').append(element);
+    const book = await element.whenReady();
+    await element.flip(3, { animate: false });
+    const whileShown = window.liveCanvases();
+
+    document.getElementById('elsewhere').append(element);  // a move: removed and inserted in one task
+    await new Promise((resolve) => setTimeout(resolve, 50));
+    const moved = { same: element.book === book, alive: book._view !== null };
+
+    element.remove();
+    await new Promise((resolve) => setTimeout(resolve, 50));
+    const removed = {
+      book: element.book,
+      destroyed: book._view === null,
+      canvases: element.shadowRoot.querySelectorAll('canvas').length,
+      live: window.liveCanvases(),
+      next: await element.next().then(() => 'resolved', (error) => error.message),
+    };
+
+    document.getElementById('stage').append(element);
+    const again = await element.whenReady();
+    const back = { newBook: again !== book, page: element.page, live: window.liveCanvases() };
+
+    element.destroy();
+    const destroyed = {
+      book: element.book,
+      canvases: element.shadowRoot.querySelectorAll('canvas').length,
+      live: window.liveCanvases(),
+      next: await element.next().then(() => 'resolved', (error) => error.message),
+    };
+
+    // Removed while its book is still being built: the book is destroyed when the build finishes.
+    const early = window.makeElement({ pages });
+    document.getElementById('stage').append(early);
+    const waiting = early.whenReady().then(() => 'resolved', (error) => error.message);
+    early.remove();
+    const earlyResult = await waiting;
+    return { before, whileShown, moved, removed, back, destroyed, earlyResult };
+  });
+  expect(result.whileShown).toBe(result.before + 1);
+  expect(result.moved).toEqual({ same: true, alive: true });
+  expect(result.removed.book).toBeNull();
+  expect(result.removed.destroyed).toBe(true);
+  expect(result.removed.canvases).toBe(0);
+  expect(result.removed.live).toBe(result.before);
+  expect(result.removed.next).toContain('in the document');
+  expect(result.back).toEqual({ newBook: true, page: 3, live: result.before + 1 });
+  expect(result.destroyed.book).toBeNull();
+  expect(result.destroyed.canvases).toBe(0);
+  expect(result.destroyed.live).toBe(result.before);
+  expect(result.destroyed.next).toContain('destroyed');
+  expect(result.earlyResult).toContain('removed from the document');
+  await expect.poll(() => page.evaluate(() => window.liveCanvases())).toBe(result.before);
+  expect(problems).toEqual([]);
+});

@@ -1,0 +1,41 @@
+// Browser: Flipbook.setOptions, the live switch of the effects that <cone-flipbook>'s lighting, shadows
+// and gutter attributes use; every other option needs a new book and is refused by name.
+import { test, expect } from '@playwright/test';
+import { openReady } from './helpers.js';
+
+const FIXTURE = '/tests/browser/fixtures/flipbook-fixture.html';
+
+test('browser: Flipbook.setOptions switches lighting, shadows and gutter on the live book and refuses other options with a TypeError naming them', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    const container = document.getElementById('container');
+    const pages = Array.from({ length: 6 }, (_, i) => window.makeNumberedPage(i));
+    const book = await window.Flipbook.create(container, { pages, display: 'double', startPage: 1 });
+    const frameAt = () => { book._view.showTurn('forward', 0.3); return Uint8Array.from(book._view.readPixels().data); };
+    const changed = (a, b) => {
+      let n = 0;
+      for (let i = 0; i < a.length; i += 4) if (Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]) > 12) n++;
+      return n / (a.length / 4);
+    };
+    const lit = frameAt();
+    book.setOptions({ lighting: false, shadows: false, gutter: false });
+    const flat = frameAt();
+    book.setOptions({ shadows: true });
+    const shadowOnly = frameAt();
+    const refusals = [];
+    for (const options of [{ display: 'single' }, { lighting: 'no' }, { colour: 'red' }, null, { lighting: true, duration: 10 }]) {
+      try { book.setOptions(options); refusals.push('no error'); } catch (e) { refusals.push(`${e.name}: ${e.message}`); }
+    }
+    book.setOptions({ shadows: true });  // sends all three settings to the renderer again
+    const afterRefusals = frameAt();
+    return { effectsOff: changed(lit, flat), shadowBack: changed(flat, shadowOnly), refusals, unchangedByRefusals: changed(shadowOnly, afterRefusals) };
+  });
+  expect(result.effectsOff).toBeGreaterThan(0.05);
+  expect(result.shadowBack).toBeGreaterThan(0.005);  // the lifted leaf's shadow falls on the resting pages
+  const names = ["'display'", "'lighting'", "'colour'", 'options must be an object', "'duration'"];
+  result.refusals.forEach((message, i) => {
+    expect(message).toMatch(/^TypeError: conecurl: /);
+    expect(message).toContain(names[i]);
+  });
+  expect(result.unchangedByRefusals).toBe(0);  // a refused call changes nothing, not even its valid part
+});

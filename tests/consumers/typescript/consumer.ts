@@ -1,0 +1,50 @@
+// A TypeScript consumer of the packed package: it must typecheck under --strict, with the types
+// found through the package's `exports` (tests/node/package.test.mjs runs tsc on it).
+import { Flipbook, BookView, loadEngine, type FlipbookOptions, type ConeCurlEngine } from 'conecurl';
+import { ConeFlipbookElement } from 'conecurl/element';
+import { loadEngine as loadEngineDirectly } from 'conecurl/engine';
+
+export async function openBook(container: HTMLElement): Promise<number> {
+  const options: FlipbookOptions = {
+    pages: ['cover.jpg', { src: 'p1.jpg', alt: 'Page one', hard: false }],
+    display: 'auto', direction: 'rtl', startPage: 0, duration: 800, lighting: false,
+  };
+  const book: Flipbook = await Flipbook.create(container, options);
+  book.addEventListener('turned', (event) => console.log(event.detail.page.toFixed(0)));
+  book.setOptions({ shadows: false });
+  const turned: boolean = await book.next();
+  await book.flip(1, { animate: false });
+  book.destroy();
+  // @ts-expect-error: 'triple' is not a display mode
+  await Flipbook.create(container, { pages: ['a.jpg'], display: 'triple' });
+  // @ts-expect-error: only the effects change on a live book
+  book.setOptions({ duration: 10 });
+  return turned ? book.page : book.pageCount;
+}
+
+export async function useElement(): Promise<string | null> {
+  const element = document.querySelector('cone-flipbook');  // typed through HTMLElementTagNameMap
+  if (!element) return null;
+  const same: ConeFlipbookElement = element;
+  same.addEventListener('turnstart', (event) => console.log(event.detail.direction, event.detail.page));
+  same.addEventListener('error', (event) => console.error(event.detail.error.message));
+  same.addEventListener('progress', (event) => console.log(event.detail.loaded / event.detail.total));
+  const created = document.createElement('cone-flipbook');
+  created.setAttribute('pages', 'a.jpg b.jpg');
+  document.body.append(created);
+  const book: Flipbook = await created.whenReady();
+  await created.next();
+  await created.flip(1);
+  // @ts-expect-error: page is read-only
+  created.page = 3;
+  created.destroy();
+  return book.pageCount > 0 ? element.display : null;
+}
+
+export async function useEngine(canvas: HTMLCanvasElement): Promise<number> {
+  const engine: ConeCurlEngine = await loadEngine({ wasmUrl: '/assets/conecurl-engine.wasm' });
+  const same: ConeCurlEngine = await loadEngineDirectly();
+  const view = await BookView.create(canvas, { engine, pageCount: 4, display: 'single' });
+  view.destroy();
+  return engine.curlAt(0.3).theta + same.curlAt(0.1).rho;
+}

@@ -1,0 +1,49 @@
+// Types of <cone-flipbook> (element.js): the element class, its events, and its tag in
+// HTMLElementTagNameMap so document.querySelector('cone-flipbook') is typed.
+import type { Flipbook, FlipbookEventMap } from './flipbook.js';
+
+export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' | keyof FlipbookEventMap>, FlipbookEventMap {
+  /** The book could not be built (a bad attribute: a TypeError naming it; no WebGL2) or a live change was refused. */
+  error: CustomEvent<{ error: Error }>;
+}
+
+/**
+ * The Flipbook as an element. Attributes (all optional except the pages): pages (URLs separated by
+ * spaces; else the child <img> elements, alt text kept), display, direction, start-page, duration,
+ * hard-covers, lighting, shadows, gutter ("true"/"false"), load-window, wasm-url.
+ */
+export class ConeFlipbookElement extends HTMLElement {
+  static readonly observedAttributes: string[];
+  /** The Flipbook inside once it is ready; null before, after a failure and after destroy(). */
+  readonly book: Flipbook | null;
+  /** First visible page; before `ready`, the page the book will open at. */
+  readonly page: number;
+  /** 0 until `ready`. */
+  readonly pageCount: number;
+  /** Pages shown side by side; null until `ready`. */
+  readonly display: 'single' | 'double' | null;
+  /** Waits for the book being built; rejects with its error, or at once if not in the document or destroyed. */
+  whenReady(): Promise<Flipbook>;
+  /** Wait for the book like whenReady(), then turn. */
+  next(): Promise<boolean>;
+  prev(): Promise<boolean>;
+  flip(index: number, options?: { animate?: boolean }): Promise<void>;
+  /** Destroys the book now; the element rebuilds only when put in the document again. */
+  destroy(): void;
+  addEventListener<K extends keyof ConeFlipbookEventMap>(type: K,
+    listener: (this: ConeFlipbookElement, event: ConeFlipbookEventMap[K]) => unknown,
+    options?: boolean | AddEventListenerOptions): void;
+  addEventListener(type: string, listener: EventListenerOrEventListenerObject,
+    options?: boolean | AddEventListenerOptions): void;
+  removeEventListener<K extends keyof ConeFlipbookEventMap>(type: K,
+    listener: (this: ConeFlipbookElement, event: ConeFlipbookEventMap[K]) => unknown,
+    options?: boolean | EventListenerOptions): void;
+  removeEventListener(type: string, listener: EventListenerOrEventListenerObject,
+    options?: boolean | EventListenerOptions): void;
+}
+
+declare global {
+  interface HTMLElementTagNameMap {
+    'cone-flipbook': ConeFlipbookElement;
+  }
+}

@@ -1,0 +1,280 @@
+// <cone-flipbook>: the Flipbook as an HTML element, for pages without a build step. Attributes mirror
+// the options; child <img> elements can be the pages, and are what a browser without JavaScript shows.
+import { Flipbook } from './flipbook.js';
+
+const TAG = 'cone-flipbook';
+
+const parseText = (raw) => raw;
+function parseNumber(raw, attribute) {
+  const value = Number(raw);
+  if (raw.trim() === '' || !Number.isFinite(value)) throw attributeError(attribute, 'a number', raw);
+  return value;
+}
+function parseBoolean(raw, attribute) {
+  if (raw === '' || raw === 'true') return true;  // a bare boolean attribute counts as "true"
+  if (raw === 'false') return false;
+  throw attributeError(attribute, '"true" or "false"', raw);
+}
+function parseList(raw, attribute) {
+  const urls = raw.split(/\s+/).filter(Boolean);
+  if (urls.length === 0) throw attributeError(attribute, 'image URLs separated by spaces', raw);
+  return urls;
+}
+
+// attribute -> [Flipbook option, parser]; the parsers check syntax, Flipbook.create the values.
+const ATTRIBUTES = {
+  pages: ['pages', parseList],
+  display: ['display', parseText],
+  direction: ['direction', parseText],
+  'start-page': ['startPage', parseNumber],
+  duration: ['duration', parseNumber],
+  'hard-covers': ['hardCovers', parseBoolean],
+  lighting: ['lighting', parseBoolean],
+  shadows: ['shadows', parseBoolean],
+  gutter: ['gutter', parseBoolean],
+  'load-window': ['loadWindow', parseNumber],
+  'wasm-url': ['wasmUrl', parseText],
+};
+const ATTRIBUTE_OF_OPTION = Object.fromEntries(Object.entries(ATTRIBUTES).map(([name, [option]]) => [option, name]));
+const LIVE_ATTRIBUTES = ['lighting', 'shadows', 'gutter'];  // applied to the running book, no rebuild
+
+function attributeError(attribute, expected, raw) {
+  return new TypeError(`conecurl: <${TAG}> attribute '${attribute}' must be ${expected}, got "${raw}"`);
+}
+
+/** Flipbook's TypeErrors name options ('startPage'); an element's user knows attributes ('start-page'). */
+function inAttributeTerms(error, element) {
+  const option = error instanceof TypeError && /option '(\w+)/.exec(error.message)?.[1];
+  const attribute = option && ATTRIBUTE_OF_OPTION[option];
+  if (!attribute) return error;
+  const raw = element.getAttribute(attribute);
+  const given = raw === null ? '(from the child <img> elements)' : `"${raw}"`;
+  return new TypeError(`conecurl: <${TAG}> attribute '${attribute}' ${given} is not valid: ${
+    error.message.replace(/^conecurl: /, '')}`, { cause: error });
+}
+
+function deferred() {
+  const handle = {};
+  handle.promise = new Promise((resolve, reject) => Object.assign(handle, { resolve, reject }));
+  handle.promise.catch(() => {});  // a failure nobody waited for is reported by the error event, not as unhandled
+  return handle;
+}
+
+const TEMPLATE = `
+<style>
+  :host { display: block; position: relative; aspect-ratio: 16 / 10; }
+  :host([hidden]) { display: none; }
+  .book { width: 100%; height: 100%; }
+  .failed { box-sizing: border-box; height: 100%; overflow: auto; padding: 1em; border: 2px solid #b3261e;
+            background: #fff8f7; color: #5c1512; font: 14px/1.4 system-ui, sans-serif; }
+  ::slotted(img) { max-width: 100%; }
+</style>
+<div class="book" part="book"></div>
+<div class="failed" part="error" role="alert" hidden><p></p><slot></slot></div>`;
+
+export class ConeFlipbookElement extends HTMLElement {
+  static get observedAttributes() { return Object.keys(ATTRIBUTES); }
+
+  constructor() {
+    super();
+    // No <slot> while the book shows: the child <img> elements are page sources, not content.
+    this.attachShadow({ mode: 'open' }).innerHTML = TEMPLATE;
+    this._container = this.shadowRoot.querySelector('.book');
+    this._failure = this.shadowRoot.querySelector('.failed');
+    this._book = null;           // the Flipbook once it is ready
+    this._waiter = null;         // deferred of the build scheduled or in flight
+    this._error = null;          // why the last build failed
+    this._generation = 0;        // builds superseded by a later one are destroyed when they finish
+    this._scheduled = false;
+    this._reopenAt = null;       // page to open at when the book is built again
+    this._destroyed = false;
+    this._children = new MutationObserver((records) => {
+      if (!this.hasAttribute('pages') && records.some((record) => this._touchesChildImage(record))) this._schedule();
+    });
+  }
+
+  /** The Flipbook inside, once ready (null before, and after a failure or destroy). */
+  get book() { return this._book; }
+  /** First visible page; before `ready`, the page the book will open at. */
+  get page() {
+    if (this._book) return this._book.page;
+    if (this._reopenAt !== null) return this._reopenAt;
+    const start = Number(this.getAttribute('start-page'));
+    return Number.isInteger(start) && start >= 0 ? start : 0;
+  }
+  /** Number of pages; 0 until `ready`. */
+  get pageCount() { return this._book ? this._book.pageCount : 0; }
+  /** 'single' or 'double' as shown; null until `ready`. */
+  get display() { return this._book ? this._book.display : null; }
+
+  /**
+   * Resolves with the Flipbook once it is ready, waiting for a build that is scheduled or running.
+   * Rejects with the build's error, or at once when the element is not in the document or destroyed.
+   */
+  whenReady() {
+    if (this._waiter) return this._waiter.promise;
+    if (this._book) return Promise.resolve(this._book);
+    if (this._destroyed) {
+      return Promise.reject(new Error(`conecurl: this <${TAG}> was destroyed; put it in the document again to build a new book`));
+    }
+    if (!this.isConnected) {
+      return Promise.reject(new Error(`conecurl: a <${TAG}> builds its book once it is in the document; append it first`));
+    }
+    return Promise.reject(this._error);
+  }
+
+  next() { return this.whenReady().then((book) => book.next()); }
+  prev() { return this.whenReady().then((book) => book.prev()); }
+  flip(index, options) { return this.whenReady().then((book) => book.flip(index, options)); }
+
+  /** Destroys the book now; the element stays empty until it is put in the document again. */
+  destroy() {
+    this._destroyed = true;
+    this._stop(new Error(`conecurl: this <${TAG}> was destroyed before its book was ready`));
+  }
+
+  connectedCallback() {
+    this._destroyed = false;
+    this._children.observe(this, { childList: true, subtree: true, attributes: true, attributeFilter: ['src', 'alt'] });
+    if (!this._book && !this._waiter) this._schedule();  // else: moved within the document, the book lives on
+  }
+
+  disconnectedCallback() {
+    // A move (removed and inserted in the same task) keeps the book; a removal destroys it.
+    queueMicrotask(() => {
+      if (this.isConnected) return;
+      this._children.disconnect();
+      this._stop(new Error(`conecurl: this <${TAG}> was removed from the document before its book was ready`));
+    });
+  }
+
+  attributeChangedCallback(name, oldValue, value) {
+    if (oldValue === value || !this.isConnected || this._destroyed) return;
+    if (name === 'start-page') this._reopenAt = null;  // a new start page wins over the page kept
+    if (LIVE_ATTRIBUTES.includes(name) && this._book && !this._waiter) {
+      try {
+        this._book.setOptions({ [ATTRIBUTES[name][0]]: value === null ? true : parseBoolean(value, name) });
+      } catch (error) {
+        this._report(error);  // the book keeps its previous setting and keeps working
+      }
+      return;
+    }
+    this._schedule();
+  }
+
+  _schedule() {
+    if (!this.isConnected || this._destroyed) return;
+    this._waiter ??= deferred();
+    if (this._scheduled) return;
+    this._scheduled = true;
+    const build = () => { this._scheduled = false; this._build(); };
+    // One build for a batch of changes; while the parser is still adding our child <img> elements, after it.
+    if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', build, { once: true });
+    else queueMicrotask(build);
+  }
+
+  async _build() {
+    if (!this.isConnected || this._destroyed || !this._waiter) return;
+    const generation = ++this._generation;
+    this._removeBook();
+    this._error = null;
+    this._failure.hidden = true;
+    this._container.hidden = false;
+    let options;
+    try {
+      options = this._options();
+    } catch (error) {
+      this._fail(error);
+      return;
+    }
+    const host = this;
+    // Flipbook fires ready and the first progress events inside create(): hear them from the start.
+    class HostedFlipbook extends Flipbook {
+      dispatchEvent(event) {
+        const result = super.dispatchEvent(event);
+        if (generation === host._generation) host._forward(this, event);
+        return result;
+      }
+    }
+    try {
+      const book = await HostedFlipbook.create(this._container, options);
+      if (generation !== this._generation) book.destroy();
+      else if (!this._book) this._ready(book);  // ready normally came as an event already
+    } catch (error) {
+      if (generation === this._generation) this._fail(inAttributeTerms(error, this));
+    }
+  }
+
+  _options() {
+    const options = {};
+    for (const [attribute, [option, parse]] of Object.entries(ATTRIBUTES)) {
+      const raw = this.getAttribute(attribute);
+      if (raw !== null) options[option] = parse(raw, attribute);
+    }
+    options.pages ??= this._childPages();
+    if (this._reopenAt !== null) options.startPage = Math.min(this._reopenAt, options.pages.length - 1);
+    return options;
+  }
+
+  _childPages() {
+    const images = [...this.querySelectorAll(':scope > img')];
+    if (images.length === 0) {
+      throw new TypeError(`conecurl: <${TAG}> has no pages: give it a 'pages' attribute (image URLs separated by `
+        + 'spaces) or child <img> elements');
+    }
+    return images.map((image) => ({ src: image.currentSrc || image.src, alt: image.alt }));
+  }
+
+  _touchesChildImage(record) {
+    if (record.type === 'attributes') return record.target.localName === 'img' && record.target.parentNode === this;
+    return record.target === this && [...record.addedNodes, ...record.removedNodes].some((node) => node.localName === 'img');
+  }
+
+  _forward(book, event) {
+    if (event.type === 'ready') this._ready(book);
+    this.dispatchEvent(new CustomEvent(event.type, { detail: event.detail }));
+  }
+
+  _ready(book) {
+    this._book = book;
+    const waiter = this._waiter;
+    this._waiter = null;
+    waiter?.resolve(book);
+  }
+
+  _fail(error) {
+    this._error = error;
+    this._removeBook();
+    this._container.hidden = true;
+    this._failure.querySelector('p').textContent = error.message;
+    this._failure.hidden = false;  // shows the message and, through the slot, the child images
+    const waiter = this._waiter;
+    this._waiter = null;
+    this._report(error);
+    waiter?.reject(error);
+  }
+
+  _report(error) {
+    console.error(error);
+    this.dispatchEvent(new CustomEvent('error', { detail: { error } }));
+  }
+
+  _stop(reason) {
+    this._generation++;
+    this._removeBook();
+    const waiter = this._waiter;
+    this._waiter = null;
+    waiter?.reject(reason);
+  }
+
+  _removeBook() {
+    if (this._book) {
+      this._reopenAt = this._book.page;
+      this._book.destroy();
+      this._book = null;
+    }
+    this._container.replaceChildren();
+  }
+}
+
+if (!customElements.get(TAG)) customElements.define(TAG, ConeFlipbookElement);

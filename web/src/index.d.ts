@@ -1,0 +1,4 @@
+// Types of the package's main entry ('conecurl'), re-exported from the modules they describe.
+export * from './flipbook.js';
+export * from './book-view.js';
+export * from './engine.js';
