@@ -35,8 +35,11 @@ export interface FlipbookOptions {
 export interface FlipbookEventMap {
   ready: CustomEvent<{ page: number }>;
   progress: CustomEvent<{ loaded: number; total: number }>;
-  turnstart: CustomEvent<{ direction: 'forward' | 'backward'; page: number }>;
+  /** A turn begins: from next()/prev()/flip(), a click or key, or a drag (`drag: true`). */
+  turnstart: CustomEvent<{ direction: 'forward' | 'backward'; page: number; drag?: boolean }>;
   turned: CustomEvent<{ page: number }>;
+  /** A dragged page was let go short of the spine and fell back: the book stays at `page`. */
+  turncancel: CustomEvent<{ page: number }>;
   pageerror: CustomEvent<{ index: number; error: Error }>;
 }
 
