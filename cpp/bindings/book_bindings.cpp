@@ -215,6 +215,7 @@ EMSCRIPTEN_BINDINGS(conecurl_book) {
         .function("dragHeldTurn", &dragHeld)
         .function("releaseHeldTurn", &releaseHeld)
         .function("cancelHeldTurn", optional_override([](Book& b) { b.releaseHeldTurn(false); }))
+        .function("completeHeldTurn", optional_override([](Book& b) { b.releaseHeldTurn(true); }))
         .function("hintHeldTurn", &hintHeld)
         .function("gripPixel", &gripPixelNow)
         .function("viewProjection", &viewProjection)

@@ -18,6 +18,10 @@ export interface BookViewOptions extends LoadEngineOptions, RenderOptions {
   hardPages?: number[];
 }
 
+/** The size setPageImage uploads a width x height image at (see its `cover`). */
+export function uploadSizeFor(width: number, height: number,
+  options: { cover?: { width: number; height: number }; maxTextureSize: number }): { width: number; height: number };
+
 export class BookView {
   /** Rejects with an Error if WebGL2 is unavailable, a TypeError naming a bad option. */
   static create(canvas: HTMLCanvasElement, options: BookViewOptions): Promise<BookView>;
@@ -32,8 +36,18 @@ export class BookView {
   readonly animating: boolean;
   /** Frames drawn so far: the book draws only while something moves or changes. */
   readonly framesDrawn: number;
-  setPageImage(page: number, source: CanvasImageSource | ImageData): void;
+  /**
+   * Uploads a page image, scaled down (never up, aspect kept) to fit MAX_TEXTURE_SIZE and, with
+   * `cover`, to the smallest size that still covers cover.width x cover.height pixels.
+   */
+  setPageImage(page: number, source: CanvasImageSource | ImageData, options?: { cover?: { width: number; height: number } }): void;
   releasePageImage(page: number): void;
+  /** Pixel size of the page's texture as uploaded; null without one. */
+  pageImageSize(page: number): { width: number; height: number } | null;
+  /** The resting pages' rectangle on the canvas in CSS px from its top-left (a whole spread in double). */
+  restingRect(): { x: number; y: number; width: number; height: number };
+  /** Turns asked for that wait for a leaf still in flight. */
+  readonly queuedTurns: number;
   setOptions(options: RenderOptions): void;
   /** Resolves true once every turn has landed, false if the book cannot turn that way. */
   next(): Promise<boolean>;

@@ -6,17 +6,45 @@ const BINDING_OF_DIRECTION = { ltr: 'left', rtl: 'right', vertical: 'top' };
 const MAX_FRAME_SECONDS = 0.1;  // after a stall (hidden tab), jump at most this far per frame
 let nextTargetId = 1;
 
-/** Reads any image source into RGBA pixels (rows top to bottom). */
-function toPixels(source) {
-  if (source instanceof ImageData) return source;
+// BookRenderer::cameraFor frames the resting pages with this much room around them (kFrameMargin).
+const FRAME_MARGIN = 1.3;
+
+function naturalSize(source) {
   const width = source.naturalWidth || source.videoWidth || source.width;
   const height = source.naturalHeight || source.videoHeight || source.height;
   if (!(width > 0 && height > 0)) throw new TypeError('conecurl: page image has no size (not loaded yet?)');
-  const canvas = typeof OffscreenCanvas === 'function'
-    ? new OffscreenCanvas(width, height)
-    : Object.assign(document.createElement('canvas'), { width, height });
+  return { width, height };
+}
+
+/**
+ * The size a `width` x `height` image is uploaded at: scaled down (never up), keeping its aspect, to
+ * the smallest size that still covers `cover` (when given), and to fit the GPU's MAX_TEXTURE_SIZE.
+ */
+export function uploadSizeFor(width, height, { cover, maxTextureSize }) {
+  let scale = 1;
+  if (cover && cover.width > 0 && cover.height > 0) {
+    scale = Math.min(1, Math.max(cover.width / width, cover.height / height));
+  }
+  scale = Math.min(scale, maxTextureSize / width, maxTextureSize / height);
+  const fit = (length) => Math.max(1, Math.min(maxTextureSize, Math.round(length * scale)));
+  return { width: fit(width), height: fit(height) };
+}
+
+/** Reads any image source into RGBA pixels (rows top to bottom) of the given size. */
+function toPixels(source, { width, height }) {
+  if (source instanceof ImageData && source.width === width && source.height === height) return source;
+  const makeCanvas = (w, h) => (typeof OffscreenCanvas === 'function'
+    ? new OffscreenCanvas(w, h)
+    : Object.assign(document.createElement('canvas'), { width: w, height: h }));
+  let drawable = source;
+  if (source instanceof ImageData) {  // drawImage cannot scale ImageData: stage it on a canvas
+    drawable = makeCanvas(source.width, source.height);
+    drawable.getContext('2d').putImageData(source, 0, 0);
+  }
+  const canvas = makeCanvas(width, height);
   const context = canvas.getContext('2d', { willReadFrequently: true });
-  context.drawImage(source, 0, 0);
+  context.imageSmoothingQuality = 'high';  // a big reduction stays legible, not aliased
+  context.drawImage(drawable, 0, 0, width, height);
   return context.getImageData(0, 0, width, height);
 }
 
@@ -59,7 +87,8 @@ export class BookView {
     this.renderer.setOptions({
       lighting: options.lighting ?? true, shadows: options.shadows ?? true, gutter: options.gutter ?? true,
     });
-    this._sources = new Map();   // page -> image source, to upload again after a context loss
+    this._sources = new Map();   // page -> { source, cover }, to upload again after a context loss
+    this._uploaded = new Map();  // page -> { width, height } of its texture
     this._frame = 0;
     this._lastTime = 0;
     this._clockRunning = false;  // false while an exact pose is shown
@@ -81,18 +110,55 @@ export class BookView {
   get animating() { return this.book.animating(); }
   /** Frames drawn so far (the book draws only while something moves). */
   get framesDrawn() { return this.renderer.framesDrawn(); }
+  /** Turns asked for that wait for a leaf still in flight. */
+  get queuedTurns() { return this._pending.length; }
 
-  setPageImage(page, source) {
-    const image = toPixels(source);
+  /**
+   * Uploads a page's image. It is scaled down (never up) to fit MAX_TEXTURE_SIZE and, given
+   * `cover: { width, height }` in pixels, to the smallest size that still covers that box.
+   */
+  setPageImage(page, source, { cover } = {}) {
+    const natural = source instanceof ImageData ? source : naturalSize(source);
+    const size = uploadSizeFor(natural.width, natural.height, { cover, maxTextureSize: this.renderer.maxTextureSize() });
+    const image = toPixels(source, size);
     this.renderer.setPageImage(page, image.width, image.height, image.data);
-    this._sources.set(page, source);
+    this._sources.set(page, { source, cover });
+    this._uploaded.set(page, size);
     this.requestRender();
   }
 
   releasePageImage(page) {
     this.renderer.releasePageImage(page);
     this._sources.delete(page);
+    this._uploaded.delete(page);
     this.requestRender();
+  }
+
+  /** Pixel size of page `page`'s texture as uploaded, or null without one. */
+  pageImageSize(page) {
+    const size = this._uploaded.get(page);
+    return size ? { ...size } : null;
+  }
+
+  /**
+   * Where the resting pages lie on the canvas, in CSS pixels from its top-left: both page places of
+   * a spread (double) or the one page (single). The same framing as the renderer's camera.
+   */
+  restingRect() {
+    const single = this.book.isSingle();
+    const along = this.book.pageHeight();
+    const across = this.book.pageWidth();
+    const vertical = this.book.binding() === 'top';
+    // Extent of the pages as the camera frames them (viewFrameFor), before the margin.
+    const spread = single ? across : 2 * across;
+    const width = vertical ? along : spread;
+    const height = vertical ? spread : along;
+    const cssWidth = this.canvas.clientWidth;
+    const cssHeight = this.canvas.clientHeight;
+    const pixelsPerUnit = Math.min(cssWidth / (width * FRAME_MARGIN), cssHeight / (height * FRAME_MARGIN));
+    const w = width * pixelsPerUnit;
+    const h = height * pixelsPerUnit;
+    return { x: (cssWidth - w) / 2, y: (cssHeight - h) / 2, width: w, height: h };
   }
 
   setOptions(options) {
@@ -158,6 +224,7 @@ export class BookView {
     this.renderer = null;
     delete this.engine.specialHTMLTargets[this._target];
     this._sources.clear();
+    this._uploaded.clear();
     for (const resolve of this._settled.splice(0)) resolve();
   }
 
@@ -217,10 +284,7 @@ export class BookView {
   _restore() {
     // Every GL object is rebuilt from CPU-side state; page images from the sources kept here.
     this.renderer.recreateGpuObjects();
-    for (const [page, source] of this._sources) {
-      const image = toPixels(source);
-      this.renderer.setPageImage(page, image.width, image.height, image.data);
-    }
+    for (const [page, { source, cover }] of this._sources) this.setPageImage(page, source, { cover });
     this.requestRender();
   }
 }

@@ -26,21 +26,29 @@ export interface FlipbookOptions {
   lighting?: boolean;
   shadows?: boolean;
   gutter?: boolean;
-  /** Pages kept loaded on each side of the open spread; default 4. */
+  /**
+   * Pages loaded on each side of the open spread; default 4. At most max(2 * loadWindow + 4, 14)
+   * page textures are kept, however many pages the book has.
+   */
   loadWindow?: number;
+  /** The book's accessible name (aria-label of its region); default 'Book'. */
+  label?: string;
   /** Where the engine's .wasm is served, if not next to its JS. */
   wasmUrl?: string;
 }
 
 export interface FlipbookEventMap {
   ready: CustomEvent<{ page: number }>;
-  progress: CustomEvent<{ loaded: number; total: number }>;
-  /** A turn begins: from next()/prev()/flip(), a click or key, or a drag (`drag: true`). */
+  /** After each page load settles: pages ready now (loaded or failed), the page count, loads still running. */
+  progress: CustomEvent<{ loaded: number; total: number; pending: number }>;
+  /** A turn begins: from next()/prev()/flip(), a click, tap, swipe or key, or a drag (`drag: true`). */
   turnstart: CustomEvent<{ direction: 'forward' | 'backward'; page: number; drag?: boolean }>;
   turned: CustomEvent<{ page: number }>;
   /** A dragged page was let go short of the spine and fell back: the book stays at `page`. */
   turncancel: CustomEvent<{ page: number }>;
   pageerror: CustomEvent<{ index: number; error: Error }>;
+  /** The container's size (CSS px) or devicePixelRatio changed and the book was laid out again. */
+  resize: CustomEvent<{ width: number; height: number; display: 'single' | 'double' }>;
 }
 
 export class Flipbook extends EventTarget {
@@ -49,11 +57,20 @@ export class Flipbook extends EventTarget {
   readonly pageCount: number;
   /** First visible page at the settled position. */
   readonly page: number;
+  /** Follows the container's aspect when the option is 'auto'. */
   readonly display: 'single' | 'double';
+  /**
+   * The element the book made in its container: focusable (tabindex 0), role "region" with
+   * aria-roledescription "book"; holds the canvas, the live region and the pages' alt text.
+   */
+  readonly element: HTMLElement;
   /** Resolve true when the turn has landed, false if the book cannot turn that way. */
   next(): Promise<boolean>;
   prev(): Promise<boolean>;
-  /** Turns leaf by leaf to page `index` (or jumps with animate: false); RangeError if out of range. */
+  /**
+   * Turns leaf by leaf to page `index` (or jumps with animate: false, or under
+   * prefers-reduced-motion); RangeError if out of range.
+   */
   flip(index: number, options?: { animate?: boolean }): Promise<void>;
   /** Switches the effects on a live book; any other option is a TypeError (it needs a new book). */
   setOptions(options: Pick<FlipbookOptions, 'lighting' | 'shadows' | 'gutter'>): void;

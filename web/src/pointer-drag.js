@@ -21,6 +21,7 @@ export class PointerDrag {
     this._drag = null;       // { id, grip, samples } while dragging
     this._hint = null;       // { grip, start, frame } while a corner is lifted by hovering
     this._swallowClick = false;
+    this.strokeWasDrag = false;  // the present (or last) stroke dragged a page: it is no tap or swipe
     this._listeners = {
       pointerdown: (e) => this._onDown(e),
       pointermove: (e) => this._onMove(e),
@@ -36,7 +37,8 @@ export class PointerDrag {
     for (const [type, listener] of Object.entries(this._listeners)) {
       this.canvas.addEventListener(type, listener, type === 'click' ? { capture: true } : undefined);
     }
-    this.canvas.style.touchAction = 'none';  // the page, not the browser, gets the touch moves
+    // touch-action stays as the book shell set it (pan-y, or pan-x when vertical): a stroke across the
+    // turning direction still scrolls the page; one along it reaches us.
   }
 
   /** Whether a pointer holds a leaf (a drag in progress). */
@@ -68,6 +70,7 @@ export class PointerDrag {
 
   _onDown(event) {
     if (!this._enabled() || !event.isPrimary || event.button !== 0 || this._drag) return;
+    this.strokeWasDrag = false;
     const p = this._pixel(event);
     const grip = this._hint ? this._hint.grip : this.view.book.gripAt(p.x, p.y, p.width, p.height);
     if (!grip) return;
@@ -100,6 +103,7 @@ export class PointerDrag {
       return;  // that leaf is still moving: the press stays a click
     }
     this._drag = { id: event.pointerId, grip, samples: [] };
+    this.strokeWasDrag = true;
     this.canvas.setPointerCapture?.(event.pointerId);
     this._hooks.onTurnStart?.(grip.backward ? 'backward' : 'forward');
     this._follow(event);
@@ -116,7 +120,11 @@ export class PointerDrag {
   }
 
   _onUp(event, cancelled) {
-    if (this._press && event.pointerId === this._press.id) this._press = null;
+    if (this._press && event.pointerId === this._press.id) {
+      this._press = null;
+      // A click on a corner lifted by hovering: the lifted leaf carries on into a full turn.
+      if (this._hint && !cancelled) this._completeHint();
+    }
     if (!this._drag || event.pointerId !== this._drag.id) return;
     const { grip, samples } = this._drag;
     this._drag = null;
@@ -159,6 +167,19 @@ export class PointerDrag {
       if (now - hint.start < HINT_MS) hint.frame = requestAnimationFrame(step);
     };
     hint.frame = requestAnimationFrame(step);
+  }
+
+  _completeHint() {
+    cancelAnimationFrame(this._hint.frame);
+    const { grip } = this._hint;
+    this._hint = null;
+    this.strokeWasDrag = true;   // this click is spent
+    this._swallowClick = true;
+    this._hooks.onTurnStart?.(grip.backward ? 'backward' : 'forward');
+    this.view.book.completeHeldTurn();
+    const landed = this.view.settle();
+    this.view.heldChanged();
+    landed.then(() => this._hooks.onTurnEnd?.(true));
   }
 
   _endHint() {

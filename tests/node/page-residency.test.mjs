@@ -1,0 +1,43 @@
+// Node tests of the page cache policy (web/src/page-residency.js): which pages a frame shows, which
+// are wanted in what order, the capacity, and which resident pages go first.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import {
+  MAX_TURNS_IN_FLIGHT, pagesInFrame, pagesToRelease, textureCapacity, wantedPages,
+} from '../../web/src/page-residency.js';
+
+const resting = (frontPage, backPage, turnedOver) => ({ frontPage, backPage, resting: true, curl: { rho: turnedOver ? Math.PI : 0 } });
+const turning = (frontPage, backPage) => ({ frontPage, backPage, resting: false, curl: { rho: 1.2 } });
+
+test('node: textureCapacity holds the load window both ways plus four, and never less than a full screen of leaves', () => {
+  assert.equal(textureCapacity(1), 2 + 2 * MAX_TURNS_IN_FLIGHT);
+  assert.equal(textureCapacity(4), 14);
+  assert.equal(textureCapacity(10), 24);
+});
+
+test('node: pagesInFrame shows a resting left page\'s back, a resting right page\'s front, both sides of a turning leaf, no blanks', () => {
+  assert.deepEqual(pagesInFrame([resting(2, 3, true), resting(6, 7, false), turning(4, 5)]), [3, 6, 4, 5]);
+  assert.deepEqual(pagesInFrame([resting(0, 1, false)]), [0]);
+  assert.deepEqual(pagesInFrame([resting(8, -1, true), turning(10, -1)]), [10]);
+});
+
+test('node: wantedPages puts pages on screen first, then neighbours outward (next before previous), within capacity', () => {
+  const wanted = wantedPages({ onScreen: [5, 6], first: 5, last: 6, loadWindow: 2, pageCount: 100, capacity: 14 });
+  assert.deepEqual(wanted, [5, 6, 7, 4, 8, 3]);
+  // The start and the end of the book clip the window.
+  assert.deepEqual(wantedPages({ onScreen: [0], first: 0, last: 0, loadWindow: 3, pageCount: 100, capacity: 14 }), [0, 1, 2, 3]);
+  assert.deepEqual(wantedPages({ onScreen: [99], first: 99, last: 99, loadWindow: 2, pageCount: 100, capacity: 14 }), [99, 98, 97]);
+  // A full capacity stops the window; pages on screen are all kept even past it.
+  const burst = [9, 10, 11, 12, 13, 14, 15, 16];
+  assert.deepEqual(wantedPages({ onScreen: burst, first: 15, last: 16, loadWindow: 4, pageCount: 100, capacity: 10 }), [...burst, 17, 18]);
+  assert.deepEqual(wantedPages({ onScreen: burst, first: 15, last: 16, loadWindow: 4, pageCount: 100, capacity: 4 }), burst);
+});
+
+test('node: pagesToRelease releases only beyond capacity, never a wanted page, the longest unwanted first', () => {
+  const lastWanted = new Map([[1, 5], [2, 1], [3, 9], [4, 3], [5, 10]]);
+  assert.deepEqual(pagesToRelease({ resident: [1, 2, 3, 4, 5], wanted: [5], lastWanted, capacity: 5 }), []);
+  assert.deepEqual(pagesToRelease({ resident: [1, 2, 3, 4, 5], wanted: [5], lastWanted, capacity: 3 }), [2, 4]);
+  assert.deepEqual(pagesToRelease({ resident: [1, 2, 3, 4, 5], wanted: [2, 4, 5], lastWanted, capacity: 3 }), [1, 3]);
+  // Nothing unwanted to release: the wanted pages stay even over capacity.
+  assert.deepEqual(pagesToRelease({ resident: [1, 2], wanted: [1, 2], lastWanted, capacity: 1 }), []);
+});

@@ -1,0 +1,63 @@
+// Which pages keep a texture: the bounded page cache of Flipbook as plain functions (no DOM, no GL),
+// so the policy is tested on its own and GPU memory does not grow with the length of the book.
+
+/** Turns the book can have in flight at once (kMaxTurnsInFlight in cpp/core/book.hpp). */
+export const MAX_TURNS_IN_FLIGHT = 6;
+
+/**
+ * Most page textures a book keeps: the pages within `loadWindow` of the open spread plus a little
+ * history, and never fewer than can be on screen at once (two resting pages and both sides of every
+ * leaf in flight). It depends on `loadWindow` only, never on the page count.
+ */
+export function textureCapacity(loadWindow) {
+  return Math.max(2 * loadWindow + 4, 2 + 2 * MAX_TURNS_IN_FLIGHT);
+}
+
+/**
+ * Pages shown by a frame of the book (Book.frame()): the resting left page's back, the resting right
+ * page's front, and both sides of each leaf in flight. -1 (no page) is left out.
+ */
+export function pagesInFrame(leafDraws) {
+  const pages = [];
+  for (const draw of leafDraws) {
+    const turnedOver = draw.resting && draw.curl.rho > Math.PI / 2;
+    if (!draw.resting || !turnedOver) pages.push(draw.frontPage);
+    if (!draw.resting || turnedOver) pages.push(draw.backPage);
+  }
+  return pages.filter((page) => page >= 0);
+}
+
+/**
+ * Pages wanted now, most wanted first: those on screen, then the open spread's neighbours outward
+ * (the next page before the previous one at each distance), up to `capacity` pages; the pages on
+ * screen are always all in. `first`/`last` are the open spread's pages at the settled position.
+ */
+export function wantedPages({ onScreen, first, last, loadWindow, pageCount, capacity }) {
+  const wanted = [...new Set(onScreen)];
+  const seen = new Set(wanted);
+  const add = (page) => {
+    if (wanted.length < capacity && page >= 0 && page < pageCount && !seen.has(page)) {
+      seen.add(page);
+      wanted.push(page);
+    }
+  };
+  for (let distance = 0; distance <= loadWindow; distance++) {
+    add(last + distance);
+    add(first - distance);
+  }
+  return wanted;
+}
+
+/**
+ * Resident pages to release so that at most `capacity` stay: never a wanted one; of the others, the
+ * longest unwanted first. `lastWanted` maps each resident page to when it was last wanted.
+ */
+export function pagesToRelease({ resident, wanted, lastWanted, capacity }) {
+  const excess = resident.length - capacity;
+  if (excess <= 0) return [];
+  const wantedSet = new Set(wanted);
+  return resident
+    .filter((page) => !wantedSet.has(page))
+    .sort((a, b) => (lastWanted.get(a) ?? -Infinity) - (lastWanted.get(b) ?? -Infinity))
+    .slice(0, excess);
+}
