@@ -142,7 +142,7 @@ test('browser: hovering the mouse near a corner lifts it, and moving away lays i
   expect(await page.evaluate(() => window.book.page)).toBe(1);
 });
 
-test('browser: a touch drag from the corner across the spine turns the page (touch pointer events)', async ({ browser }) => {
+test('browser: a touch drag from the corner across the spine turns the page, once (touch pointer events)', async ({ browser }) => {
   const context = await browser.newContext({ hasTouch: true, viewport: { width: 800, height: 600 } });
   const page = await context.newPage();
   const path = await openBookAndCornerPath(page);
@@ -151,11 +151,30 @@ test('browser: a touch drag from the corner across the spine turns the page (tou
     type, touchPoints: type === 'touchEnd' ? [] : [{ x: p.x, y: p.y, id: 1 }],
   });
   await touch('touchStart', path[0]);
+  // A finger pulls the corner towards the spine first: the canvas has touch-action pan-y, so a
+  // stroke that starts up or down scrolls the page instead of turning it.
+  for (const dx of [-8, -16, -24]) await touch('touchMove', { x: path[0].x + dx, y: path[0].y });
   for (let i = 1; i < path.length; i++) await touch('touchMove', path[i]);
   await page.waitForTimeout(150);
   await touch('touchMove', path[path.length - 1]);
   await touch('touchEnd', path[path.length - 1]);
   await page.waitForFunction(() => window.events.some((e) => e.type === 'turned'));
+  await page.waitForTimeout(300);
   expect(await page.evaluate(() => window.book.page)).toBe(3);
+  // The drag was not also taken for a swipe: one turn, no more.
+  expect(await page.evaluate(() => window.events.map((e) => e.type))).toEqual(['turnstart', 'turned']);
   await context.close();
+});
+
+test('browser: a click on a corner lifted by hovering carries the lifted leaf on into one full turn', async ({ page }) => {
+  const path = await openBookAndCornerPath(page);
+  await page.mouse.move(path[0].x - 4, path[0].y - 4);
+  await page.waitForFunction(() => window.book._view.book.holding() && !window.book._view.book.moving());
+  await page.mouse.down();
+  await page.mouse.up();
+  await page.waitForFunction(() => window.events.some((e) => e.type === 'turned'));
+  await page.waitForFunction(() => !window.book._view.book.animating());
+  await page.waitForTimeout(200);
+  expect(await page.evaluate(() => window.events.map((e) => e.type))).toEqual(['turnstart', 'turned']);
+  expect(await page.evaluate(() => window.book.page)).toBe(3);
 });

@@ -94,7 +94,7 @@ test('browser: <cone-flipbook> re-dispatches ready, progress, pageerror, turnsta
   expect(result.turned).toBe(true);
   expect(result.isCustom).toBe(true);
   expect(result.types.filter((type) => type === 'progress').length).toBeGreaterThanOrEqual(4);
-  expect(result.lastProgress).toEqual({ loaded: 4, total: 4 });
+  expect(result.lastProgress).toEqual({ loaded: 4, total: 4, pending: 0 });
   const [pageerror, ...rest] = result.details;
   expect(pageerror[0]).toBe('pageerror');
   expect(pageerror[1]).toContain('/no/such/page.png');
