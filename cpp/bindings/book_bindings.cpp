@@ -10,6 +10,7 @@
 #include "book.hpp"
 #include "book_camera.hpp"
 #include "js_values.hpp"
+#include "leaf_placement.hpp"
 #include "page_drag.hpp"
 
 namespace {
@@ -163,6 +164,22 @@ val gripPixelNow(const Book& book, val grip, double width, double height) {
     return out;
 }
 
+// Where the resting pages lie on the canvas, in drawing-buffer pixels: the view frame's corners
+// projected by the camera the renderer draws with.
+val restingRect(const Book& book, double width, double height) {
+    const BookCamera camera = cameraOf(book, width, height);
+    const BookConfig& c = book.config();
+    const ViewFrame frame = viewFrameFor(c.display, c.binding, c.pageWidth, c.pageHeight);
+    const glm::dvec2 low = worldToPixel(camera, {frame.center - frame.halfExtent, 0.0});
+    const glm::dvec2 high = worldToPixel(camera, {frame.center + frame.halfExtent, 0.0});
+    val out = val::object();
+    out.set("x", std::min(low.x, high.x));
+    out.set("y", std::min(low.y, high.y));
+    out.set("width", std::abs(high.x - low.x));
+    out.set("height", std::abs(high.y - low.y));
+    return out;
+}
+
 val viewProjection(const Book& book, double width, double height) {
     const BookCamera camera = cameraOf(book, width, height);
     val out = val::global("Float64Array").new_(16);
@@ -219,6 +236,7 @@ EMSCRIPTEN_BINDINGS(conecurl_book) {
         .function("hintHeldTurn", &hintHeld)
         .function("gripPixel", &gripPixelNow)
         .function("viewProjection", &viewProjection)
+        .function("restingRect", &restingRect)
         .function("jumpTo", optional_override([](Book& b, val position) {
                       b.jumpTo(js::wholeNumber(position, "position", 0, b.lastPosition()));
                   }))

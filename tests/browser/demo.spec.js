@@ -1,5 +1,5 @@
-// Browser: the demo page served by `npm start` loads without errors, shows the book, turns pages
-// with its buttons and the keyboard, and opens frozen at an exact frame with ?t=.
+// Browser: the demo page served by `npm start` loads without errors, shows the book (a Flipbook), turns
+// pages with its buttons, the keyboard and a corner drag, and opens frozen at an exact frame with ?t=.
 import { test, expect } from '@playwright/test';
 import { openReady } from './helpers.js';
 
@@ -27,7 +27,7 @@ test('browser: demo turns with the arrow keys when the book has focus', async ({
   await openReady(page, '/web/demo/?page=9');
   await page.selectOption('#speed', '0.5');
   await expect(page.locator('#where')).toHaveText('Pages 10–11 of 40');
-  await page.focus('#book');
+  await page.focus('#book [aria-roledescription="book"]');
   // SwiftShader under a loaded CI machine draws few frames a second; each advances at most 0.1 s.
   await page.keyboard.press('ArrowRight');
   await expect(page.locator('#where')).toHaveText('Pages 12–13 of 40', { timeout: 15000 });
@@ -49,4 +49,17 @@ test('browser: demo switches display and direction without errors', async ({ pag
   }
   await expect(page.locator('#where')).toContainText('of 40');
   expect(problems).toEqual([]);
+});
+
+test('browser: demo book turns when its corner is dragged across the spine', async ({ page }) => {
+  await openReady(page, '/web/demo/?page=9');
+  await page.selectOption('#speed', '0.5');
+  const box = await page.locator('#book canvas').boundingBox();
+  const rect = await page.evaluate(() => window.conecurlDemo.view.restingRect());
+  const from = { x: box.x + rect.x + rect.width - 3, y: box.y + rect.y + rect.height - 3 };
+  await page.mouse.move(from.x, from.y);
+  await page.mouse.down();
+  for (let i = 1; i <= 12; i++) await page.mouse.move(from.x - (i / 12) * rect.width * 0.8, from.y - i * 4);
+  await page.mouse.up();
+  await expect(page.locator('#where')).toHaveText('Pages 12–13 of 40', { timeout: 15000 });
 });

@@ -1,15 +1,24 @@
-// Demo wiring: a 40-page book drawn at run time, turned with buttons, keys or exact poses from the
-// scrubber, and the schedule the engine computes (theta, Ay, rho over t) plotted beside it.
+// Demo wiring: the forty-page book in a Flipbook (the public class, as a user would use it), its
+// controls, and the schedule the engine computes (theta, Ay, rho over t) plotted beside it with a
+// scrubber that poses the next turn's exact frame.
+import { Flipbook } from '../src/flipbook.js';
 import { loadEngine } from '../src/engine.js';
-import { BookView } from '../src/book-view.js';
 import { DEMO_PAGE_COUNT, drawBookPage, isHardPage } from './book-pages.js';
 
 const $ = (id) => document.getElementById(id);
 const deg = 180 / Math.PI;
-const PAGE_WINDOW = 4;  // pages kept as textures on each side of the open spread
 
 let engine;
-let view;
+let book;
+let building = Promise.resolve();
+
+// Pages are drawn only when the book wants them: the cache keeps a handful, however long the book.
+const PAGES = Array.from({ length: DEMO_PAGE_COUNT }, (_, index) => ({
+  src: () => drawBookPage(index),
+  alt: index === 0 ? 'Front cover: The Curl of the Page' : index === DEMO_PAGE_COUNT - 1 ? 'Back cover'
+    : `Page ${index + 1}`,
+  hard: isHardPage(index),
+}));
 
 function plotSchedule(t) {
   const canvas = $('plot');
@@ -47,44 +56,40 @@ function showSchedule(t) {
   plotSchedule(t);
 }
 
-// Keeps textures only for the pages near the open spread: memory stays flat however long the book.
-function loadPagesAround() {
-  const first = view.book.firstVisiblePage();
-  for (let page = 0; page < DEMO_PAGE_COUNT; page++) {
-    const near = Math.abs(page - first) <= PAGE_WINDOW;
-    const loaded = view.renderer.hasPageImage(page);
-    if (near && !loaded) view.setPageImage(page, drawBookPage(page));
-    else if (!near && loaded) view.releasePageImage(page);
-  }
-  const last = Math.min(DEMO_PAGE_COUNT - 1, first + (view.book.isSingle() || first === 0 ? 0 : 1));
+function showWhere() {
+  const first = book.page;
+  const last = Math.min(DEMO_PAGE_COUNT - 1, first + (book.display === 'single' || first === 0 ? 0 : 1));
   $('where').textContent = first === last ? `Page ${first + 1} of ${DEMO_PAGE_COUNT}`
     : `Pages ${first + 1}–${last + 1} of ${DEMO_PAGE_COUNT}`;
 }
 
-async function buildBook(page) {
-  view?.destroy();
-  view = await BookView.create($('book'), {
-    engine,
-    pageCount: DEMO_PAGE_COUNT,
-    display: $('display').value,
-    direction: $('direction').value,
-    hardPages: Array.from({ length: DEMO_PAGE_COUNT }, (_, i) => i).filter(isHardPage),
-    turnSeconds: Number($('speed').value),
-    lighting: $('lighting').checked,
-    shadows: $('shadows').checked,
-    gutter: $('gutter').checked,
+// Display, direction and speed are fixed for a book's life: changing one makes a new book at the page.
+function buildBook(startPage) {
+  building = building.then(async () => {
+    book?.destroy();
+    book = await Flipbook.create($('book'), {
+      pages: PAGES,
+      startPage,
+      display: $('display').value,
+      direction: $('direction').value,
+      duration: Number($('speed').value) * 1000,
+      lighting: $('lighting').checked,
+      shadows: $('shadows').checked,
+      gutter: $('gutter').checked,
+      label: 'The Curl of the Page, a demo book',
+    });
+    book.addEventListener('turnstart', () => { document.body.dataset.state = 'turning'; });
+    for (const type of ['turned', 'turncancel']) {
+      book.addEventListener(type, () => {
+        showWhere();
+        if (!book._view.animating) document.body.dataset.state = 'open';
+      });
+    }
+    book.addEventListener('resize', showWhere);
+    book.addEventListener('pageerror', (e) => { $('status').textContent = `page ${e.detail.index + 1}: ${e.detail.error.message}`; });
+    showWhere();
   });
-  view.jumpTo(view.book.positionOfPage(page));
-  loadPagesAround();
-}
-
-async function turn(direction) {
-  const turning = direction === 'forward' ? view.next() : view.prev();
-  loadPagesAround();
-  document.body.dataset.state = 'turning';
-  await turning;
-  loadPagesAround();  // a turn that had to wait for a moving leaf starts only now
-  if (!view.animating) document.body.dataset.state = 'open';
+  return building;
 }
 
 async function main() {
@@ -93,32 +98,24 @@ async function main() {
   const requested = Math.floor(Number(params.get('page') ?? 0)) || 0;
   await buildBook(Math.min(DEMO_PAGE_COUNT - 1, Math.max(0, requested)));
   const fixed = params.get('t');
-  if (fixed !== null) view.showTurn('forward', Number(fixed));
+  if (fixed !== null) book.previewTurn('forward', Math.min(1, Math.max(0, Number(fixed) || 0)));
   showSchedule(fixed === null ? 0 : Number(fixed));
 
-  $('next').addEventListener('click', () => turn('forward'));
-  $('prev').addEventListener('click', () => turn('backward'));
-  $('book').addEventListener('keydown', (event) => {
-    const forwardKeys = view.book.binding() === 'right' ? ['ArrowLeft'] : ['ArrowRight', 'ArrowDown'];
-    const backwardKeys = view.book.binding() === 'right' ? ['ArrowRight'] : ['ArrowLeft', 'ArrowUp'];
-    if (forwardKeys.includes(event.key) || event.key === 'PageDown') turn('forward');
-    else if (backwardKeys.includes(event.key) || event.key === 'PageUp') turn('backward');
-    else return;
-    event.preventDefault();
-  });
+  $('next').addEventListener('click', () => book.next());
+  $('prev').addEventListener('click', () => book.prev());
   $('scrub').addEventListener('input', () => {
     const t = Number($('scrub').value);
-    view.showTurn('forward', t);
+    book.previewTurn('forward', t);
     showSchedule(t);
   });
   for (const id of ['display', 'direction', 'speed']) {
-    $(id).addEventListener('change', () => buildBook(view.book.firstVisiblePage()));
+    $(id).addEventListener('change', () => buildBook(book.page));
   }
   for (const id of ['lighting', 'shadows', 'gutter']) {
-    $(id).addEventListener('change', () => view.setOptions({ [id]: $(id).checked }));
+    $(id).addEventListener('change', () => book.setOptions({ [id]: $(id).checked }));
   }
-  // For the console and scripts/measure-turn.mjs.
-  window.conecurlDemo = { engine, get view() { return view; } };
+  // For the console and scripts/measure-turn.mjs (which times the engine's own BookView).
+  window.conecurlDemo = { engine, get book() { return book; }, get view() { return book._view; } };
   document.body.dataset.ready = 'true';
 }
 

@@ -6,9 +6,6 @@ const BINDING_OF_DIRECTION = { ltr: 'left', rtl: 'right', vertical: 'top' };
 const MAX_FRAME_SECONDS = 0.1;  // after a stall (hidden tab), jump at most this far per frame
 let nextTargetId = 1;
 
-// BookRenderer::cameraFor frames the resting pages with this much room around them (kFrameMargin).
-const FRAME_MARGIN = 1.3;
-
 function naturalSize(source) {
   const width = source.naturalWidth || source.videoWidth || source.width;
   const height = source.naturalHeight || source.videoHeight || source.height;
@@ -145,20 +142,10 @@ export class BookView {
    * a spread (double) or the one page (single). The same framing as the renderer's camera.
    */
   restingRect() {
-    const single = this.book.isSingle();
-    const along = this.book.pageHeight();
-    const across = this.book.pageWidth();
-    const vertical = this.book.binding() === 'top';
-    // Extent of the pages as the camera frames them (viewFrameFor), before the margin.
-    const spread = single ? across : 2 * across;
-    const width = vertical ? along : spread;
-    const height = vertical ? spread : along;
-    const cssWidth = this.canvas.clientWidth;
-    const cssHeight = this.canvas.clientHeight;
-    const pixelsPerUnit = Math.min(cssWidth / (width * FRAME_MARGIN), cssHeight / (height * FRAME_MARGIN));
-    const w = width * pixelsPerUnit;
-    const h = height * pixelsPerUnit;
-    return { x: (cssWidth - w) / 2, y: (cssHeight - h) / 2, width: w, height: h };
+    const { width, height } = this.fitCanvas();
+    const r = this.book.restingRect(width, height);  // drawing-buffer pixels, from the engine's camera
+    const toCss = this.canvas.clientWidth / width;
+    return { x: r.x * toCss, y: r.y * toCss, width: r.width * toCss, height: r.height * toCss };
   }
 
   setOptions(options) {

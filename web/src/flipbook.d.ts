@@ -1,6 +1,8 @@
 // Types of Flipbook, the public entry point. Kept beside flipbook.js.
 
-export type PageSource = string | HTMLImageElement | HTMLCanvasElement | ImageBitmap | Blob;
+export type PageImage = string | HTMLImageElement | HTMLCanvasElement | ImageBitmap | Blob;
+/** A page source: an image, or a function that makes one when the page is first wanted (lazily). */
+export type PageSource = PageImage | ((index: number) => PageImage | Promise<PageImage>);
 
 export interface PageEntry {
   src: PageSource;
@@ -67,6 +69,11 @@ export class Flipbook extends EventTarget {
   /** Resolve true when the turn has landed, false if the book cannot turn that way. */
   next(): Promise<boolean>;
   prev(): Promise<boolean>;
+  /**
+   * Shows, frozen, the exact frame of the next ('forward') or previous ('backward') turn at progress t
+   * in [0, 1] (scrubbers, figures); false at the end of the book. TypeError/RangeError for bad input.
+   */
+  previewTurn(direction: 'forward' | 'backward', t: number): boolean;
   /**
    * Turns leaf by leaf to page `index` (or jumps with animate: false, or under
    * prefers-reduced-motion); RangeError if out of range.

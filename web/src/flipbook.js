@@ -43,13 +43,13 @@ function validate(options) {
   }
   options.pages.forEach((page, index) => {
     const src = page && typeof page === 'object' && 'src' in page ? page.src : page;
-    const ok = typeof src === 'string' || src instanceof Blob
+    const ok = typeof src === 'string' || typeof src === 'function' || src instanceof Blob
       || (typeof HTMLImageElement !== 'undefined' && src instanceof HTMLImageElement)
       || (typeof HTMLCanvasElement !== 'undefined' && src instanceof HTMLCanvasElement)
       || (typeof ImageBitmap !== 'undefined' && src instanceof ImageBitmap);
     if (!ok) {
       throw new TypeError(`conecurl: option 'pages[${index}]' must be a URL, HTMLImageElement, HTMLCanvasElement, `
-        + 'ImageBitmap, Blob or { src, alt, hard }');
+        + 'ImageBitmap, Blob, a function returning one of these (or a Promise of one), or { src, alt, hard }');
     }
   });
   if (options.startPage !== undefined && options.startPage >= options.pages.length) {
@@ -121,6 +121,22 @@ export class Flipbook extends EventTarget {
 
   next() { return this._turn('forward'); }
   prev() { return this._turn('backward'); }
+
+  /**
+   * Shows, frozen, the exact frame of the next ('forward') or previous ('backward') turn at progress
+   * t in [0, 1]: for scrubbers and figures. Returns false at the end of the book; the next turn,
+   * flip or drag carries on from the open spread as usual.
+   */
+  previewTurn(direction, t) {
+    this._alive();
+    if (direction !== 'forward' && direction !== 'backward') {
+      throw new TypeError(`conecurl: previewTurn direction must be 'forward' or 'backward', got ${String(direction)}`);
+    }
+    if (!(Number.isFinite(t) && t >= 0 && t <= 1)) throw new RangeError(`conecurl: previewTurn t must be in [0, 1], got ${String(t)}`);
+    const shown = this._view.showTurn(direction, t);
+    this._updateResidency();  // the pages the posed leaf shows
+    return shown;
+  }
 
   /** Shows page `index`; animated turns (default) go leaf by leaf, else it jumps. */
   async flip(index, { animate = true } = {}) {
@@ -402,7 +418,9 @@ export class Flipbook extends EventTarget {
     this._state[index] = 'loading';
     this._loadsInFlight++;
     try {
-      const image = await decode(this._pages[index].src);
+      const { src } = this._pages[index];
+      // A function makes its page only when the page is wanted (drawn or fetched on demand).
+      const image = await decode(typeof src === 'function' ? await src(index) : src);
       if (this._destroyed || this._state[index] !== 'loading') return;
       if (!this._wanted.has(index) && this._images.size >= this._capacity) {
         this._state[index] = 'idle';  // no longer wanted and no room: not worth a texture
