@@ -13,8 +13,16 @@ export interface PageEntry {
 }
 
 export interface FlipbookOptions {
-  /** The pages, first to last; at least one. A URL is loaded with CORS. */
-  pages: Array<PageSource | PageEntry>;
+  /** The pages, first to last; at least one. A URL is loaded with CORS. Give this or `pdf`. */
+  pages?: Array<PageSource | PageEntry>;
+  /**
+   * A PDF (URL or bytes) instead of `pages`: shown through pdf.js (the optional dependency pdfjs-dist,
+   * imported only then), each page rendered when wanted at the size the canvas needs, its text as its
+   * alt text, the page shape from the PDF's first page. The bytes are copied; yours stay usable.
+   */
+  pdf?: string | ArrayBuffer | Uint8Array;
+  /** URL of pdf.js's worker module, where `import.meta.resolve('pdfjs-dist/build/pdf.worker.min.mjs')` cannot find it. */
+  pdfWorkerSrc?: string;
   /** 'auto' (default) shows two pages when the container is wider than 1.2x its height. */
   display?: 'single' | 'double' | 'auto';
   /** 'ltr' (default), 'rtl' (spine on the right), 'vertical' (spine at the top, a calendar). */

@@ -33,6 +33,28 @@ const REFIT_DELAY_MS = 150;      // re-upload textures for a new size once a res
 const REFIT_RATIO = 1.25;        // ... and only those this far off the size now wanted
 const SWIPE_DOMINANCE = 1.5;     // a swipe travels this much further along the turn than across it
 
+// `pdf` (a URL, ArrayBuffer or Uint8Array) instead of `pages`: pdf.js is imported only then.
+async function openPdfOption(options) {
+  if (options === null || typeof options !== 'object' || !('pdf' in options)) return null;
+  const { pdf, pdfWorkerSrc } = options;
+  if (!(typeof pdf === 'string' || pdf instanceof ArrayBuffer || pdf instanceof Uint8Array)) {
+    throw new TypeError(`conecurl: option 'pdf' must be a URL string, an ArrayBuffer or a Uint8Array, got ${String(pdf)}`);
+  }
+  if ('pages' in options) throw new TypeError("conecurl: option 'pages' cannot be given with 'pdf' (the PDF's pages are the book)");
+  if (pdfWorkerSrc !== undefined && typeof pdfWorkerSrc !== 'string') {
+    throw new TypeError(`conecurl: option 'pdfWorkerSrc' must be a URL string, got ${String(pdfWorkerSrc)}`);
+  }
+  const { openPdf } = await import('./pdf-pages.js');
+  return openPdf(pdf, { workerSrc: pdfWorkerSrc });
+}
+
+function withoutPdfOptions(options) {
+  const rest = { ...options };
+  delete rest.pdf;
+  delete rest.pdfWorkerSrc;
+  return rest;
+}
+
 function validate(options) {
   if (options === null || typeof options !== 'object') throw new TypeError('conecurl: options must be an object');
   for (const [key, value] of Object.entries(options)) {
@@ -80,9 +102,18 @@ export class Flipbook extends EventTarget {
   /** @param {HTMLElement} container @param {object} options  See flipbook.d.ts. */
   static async create(container, options) {
     if (!(container instanceof HTMLElement)) throw new TypeError('conecurl: container must be an HTMLElement');
-    const settings = validate(options);
+    const pdf = await openPdfOption(options);
+    let settings;
+    try {
+      settings = validate(pdf ? { ...withoutPdfOptions(options), pages: pdf.pages } : options);
+    } catch (error) {
+      pdf?.destroy();
+      throw error;
+    }
+    if (pdf) settings.pageAspect = pdf.aspect;  // page shape from the PDF's first page
     const engine = await loadEngine(settings.wasmUrl ? { wasmUrl: settings.wasmUrl } : {});
     const book = new this(container, settings, engine);  // `this`: subclasses get their own instances
+    book._pdf = pdf;
     try {
       await book._build();
     } catch (error) {
@@ -175,6 +206,8 @@ export class Flipbook extends EventTarget {
     this._destroyed = true;
     this._pointer?.destroy();
     this._pointer = null;
+    this._pdf?.destroy();
+    this._pdf = null;
     this._stopInput?.();
     this._resizeObserver?.disconnect();
     this._stopWatchingPixelRatio?.();
@@ -204,6 +237,8 @@ export class Flipbook extends EventTarget {
       && (i === 0 || i === this.pageCount - 1)) ? i : -1)).filter((i) => i >= 0);
     return new BookView(this._engine, this._canvas, {
       pageCount: this.pageCount,
+      // A PDF's pages keep their shape; image books use the engine's default page (0.8 : 1).
+      ...(this._settings.pageAspect ? { pageWidth: this._settings.pageAspect, pageHeight: 1 } : {}),
       display,
       direction: this._settings.direction,
       hardPages,
@@ -419,8 +454,9 @@ export class Flipbook extends EventTarget {
     this._loadsInFlight++;
     try {
       const { src } = this._pages[index];
-      // A function makes its page only when the page is wanted (drawn or fetched on demand).
-      const image = await decode(typeof src === 'function' ? await src(index) : src);
+      // A function makes its page only when the page is wanted (drawn, fetched or rendered on
+      // demand), told the size in device pixels the page is drawn at.
+      const image = await decode(typeof src === 'function' ? await src(index, this._textureCover()) : src);
       if (this._destroyed || this._state[index] !== 'loading') return;
       if (!this._wanted.has(index) && this._images.size >= this._capacity) {
         this._state[index] = 'idle';  // no longer wanted and no room: not worth a texture
@@ -429,6 +465,8 @@ export class Flipbook extends EventTarget {
       this._upload(index, image);
       this._state[index] = 'loaded';
       this._releaseExcess();
+      // A source may have learned its page's text while making it (a PDF page): say it if open.
+      if (this._pages[index].alt && this._openPages().includes(index)) this._showOpenPages();
     } catch (error) {
       if (this._destroyed) return;
       // The page keeps the plain paper placeholder; the book keeps working.

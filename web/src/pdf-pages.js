@@ -1,0 +1,79 @@
+// PDF books: opens a PDF with pdf.js (the optional dependency pdfjs-dist, imported only when a PDF is
+// given) and turns each page into a page source the Flipbook calls when it wants that page, rendered
+// at the size the canvas needs; the page's text becomes its accessible text.
+
+/** Where pdf.js's worker module is, when the caller did not say: next to pdf.js, as the page resolves it. */
+function defaultWorkerSrc() {
+  try {
+    return import.meta.resolve('pdfjs-dist/build/pdf.worker.min.mjs');
+  } catch {
+    return null;
+  }
+}
+
+async function importPdfjs() {
+  try {
+    return await import('pdfjs-dist');
+  } catch (error) {
+    throw new Error('conecurl: the \'pdf\' option needs the optional dependency pdfjs-dist (npm install pdfjs-dist); '
+      + `it could not be loaded: ${error && error.message ? error.message : error}`);
+  }
+}
+
+/**
+ * @param {string|ArrayBuffer|Uint8Array} source  a URL, or the file's bytes
+ * @param {{ workerSrc?: string }} [options]
+ * @returns {Promise<{ pages: Array<{ src: Function, alt: string }>, aspect: number, destroy: () => void }>}
+ */
+export async function openPdf(source, { workerSrc } = {}) {
+  const pdfjs = await importPdfjs();
+  if (!pdfjs.GlobalWorkerOptions.workerSrc) {
+    const src = workerSrc || defaultWorkerSrc();
+    if (!src) {
+      throw new Error("conecurl: cannot find pdf.js's worker (pdfjs-dist/build/pdf.worker.min.mjs): "
+        + "give its URL as the 'pdfWorkerSrc' option");
+    }
+    pdfjs.GlobalWorkerOptions.workerSrc = src;
+  }
+  const task = pdfjs.getDocument(typeof source === 'string'
+    ? { url: source }
+    // pdf.js takes ownership of the bytes it is given: hand it a copy, the caller keeps theirs.
+    : { data: source instanceof ArrayBuffer ? new Uint8Array(source.slice(0)) : source.slice() });
+  let doc;
+  try {
+    doc = await task.promise;
+  } catch (error) {
+    throw new Error(`conecurl: could not open the PDF (${error && error.message ? error.message : error})`);
+  }
+  const first = (await doc.getPage(1)).getViewport({ scale: 1 });
+  const pages = Array.from({ length: doc.numPages }, (_, i) => {
+    const entry = { alt: '', src: (index, size) => renderPage(doc, i + 1, size, entry) };
+    return entry;
+  });
+  return { pages, aspect: first.width / first.height, destroy: () => task.destroy() };
+}
+
+/**
+ * Renders page `number` into a canvas that covers `size` (device pixels the book wants for a page),
+ * and fills the entry's alt text from the page's text once.
+ */
+async function renderPage(doc, number, size, entry) {
+  const page = await doc.getPage(number);
+  try {
+    const base = page.getViewport({ scale: 1 });
+    const want = size && size.width > 0 && size.height > 0 ? size : { width: base.width * 2, height: base.height * 2 };
+    const viewport = page.getViewport({ scale: Math.max(want.width / base.width, want.height / base.height) });
+    const canvas = document.createElement('canvas');
+    canvas.width = Math.max(1, Math.ceil(viewport.width));
+    canvas.height = Math.max(1, Math.ceil(viewport.height));
+    await page.render({ canvas, viewport, background: '#ffffff' }).promise;
+    if (!entry.alt) {
+      const text = await page.getTextContent();
+      const words = text.items.map((item) => item.str || '').join(' ').replace(/\s+/g, ' ').trim();
+      entry.alt = words ? `Page ${number}: ${words}` : `Page ${number}`;
+    }
+    return canvas;
+  } finally {
+    page.cleanup();
+  }
+}
