@@ -2,6 +2,7 @@
 // 300-page PDF opens, shows and turns to the right pages (colour blocks read from pixels), its text
 // becomes the pages' accessible text, its page shape is kept, and resident textures stay bounded.
 import { test, expect } from '@playwright/test';
+import { mkdirSync, writeFileSync } from 'node:fs';
 import { PDFDocument, StandardFonts, rgb } from 'pdf-lib';
 import { openReady } from './helpers.js';
 
@@ -115,4 +116,28 @@ test('browser: pdf options are checked: a wrong pdf type, pdf with pages, a brok
   expect(errors[0]).toMatch(/^TypeError: conecurl: option 'pdf'/);
   expect(errors[1]).toMatch(/^TypeError: conecurl: option 'pages' cannot be given with 'pdf'/);
   expect(errors[2]).toMatch(/^Error: conecurl: could not open the PDF/);
+});
+
+test('browser: <cone-flipbook pdf="..."> shows a PDF served by URL', async ({ page }) => {
+  mkdirSync('test-results', { recursive: true });
+  const file = `test-results/pdf-element-${process.pid}.pdf`;
+  writeFileSync(file, Buffer.from(pdfBase64, 'base64'));
+  await openReady(page, '/tests/browser/fixtures/pdf-fixture.html');
+  const result = await page.evaluate(async (url) => {
+    const element = document.createElement('cone-flipbook');
+    element.setAttribute('pdf', url);
+    element.setAttribute('display', 'double');
+    element.setAttribute('start-page', '3');
+    element.style.cssText = 'display:block;width:640px;height:400px';
+    const ready = new Promise((resolve) => element.addEventListener('ready', resolve, { once: true }));
+    window.container.replaceWith(element);
+    await ready;
+    window.book = element.book;
+    await element.book._whenIdle();
+    return { pageCount: element.pageCount, page: element.page };
+  }, `/${file}`);
+  expect(result).toEqual({ pageCount: PAGE_COUNT, page: 3 });
+  const colors = await spreadColors(page);
+  expect(near(colors.left, pageColor(3)), `left ${colors.left}`).toBe(true);
+  expect(near(colors.right, pageColor(4)), `right ${colors.right}`).toBe(true);
 });

@@ -34,6 +34,8 @@ const ATTRIBUTES = {
   gutter: ['gutter', parseBoolean],
   'load-window': ['loadWindow', parseNumber],
   'wasm-url': ['wasmUrl', parseText],
+  pdf: ['pdf', parseText],
+  'pdf-worker-src': ['pdfWorkerSrc', parseText],
 };
 const ATTRIBUTE_OF_OPTION = Object.fromEntries(Object.entries(ATTRIBUTES).map(([name, [option]]) => [option, name]));
 const LIVE_ATTRIBUTES = ['lighting', 'shadows', 'gutter'];  // applied to the running book, no rebuild
@@ -211,8 +213,10 @@ export class ConeFlipbookElement extends HTMLElement {
       const raw = this.getAttribute(attribute);
       if (raw !== null) options[option] = parse(raw, attribute);
     }
-    options.pages ??= this._childPages();
-    if (this._reopenAt !== null) options.startPage = Math.min(this._reopenAt, options.pages.length - 1);
+    if (options.pdf === undefined) options.pages ??= this._childPages();  // a PDF brings its own pages
+    if (this._reopenAt !== null) {
+      options.startPage = options.pages ? Math.min(this._reopenAt, options.pages.length - 1) : this._reopenAt;
+    }
     return options;
   }
 
