@@ -1,6 +1,7 @@
 // Embind exposure of the math core: the schedule and the deformation, for JS and for the Node tests
 // that hold the wasm build to the same reference values as the native tests. Thin: no logic here.
 #include <emscripten/bind.h>
+#include <malloc.h>
 
 #include "cone_deform.hpp"
 #include "curl_schedule.hpp"
@@ -90,4 +91,7 @@ EMSCRIPTEN_BINDINGS(conecurl_core) {
     function("coneBeta", &beta);
     function("leafPointToWorld", &leafToWorld);
     function("leafNormalToWorld", &leafNormal);
+    // Bytes of the wasm heap malloc has handed out and not had back: tests hold it flat over many
+    // books made and destroyed (the heap's own size, memory.buffer.byteLength, never shrinks).
+    function("heapBytesInUse", optional_override([]() { return static_cast<double>(mallinfo().uordblks); }));
 }

@@ -15,6 +15,14 @@ namespace conecurl::js {
     emscripten::val::global(type).new_(emscripten::val("conecurl: " + message)).throw_();
 }
 
+// An Error with a `code` property, for failures JS must tell apart from others without parsing the
+// message (e.g. 'webgl2-unavailable', where the component falls back to static pages).
+[[noreturn]] inline void throwErrorWithCode(const char* code, const std::string& message) {
+    emscripten::val error = emscripten::val::global("Error").new_(emscripten::val("conecurl: " + message));
+    error.set("code", emscripten::val(code));
+    error.throw_();
+}
+
 // Decimal digits of a whole number, without std::to_string (whose snprintf would bring printf's
 // float formatting into the wasm).
 inline std::string digits(long long n) {

@@ -18,7 +18,13 @@ std::unique_ptr<BookRenderer> createRenderer(const std::string& canvasTarget) {
     auto renderer = std::make_unique<BookRenderer>(canvasTarget);
     if (!renderer->ok()) {
         const std::string message = renderer->error();
+        const bool noContext = !renderer->hasContext();
         renderer.reset();  // release the context before the JS exception skips C++ destructors
+        if (noContext) {
+            js::throwErrorWithCode("webgl2-unavailable",
+                                   "WebGL2 is not available (not supported by this browser or GPU, switched off, "
+                                   "or too many WebGL contexts are live)");
+        }
         js::throwError("Error", message);
     }
     return renderer;
@@ -40,11 +46,16 @@ void setOptions(BookRenderer& r, val options) {
 }
 
 // `pixels` is any array-like of width * height * 4 bytes (Uint8Array, Uint8ClampedArray).
-void setPageImage(BookRenderer& r, val pageValue, int width, int height, val pixels) {
+void setPageImage(BookRenderer& r, val pageValue, val widthValue, val heightValue, val pixels) {
     const int page = js::wholeNumber(pageValue, "page", 0, 1e6);
+    const int width = js::wholeNumber(widthValue, "image width", 1, 65536);
+    const int height = js::wholeNumber(heightValue, "image height", 1, 65536);
     const double expected = static_cast<double>(width) * height * 4.0;
-    if (width <= 0 || height <= 0 || pixels["length"].as<double>() != expected) {
-        js::throwError("TypeError", "page image must be width * height * 4 RGBA bytes");
+    const bool arrayLike = pixels.typeOf().as<std::string>() == "object" && !pixels.isNull() && pixels["length"].isNumber();
+    if (!arrayLike || pixels["length"].as<double>() != expected) {
+        js::throwError("TypeError", "page image pixels must be an array of width * height * 4 RGBA bytes (" +
+                                        js::digits(static_cast<long long>(expected)) + " for " + js::digits(width) +
+                                        "x" + js::digits(height) + ")");
     }
     std::string problem;
     {
@@ -88,7 +99,10 @@ EMSCRIPTEN_BINDINGS(conecurl_renderer) {
         .function("framesDrawn", &BookRenderer::framesDrawn)
         .function("readPixels", &readPixels)
         .function("captureLeaf", optional_override([](BookRenderer& r, const Book& book, val index) {
-                      return copyToFloat32Array(r.captureLeaf(book, js::wholeNumber(index, "leaf draw index", 0, kMaxLeafDraws - 1)));
+                      // An index past the frame's leaves is refused, not answered with an empty array.
+                      const int leaves = book.frame().count;
+                      if (leaves == 0) js::throwError("RangeError", "leaf draw index: the book's frame has no leaves");
+                      return copyToFloat32Array(r.captureLeaf(book, js::wholeNumber(index, "leaf draw index", 0, leaves - 1)));
                   }))
         .function("gridPoints", optional_override([](BookRenderer& r) { return copyToFloat32Array(r.grid().points); }))
         .function("gridColumns", optional_override([](BookRenderer& r) { return r.grid().columns; }))

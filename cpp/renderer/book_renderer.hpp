@@ -42,6 +42,8 @@ public:
     BookRenderer& operator=(const BookRenderer&) = delete;
 
     bool ok() const { return error_.empty(); }
+    // False when no WebGL2 context could be made at all (as opposed to a shader that failed to build).
+    bool hasContext() const { return context_ != 0; }
     const std::string& error() const { return error_; }
 
     void setOptions(const RenderOptions& options) { options_ = options; }
