@@ -1,6 +1,8 @@
 // A small static server for the demo and the browser tests: serves the repository read-only on
 // loopback with the MIME types wasm and ES modules need. Usage: node scripts/serve.mjs [--port N]
 // The consumer tests import serveDirectory() to serve a built app or an unpacked package the same way.
+// No CORS headers, so a page on 127.0.0.1 reading from localhost meets a real cross-origin refusal;
+// a request with the query `cors=1` gets Access-Control-Allow-Origin: * (tests' positive control).
 import http from 'node:http';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -40,6 +42,7 @@ export function serveDirectory(root, { port = 0, home = null } = {}) {
       res.writeHead(200, {
         'Content-Type': types[path.extname(file)] || 'application/octet-stream',
         'Cache-Control': 'no-cache',
+        ...(url.searchParams.get('cors') === '1' ? { 'Access-Control-Allow-Origin': '*' } : {}),
       });
       res.end(data);
     });

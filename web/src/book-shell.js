@@ -16,6 +16,22 @@ const KEYS_OF_DIRECTION = {
   vertical: 'ArrowDown ArrowUp PageDown PageUp Home End',
 };
 
+const TURN_KEYS = {
+  ltr: { ArrowRight: 'forward', ArrowLeft: 'backward' },
+  rtl: { ArrowLeft: 'forward', ArrowRight: 'backward' },
+  vertical: { ArrowDown: 'forward', ArrowUp: 'backward' },
+};
+const COMMON_KEYS = { PageDown: 'forward', PageUp: 'backward', Home: 'first', End: 'last' };
+
+/**
+ * What a keydown on the book asks for: 'forward', 'backward', 'first', 'last', or null (not a key of
+ * the book, or one with Ctrl, Alt or Meta, which stays the browser's).
+ */
+export function actionForKey(event, direction) {
+  if (event.defaultPrevented || event.altKey || event.ctrlKey || event.metaKey) return null;
+  return TURN_KEYS[direction][event.key] || COMMON_KEYS[event.key] || null;
+}
+
 let sharedSheet = null;
 
 // A :focus-visible rule cannot be an inline style. A constructed sheet adopted by the container's

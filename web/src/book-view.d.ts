@@ -48,6 +48,8 @@ export class BookView {
   restingRect(): { x: number; y: number; width: number; height: number };
   /** Turns asked for that wait for a leaf still in flight. */
   readonly queuedTurns: number;
+  /** The WebGL context is lost and not yet restored: turns in flight and a held leaf are paused. */
+  readonly contextLost: boolean;
   setOptions(options: RenderOptions): void;
   /** Resolves true once every turn has landed, false if the book cannot turn that way. */
   next(): Promise<boolean>;
@@ -59,6 +61,10 @@ export class BookView {
   drawNow(): void;
   readPixels(): { width: number; height: number; data: Uint8ClampedArray };
   requestRender(): void;
-  /** Cancels animation, removes listeners, releases the GL context and the wasm objects. */
-  destroy(): void;
+  /**
+   * Cancels animation, removes listeners, deletes every GL object and the wasm objects. With
+   * `releaseContext: true` the canvas's WebGL context is released too (WEBGL_lose_context) rather than
+   * when the canvas is garbage-collected; leave it false to make another BookView on the same canvas.
+   */
+  destroy(options?: { releaseContext?: boolean }): void;
 }

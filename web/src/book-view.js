@@ -92,7 +92,8 @@ export class BookView {
     this._poseFrom = null;
     this._settled = [];
     this._pending = [];          // turns asked for while the leaf they need was still in flight
-    this._onLost = (event) => { event.preventDefault(); cancelAnimationFrame(this._frame); this._frame = 0; };
+    this._lost = false;          // the GL context is lost: the clock and drawing wait for its restore
+    this._onLost = (event) => this._loseContext(event);
     this._onRestored = () => this._restore();
     canvas.addEventListener('webglcontextlost', this._onLost);
     canvas.addEventListener('webglcontextrestored', this._onRestored);
@@ -109,6 +110,8 @@ export class BookView {
   get framesDrawn() { return this.renderer.framesDrawn(); }
   /** Turns asked for that wait for a leaf still in flight. */
   get queuedTurns() { return this._pending.length; }
+  /** The WebGL context is lost and not yet restored: turns in flight are paused. */
+  get contextLost() { return this._lost; }
 
   /**
    * Uploads a page's image. It is scaled down (never up) to fit MAX_TEXTURE_SIZE and, given
@@ -196,18 +199,26 @@ export class BookView {
   readPixels() { return this.renderer.readPixels(); }
 
   requestRender() {
-    if (!this._frame && this.renderer) this._frame = requestAnimationFrame((now) => this._tick(now));
+    if (!this._frame && this.renderer && !this._lost) this._frame = requestAnimationFrame((now) => this._tick(now));
   }
 
-  destroy() {
+  /**
+   * Cancels animation, removes listeners, deletes every GL object and the wasm objects. With
+   * `releaseContext` the canvas's WebGL context is given up too (WEBGL_lose_context), instead of
+   * whenever the canvas is garbage-collected; leave it false to make a new BookView on the same canvas.
+   */
+  destroy({ releaseContext = false } = {}) {
     if (!this.renderer) return;
     cancelAnimationFrame(this._frame);
     this._frame = 0;
     this._resizeObserver?.disconnect();
     this.canvas.removeEventListener('webglcontextlost', this._onLost);
     this.canvas.removeEventListener('webglcontextrestored', this._onRestored);
+    // The canvas has its WebGL2 context already: getContext hands back that one, it makes no new one.
+    const gl = releaseContext ? this.canvas.getContext('webgl2') : null;
     this.renderer.delete();
     this.book.delete();
+    gl?.getExtension('WEBGL_lose_context')?.loseContext();
     this.renderer = null;
     delete this.engine.specialHTMLTargets[this._target];
     this._sources.clear();
@@ -229,7 +240,7 @@ export class BookView {
 
   _tick(now) {
     this._frame = 0;
-    if (!this.renderer) return;
+    if (!this.renderer || this._lost) return;
     if (this._clockRunning && this.book.moving()) {
       const seconds = this._lastTime ? Math.min(MAX_FRAME_SECONDS, (now - this._lastTime) / 1000) : 0;
       this.book.advance(seconds);
@@ -268,7 +279,18 @@ export class BookView {
     return { width, height };
   }
 
+  // A lost context stops the clock where it is: turns in flight (and a held leaf) pause, and go on
+  // from the same pose once it is restored. preventDefault() tells the browser we want it back.
+  _loseContext(event) {
+    event.preventDefault();
+    this._lost = true;
+    cancelAnimationFrame(this._frame);
+    this._frame = 0;
+    this._lastTime = 0;  // the first frame after the restore advances nothing
+  }
+
   _restore() {
+    this._lost = false;
     // Every GL object is rebuilt from CPU-side state; page images from the sources kept here.
     this.renderer.recreateGpuObjects();
     for (const [page, { source, cover }] of this._sources) this.setPageImage(page, source, { cover });

@@ -1,10 +1,15 @@
 // Types of <cone-flipbook> (element.js): the element class, its events, and its tag in
 // HTMLElementTagNameMap so document.querySelector('cone-flipbook') is typed.
-import type { Flipbook, FlipbookEventMap } from './flipbook.js';
+import type { Flipbook, FlipbookCreateError, FlipbookEventMap } from './flipbook.js';
+import type { StaticBook } from './static-book.js';
 
-export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' | keyof FlipbookEventMap>, FlipbookEventMap {
-  /** The book could not be built (a bad attribute: a TypeError naming it; no WebGL2) or a live change was refused. */
-  error: CustomEvent<{ error: Error }>;
+export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' | keyof FlipbookEventMap>,
+  Omit<FlipbookEventMap, 'error'> {
+  /**
+   * The book could not be built (a bad attribute: a TypeError naming it) or a live change was
+   * refused; or there is no WebGL2 or engine (`code` says which), and a StaticBook shows the pages.
+   */
+  error: CustomEvent<{ error: Error | FlipbookCreateError }>;
 }
 
 /**
@@ -14,16 +19,22 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
  */
 export class ConeFlipbookElement extends HTMLElement {
   static readonly observedAttributes: string[];
-  /** The Flipbook inside once it is ready; null before, after a failure and after destroy(). */
-  readonly book: Flipbook | null;
+  /**
+   * The Flipbook inside once it is ready (a StaticBook without WebGL2 or the engine); null before,
+   * after a failure and after destroy().
+   */
+  readonly book: Flipbook | StaticBook | null;
   /** First visible page; before `ready`, the page the book will open at. */
   readonly page: number;
   /** 0 until `ready`. */
   readonly pageCount: number;
   /** Pages shown side by side; null until `ready`. */
   readonly display: 'single' | 'double' | null;
-  /** Waits for the book being built; rejects with its error, or at once if not in the document or destroyed. */
-  whenReady(): Promise<Flipbook>;
+  /**
+   * Waits for the book being built (the StaticBook fallback without WebGL2 or the engine); rejects
+   * with its error, or at once if not in the document or destroyed.
+   */
+  whenReady(): Promise<Flipbook | StaticBook>;
   /** Wait for the book like whenReady(), then turn. */
   next(): Promise<boolean>;
   prev(): Promise<boolean>;

@@ -203,7 +203,9 @@ export class ConeFlipbookElement extends HTMLElement {
       if (generation !== this._generation) book.destroy();
       else if (!this._book) this._ready(book);  // ready normally came as an event already
     } catch (error) {
-      if (generation === this._generation) this._fail(inAttributeTerms(error, this));
+      if (generation !== this._generation) error.fallback?.destroy();
+      else if (error.fallback) this._adoptFallback(error.fallback, error);
+      else this._fail(inAttributeTerms(error, this));
     }
   }
 
@@ -235,6 +237,7 @@ export class ConeFlipbookElement extends HTMLElement {
   }
 
   _forward(book, event) {
+    if (event.type === 'error' && !this._book) return;  // a failed build: _fail or _adoptFallback reports it
     if (event.type === 'ready') this._ready(book);
     this.dispatchEvent(new CustomEvent(event.type, { detail: event.detail }));
   }
@@ -244,6 +247,19 @@ export class ConeFlipbookElement extends HTMLElement {
     const waiter = this._waiter;
     this._waiter = null;
     waiter?.resolve(book);
+  }
+
+  // No WebGL2 (or no engine): the book shows its pages as still images (a StaticBook), with next/prev,
+  // keys and clicks. The failure is still reported; then the fallback is the element's book.
+  _adoptFallback(fallback, error) {
+    this._report(error);
+    for (const type of ['progress', 'pageerror', 'turnstart', 'turned', 'resize']) {
+      fallback.addEventListener(type, (event) => {
+        if (this._book === fallback) this.dispatchEvent(new CustomEvent(type, { detail: event.detail }));
+      });
+    }
+    this._ready(fallback);
+    this.dispatchEvent(new CustomEvent('ready', { detail: { page: fallback.page } }));
   }
 
   _fail(error) {

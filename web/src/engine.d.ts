@@ -93,7 +93,11 @@ export interface RenderOptions {
 /** The WebGL2 renderer of a book. Call delete() to release its context. */
 export interface BookRenderer {
   setOptions(options: RenderOptions): void;
-  /** pixels: width * height * 4 RGBA bytes, rows top to bottom. Throws if too large for the GPU. */
+  /**
+   * pixels: width * height * 4 RGBA bytes, rows top to bottom. RangeError for a page, width or height
+   * that is not a whole number in range, TypeError for pixels of the wrong kind or length, Error if
+   * too large for the GPU.
+   */
   setPageImage(page: number, width: number, height: number, pixels: ArrayLike<number>): void;
   releasePageImage(page: number): void;
   hasPageImage(page: number): boolean;
@@ -102,7 +106,10 @@ export interface BookRenderer {
   framesDrawn(): number;
   /** Pixels of the frame just drawn (same task), rows top to bottom. */
   readPixels(): { width: number; height: number; data: Uint8ClampedArray };
-  /** Per grid vertex of frame leaf `index`: world x y z, then the shader's normal nx ny nz. */
+  /**
+   * Per grid vertex of frame leaf `index`: world x y z, then the shader's normal nx ny nz. RangeError
+   * unless `index` is a leaf of book.frame().
+   */
   captureLeaf(book: Book, index: number): Float32Array;
   /** Flat page coordinates (x, y) of the grid vertices. */
   gridPoints(): Float32Array;
@@ -132,9 +139,14 @@ export interface ConeCurlEngine {
   leafNormalToWorld(draw: LeafDraw, binding: 'left' | 'right' | 'top', pageHeight: number, x: number, y: number): Vec3;
   Book: { create(options: BookOptions): Book };
   BookRenderer: {
-    /** Throws an Error ("conecurl: ...") if WebGL2 is unavailable on the target. */
+    /**
+     * Throws an Error ("conecurl: ...") if the renderer cannot be made: with `code`
+     * 'webgl2-unavailable' when the canvas gives no WebGL2 context at all.
+     */
     create(canvasTarget: string): BookRenderer;
   };
+  /** Bytes of the wasm heap allocated and not freed (malloc's in-use count): for leak tests. */
+  heapBytesInUse(): number;
   /** Emscripten's map from target names to elements; BookView registers canvases here. */
   specialHTMLTargets: Record<string, EventTarget>;
 }

@@ -17,7 +17,10 @@ export function loadEngine(options = {}) {
   else if (options.wasmUrl) moduleArgs.locateFile = (file) => (file.endsWith('.wasm') ? options.wasmUrl : file);
   const loading = createConeCurlEngine(moduleArgs).catch((error) => {
     if (!custom) shared = null;  // let a later call try again
-    throw new Error(`conecurl: the wasm engine failed to load (${error && error.message ? error.message : error})`);
+    const failure = new Error(`conecurl: the wasm engine failed to load (${error && error.message ? error.message : error})`,
+      { cause: error });
+    failure.code = 'engine-unavailable';  // Flipbook falls back to static pages on this code
+    throw failure;
   });
   if (!custom) shared = loading;
   return loading;

@@ -1,8 +1,12 @@
 // Types of Flipbook, the public entry point. Kept beside flipbook.js.
+import type { StaticBook } from './static-book.js';
 
 export type PageImage = string | HTMLImageElement | HTMLCanvasElement | ImageBitmap | Blob;
-/** A page source: an image, or a function that makes one when the page is first wanted (lazily). */
-export type PageSource = PageImage | ((index: number) => PageImage | Promise<PageImage>);
+/**
+ * A page source: an image, or a function that makes one when the page is first wanted (lazily). The
+ * function is told the page's index and the size in device pixels it is drawn at.
+ */
+export type PageSource = PageImage | ((index: number, size: { width: number; height: number }) => PageImage | Promise<PageImage>);
 
 export interface PageEntry {
   src: PageSource;
@@ -45,6 +49,27 @@ export interface FlipbookOptions {
   label?: string;
   /** Where the engine's .wasm is served, if not next to its JS. */
   wasmUrl?: string;
+  /**
+   * Without WebGL2 (or when the engine cannot load), show the pages as still images: create() still
+   * rejects, and the error's `fallback` is a working StaticBook in the container. Default true.
+   */
+  fallback?: boolean;
+}
+
+/** Why a page could not be shown (`pageerror`'s `reason`). */
+export type PageErrorReason = 'http' | 'network' | 'cors' | 'decode' | 'source' | 'upload';
+
+/**
+ * What Flipbook.create rejects with when the book cannot be drawn with WebGL2. A bad option is a
+ * plain TypeError instead.
+ */
+export interface FlipbookCreateError extends Error {
+  /** 'webgl2-unavailable': no WebGL2 context; 'engine-unavailable': the wasm engine failed to load. */
+  code?: 'webgl2-unavailable' | 'engine-unavailable';
+  /** The static book now in the container (not with `fallback: false`, or if it failed too). */
+  fallback?: StaticBook;
+  /** Why the fallback could not be built either, if it could not. */
+  fallbackError?: Error;
 }
 
 export interface FlipbookEventMap {
@@ -56,16 +81,28 @@ export interface FlipbookEventMap {
   turned: CustomEvent<{ page: number }>;
   /** A dragged page was let go short of the spine and fell back: the book stays at `page`. */
   turncancel: CustomEvent<{ page: number }>;
-  pageerror: CustomEvent<{ index: number; error: Error }>;
+  /**
+   * A page could not be shown; it stays plain paper and the book keeps working. `error` is a
+   * PageLoadError (message names the page, its URL and the cause) except for 'upload'.
+   */
+  pageerror: CustomEvent<{ index: number; error: Error; reason: PageErrorReason }>;
   /** The container's size (CSS px) or devicePixelRatio changed and the book was laid out again. */
   resize: CustomEvent<{ width: number; height: number; display: 'single' | 'double' }>;
+  /**
+   * The book cannot be drawn (no WebGL2, no engine): dispatched by the instance being built, just
+   * before create() rejects with the same error. Subclasses (such as <cone-flipbook>) hear it.
+   */
+  error: CustomEvent<{ error: FlipbookCreateError }>;
 }
 
 export class Flipbook extends EventTarget {
-  /** Rejects with a TypeError naming a bad option, or an Error if WebGL2 is unavailable. */
+  /**
+   * Rejects with a TypeError naming a bad option (nothing is left in the container), or with a
+   * FlipbookCreateError when WebGL2 or the engine is unavailable (its `fallback` shows the pages).
+   */
   static create(container: HTMLElement, options: FlipbookOptions): Promise<Flipbook>;
   readonly pageCount: number;
-  /** First visible page at the settled position. */
+  /** First visible page at the settled position; after destroy(), where the book was. */
   readonly page: number;
   /** Follows the container's aspect when the option is 'auto'. */
   readonly display: 'single' | 'double';
@@ -74,7 +111,11 @@ export class Flipbook extends EventTarget {
    * aria-roledescription "book"; holds the canvas, the live region and the pages' alt text.
    */
   readonly element: HTMLElement;
-  /** Resolve true when the turn has landed, false if the book cannot turn that way. */
+  /**
+   * Resolve true when the turn has landed, false if the book cannot turn that way (or was destroyed
+   * before it landed). Called during a turn they start another leaf or wait their turn. After
+   * destroy() they reject with an Error.
+   */
   next(): Promise<boolean>;
   prev(): Promise<boolean>;
   /**
@@ -84,12 +125,16 @@ export class Flipbook extends EventTarget {
   previewTurn(direction: 'forward' | 'backward', t: number): boolean;
   /**
    * Turns leaf by leaf to page `index` (or jumps with animate: false, or under
-   * prefers-reduced-motion); RangeError if out of range.
+   * prefers-reduced-motion); RangeError if out of range, TypeError for bad options.
    */
   flip(index: number, options?: { animate?: boolean }): Promise<void>;
   /** Switches the effects on a live book; any other option is a TypeError (it needs a new book). */
   setOptions(options: Pick<FlipbookOptions, 'lighting' | 'shadows' | 'gutter'>): void;
-  /** Releases the canvas, the GL context, the wasm objects and the loaded pages; idempotent. */
+  /**
+   * Stops everything at once, mid-turn or mid-drag too: no animation frame, listener, observer, GL
+   * object or wasm object is left, the WebGL context is released, page loads are aborted. Turns in
+   * flight resolve false; later calls reject (or throw) an Error. Idempotent.
+   */
   destroy(): void;
   addEventListener<K extends keyof FlipbookEventMap>(type: K, listener: (event: FlipbookEventMap[K]) => void,
     options?: boolean | AddEventListenerOptions): void;

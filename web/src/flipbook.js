@@ -4,29 +4,16 @@
 // and turns the engine's state into events. Drawing and animation stay in BookView over the wasm.
 import { loadEngine } from './engine.js';
 import { BookView, uploadSizeFor } from './book-view.js';
-import { createShell } from './book-shell.js';
+import { actionForKey, createShell } from './book-shell.js';
+import { checkFlipOptions, checkLiveOptions, describeValue, pageEntries, validateOptions } from './options.js';
+import { loadPage } from './page-loader.js';
 import { PointerDrag } from './pointer-drag.js';
+import { StaticBook } from './static-book.js';
 import { listenForTapsAndSwipes } from './tap-swipe.js';
 import { pagesInFrame, pagesToRelease, textureCapacity, wantedPages } from './page-residency.js';
 
-const OPTION_CHECKS = {
-  pages: (v) => (Array.isArray(v) && v.length > 0) || 'a non-empty array of page sources',
-  display: (v) => ['single', 'double', 'auto'].includes(v) || "'single', 'double' or 'auto'",
-  direction: (v) => ['ltr', 'rtl', 'vertical'].includes(v) || "'ltr', 'rtl' or 'vertical'",
-  startPage: (v) => (Number.isInteger(v) && v >= 0) || 'a page index (a whole number from 0)',
-  duration: (v) => (Number.isFinite(v) && v > 0) || 'a positive number of milliseconds',
-  hardCovers: (v) => typeof v === 'boolean' || 'true or false',
-  lighting: (v) => typeof v === 'boolean' || 'true or false',
-  shadows: (v) => typeof v === 'boolean' || 'true or false',
-  gutter: (v) => typeof v === 'boolean' || 'true or false',
-  loadWindow: (v) => (Number.isInteger(v) && v >= 1) || 'a whole number of pages from 1',
-  wasmUrl: (v) => typeof v === 'string' || 'a URL string',
-  label: (v) => (typeof v === 'string' && v.trim() !== '') || 'a non-empty string',
-};
-const DEFAULTS = {
-  display: 'auto', direction: 'ltr', startPage: 0, duration: 1000, hardCovers: false,
-  lighting: true, shadows: true, gutter: true, loadWindow: 4, label: 'Book',
-};
+// Failures after which a book can still be shown, as still pages: Flipbook.create falls back on these.
+const FALLBACK_CODES = ['webgl2-unavailable', 'engine-unavailable'];
 const AUTO_DOUBLE_ASPECT = 1.2;  // containers wider than this show two pages in 'auto'
 const TEXTURE_OVERSAMPLE = 1.5;  // textures up to this many texels per device pixel of the page on screen
 const REFIT_DELAY_MS = 150;      // re-upload textures for a new size once a resize has come to rest
@@ -38,11 +25,11 @@ async function openPdfOption(options) {
   if (options === null || typeof options !== 'object' || !('pdf' in options)) return null;
   const { pdf, pdfWorkerSrc } = options;
   if (!(typeof pdf === 'string' || pdf instanceof ArrayBuffer || pdf instanceof Uint8Array)) {
-    throw new TypeError(`conecurl: option 'pdf' must be a URL string, an ArrayBuffer or a Uint8Array, got ${String(pdf)}`);
+    throw new TypeError(`conecurl: option 'pdf' must be a URL string, an ArrayBuffer or a Uint8Array, got ${describeValue(pdf)}`);
   }
   if ('pages' in options) throw new TypeError("conecurl: option 'pages' cannot be given with 'pdf' (the PDF's pages are the book)");
   if (pdfWorkerSrc !== undefined && typeof pdfWorkerSrc !== 'string') {
-    throw new TypeError(`conecurl: option 'pdfWorkerSrc' must be a URL string, got ${String(pdfWorkerSrc)}`);
+    throw new TypeError(`conecurl: option 'pdfWorkerSrc' must be a URL string, got ${describeValue(pdfWorkerSrc)}`);
   }
   const { openPdf } = await import('./pdf-pages.js');
   return openPdf(pdf, { workerSrc: pdfWorkerSrc });
@@ -55,49 +42,6 @@ function withoutPdfOptions(options) {
   return rest;
 }
 
-function validate(options) {
-  if (options === null || typeof options !== 'object') throw new TypeError('conecurl: options must be an object');
-  for (const [key, value] of Object.entries(options)) {
-    const check = OPTION_CHECKS[key];
-    if (!check) throw new TypeError(`conecurl: unknown option '${key}' (allowed: ${Object.keys(OPTION_CHECKS).join(', ')})`);
-    const verdict = check(value);
-    if (verdict !== true) throw new TypeError(`conecurl: option '${key}' must be ${verdict}, got ${String(value)}`);
-  }
-  options.pages.forEach((page, index) => {
-    const src = page && typeof page === 'object' && 'src' in page ? page.src : page;
-    const ok = typeof src === 'string' || typeof src === 'function' || src instanceof Blob
-      || (typeof HTMLImageElement !== 'undefined' && src instanceof HTMLImageElement)
-      || (typeof HTMLCanvasElement !== 'undefined' && src instanceof HTMLCanvasElement)
-      || (typeof ImageBitmap !== 'undefined' && src instanceof ImageBitmap);
-    if (!ok) {
-      throw new TypeError(`conecurl: option 'pages[${index}]' must be a URL, HTMLImageElement, HTMLCanvasElement, `
-        + 'ImageBitmap, Blob, a function returning one of these (or a Promise of one), or { src, alt, hard }');
-    }
-  });
-  if (options.startPage !== undefined && options.startPage >= options.pages.length) {
-    throw new TypeError(`conecurl: option 'startPage' must be below the page count ${options.pages.length}`);
-  }
-  return { ...DEFAULTS, ...options };
-}
-
-/** Loads one page source into something BookView can draw. */
-async function decode(source) {
-  if (typeof source === 'string') {
-    const image = new Image();
-    image.crossOrigin = 'anonymous';  // a page without CORS fails to load instead of tainting the canvas
-    image.src = source;
-    try {
-      await image.decode();
-    } catch {
-      throw new Error(`could not load or decode '${source}' (missing, not an image, or cross-origin without CORS)`);
-    }
-    return image;
-  }
-  if (source instanceof Blob) return createImageBitmap(source);
-  if (typeof HTMLImageElement !== 'undefined' && source instanceof HTMLImageElement && !source.complete) await source.decode();
-  return source;
-}
-
 export class Flipbook extends EventTarget {
   /** @param {HTMLElement} container @param {object} options  See flipbook.d.ts. */
   static async create(container, options) {
@@ -105,22 +49,41 @@ export class Flipbook extends EventTarget {
     const pdf = await openPdfOption(options);
     let settings;
     try {
-      settings = validate(pdf ? { ...withoutPdfOptions(options), pages: pdf.pages } : options);
+      settings = validateOptions(pdf ? { ...withoutPdfOptions(options), pages: pdf.pages } : options);
     } catch (error) {
       pdf?.destroy();
       throw error;
     }
     if (pdf) settings.pageAspect = pdf.aspect;  // page shape from the PDF's first page
-    const engine = await loadEngine(settings.wasmUrl ? { wasmUrl: settings.wasmUrl } : {});
-    const book = new this(container, settings, engine);  // `this`: subclasses get their own instances
+    const book = new this(container, settings, null);  // `this`: subclasses get their own instances
     book._pdf = pdf;
     try {
+      book._engine = await loadEngine(settings.wasmUrl ? { wasmUrl: settings.wasmUrl } : {});
       await book._build();
     } catch (error) {
-      book.destroy();
-      throw error;
+      throw await book._fail(error);
     }
     return book;
+  }
+
+  // create() failed. Without WebGL2 or the engine the pages can still be shown: unless the option
+  // `fallback` is false, a StaticBook takes the book's place in the container (error.fallback).
+  // Then `error` is dispatched (subclasses such as <cone-flipbook> hear it) and create rejects.
+  async _fail(error) {
+    const canFallBack = this._settings.fallback && FALLBACK_CODES.includes(error && error.code);
+    const pdf = canFallBack ? this._pdf : null;
+    if (canFallBack) this._pdf = null;  // the fallback shows the same PDF
+    this.destroy();
+    if (canFallBack) {
+      try {
+        error.fallback = await StaticBook._fromSettings(this._container, this._settings, pdf);
+      } catch (fallbackError) {
+        pdf?.destroy();
+        error.fallbackError = fallbackError;
+      }
+    }
+    this.dispatchEvent(new CustomEvent('error', { detail: { error } }));
+    return error;
   }
 
   constructor(container, settings, engine) {
@@ -128,7 +91,7 @@ export class Flipbook extends EventTarget {
     this._container = container;
     this._settings = settings;
     this._engine = engine;
-    this._pages = settings.pages.map((p) => (p && typeof p === 'object' && 'src' in p ? p : { src: p }));
+    this._pages = pageEntries(settings.pages);
     this._state = this._pages.map(() => 'idle');  // idle | loading | loaded | failed
     this._images = new Map();       // page -> decoded image, while its texture is resident
     this._lastWanted = new Map();   // page -> tick when it was last wanted (least recently wanted goes first)
@@ -137,6 +100,8 @@ export class Flipbook extends EventTarget {
     this._capacity = textureCapacity(settings.loadWindow);
     this._loadsInFlight = 0;
     this._idleWaiters = [];
+    this._owned = new Set();        // images made here (ImageBitmaps from URLs and Blobs): closed when let go
+    this._abort = new AbortController();  // page fetches still running when the book is destroyed stop
     this._destroyed = false;
     this._shell = createShell(container, { label: settings.label, direction: settings.direction });
     this._canvas = this._shell.canvas;
@@ -145,8 +110,8 @@ export class Flipbook extends EventTarget {
 
   get pageCount() { return this._pages.length; }
   /** The first visible page at the settled position. */
-  get page() { return this._view ? this._view.book.firstVisiblePage() : 0; }
-  get display() { return this._view.book.isSingle() ? 'single' : 'double'; }
+  get page() { return this._view ? this._view.book.firstVisiblePage() : this._finalPage ?? 0; }
+  get display() { return this._view ? (this._view.book.isSingle() ? 'single' : 'double') : this._finalDisplay ?? null; }
   /** The focusable element the book made in its container (holds the canvas). */
   get element() { return this._shell.root; }
 
@@ -170,8 +135,9 @@ export class Flipbook extends EventTarget {
   }
 
   /** Shows page `index`; animated turns (default) go leaf by leaf, else it jumps. */
-  async flip(index, { animate = true } = {}) {
+  async flip(index, options) {
     this._alive();
+    const { animate } = checkFlipOptions(options);
     if (!Number.isInteger(index) || index < 0 || index >= this.pageCount) {
       throw new RangeError(`conecurl: page ${index} is not in 0..${this.pageCount - 1}`);
     }
@@ -192,18 +158,19 @@ export class Flipbook extends EventTarget {
   /** Switches lighting, shadows and gutter shading on a live book; other options need a new book. */
   setOptions(options) {
     this._alive();
-    if (options === null || typeof options !== 'object') throw new TypeError('conecurl: options must be an object');
-    const checked = validate({ ...options, pages: this._settings.pages });  // a TypeError names a bad value
-    const fixed = Object.keys(options).find((key) => !['lighting', 'shadows', 'gutter'].includes(key));
-    if (fixed) throw new TypeError(`conecurl: option '${fixed}' cannot change on a live book (only lighting, shadows, gutter)`);
-    for (const key of Object.keys(options)) this._settings[key] = checked[key];
+    Object.assign(this._settings, checkLiveOptions(options, this._settings.pages));
     const { lighting, shadows, gutter } = this._settings;
     this._view.setOptions({ lighting, shadows, gutter });
   }
 
   destroy() {
     if (this._destroyed) return;
+    if (this._view) {
+      this._finalPage = this.page;  // page and display still answer after destroy()
+      this._finalDisplay = this.display;
+    }
     this._destroyed = true;
+    this._abort.abort();
     this._pointer?.destroy();
     this._pointer = null;
     this._pdf?.destroy();
@@ -213,8 +180,10 @@ export class Flipbook extends EventTarget {
     this._stopWatchingPixelRatio?.();
     clearTimeout(this._refitTimer);
     cancelAnimationFrame(this._followFrame);
-    this._view?.destroy();
+    this._view?.destroy({ releaseContext: true });  // the canvas goes: give its WebGL context up now
     this._view = null;
+    for (const image of this._owned) image.close?.();
+    this._owned.clear();
     this._images.clear();
     this._shell.remove();
     for (const resolve of this._idleWaiters.splice(0)) resolve();
@@ -331,13 +300,8 @@ export class Flipbook extends EventTarget {
   }
 
   _onKeyDown(event) {
-    if (this._destroyed || event.defaultPrevented || event.altKey || event.ctrlKey || event.metaKey) return;
-    const keys = {
-      ltr: { ArrowRight: 'forward', ArrowLeft: 'backward' },
-      rtl: { ArrowLeft: 'forward', ArrowRight: 'backward' },
-      vertical: { ArrowDown: 'forward', ArrowUp: 'backward' },
-    }[this._settings.direction];
-    const action = keys[event.key] || { PageDown: 'forward', PageUp: 'backward', Home: 'first', End: 'last' }[event.key];
+    if (this._destroyed) return;
+    const action = actionForKey(event, this._settings.direction);
     if (!action) return;
     event.preventDefault();
     if (action === 'first' || action === 'last') {
@@ -443,6 +407,7 @@ export class Flipbook extends EventTarget {
     const release = pagesToRelease({ resident, wanted: this._wanted, lastWanted: this._lastWanted, capacity: this._capacity });
     for (const page of release) {
       this._view.releasePageImage(page);
+      this._closeIfOwned(this._images.get(page));
       this._images.delete(page);
       this._lastWanted.delete(page);
       this._state[page] = 'idle';
@@ -453,13 +418,16 @@ export class Flipbook extends EventTarget {
     this._state[index] = 'loading';
     this._loadsInFlight++;
     try {
-      const { src } = this._pages[index];
       // A function makes its page only when the page is wanted (drawn, fetched or rendered on
       // demand), told the size in device pixels the page is drawn at.
-      const image = await decode(typeof src === 'function' ? await src(index, this._textureCover()) : src);
-      if (this._destroyed || this._state[index] !== 'loading') return;
-      if (!this._wanted.has(index) && this._images.size >= this._capacity) {
-        this._state[index] = 'idle';  // no longer wanted and no room: not worth a texture
+      const { image, owned } = await loadPage(this._pages[index].src,
+        { index, size: this._textureCover(), signal: this._abort.signal });
+      if (owned) this._owned.add(image);
+      if (this._destroyed || this._state[index] !== 'loading'
+          || (!this._wanted.has(index) && this._images.size >= this._capacity)) {
+        // Destroyed, or no longer wanted and no room: not worth a texture.
+        this._closeIfOwned(image);
+        if (!this._destroyed && this._state[index] === 'loading') this._state[index] = 'idle';
         return;
       }
       this._upload(index, image);
@@ -469,9 +437,12 @@ export class Flipbook extends EventTarget {
       if (this._pages[index].alt && this._openPages().includes(index)) this._showOpenPages();
     } catch (error) {
       if (this._destroyed) return;
-      // The page keeps the plain paper placeholder; the book keeps working.
+      // The page keeps the plain paper placeholder; the book keeps working. `reason` says why:
+      // 'http', 'network', 'cors' or 'decode' (PageLoadError), or 'upload' (the image would not upload).
       this._state[index] = 'failed';
-      this._emit('pageerror', { index, error: error instanceof Error ? error : new Error(String(error)) });
+      this._emit('pageerror', {
+        index, error: error instanceof Error ? error : new Error(String(error)), reason: error?.reason || 'upload',
+      });
     } finally {
       this._loadsInFlight--;
       if (!this._destroyed) {
@@ -480,6 +451,10 @@ export class Flipbook extends EventTarget {
       }
       if (this._loadsInFlight === 0) for (const resolve of this._idleWaiters.splice(0)) resolve();
     }
+  }
+
+  _closeIfOwned(image) {
+    if (image && this._owned.delete(image)) image.close?.();
   }
 
   _upload(index, image) {

@@ -41,7 +41,9 @@ export function wantedPages({ onScreen, first, last, loadWindow, pageCount, capa
       wanted.push(page);
     }
   };
-  for (let distance = 0; distance <= loadWindow; distance++) {
+  // Stops at the book's ends and at capacity: a loadWindow of a billion pages costs no more than the book.
+  for (let distance = 0; distance <= loadWindow && wanted.length < capacity; distance++) {
+    if (last + distance >= pageCount && first - distance < 0) break;
     add(last + distance);
     add(first - distance);
   }

@@ -1,6 +1,9 @@
 // A TypeScript consumer of the packed package: it must typecheck under --strict, with the types
 // found through the package's `exports` (tests/node/package.test.mjs runs tsc on it).
-import { Flipbook, BookView, loadEngine, type FlipbookOptions, type ConeCurlEngine } from 'conecurl';
+import {
+  Flipbook, StaticBook, PageLoadError, BookView, loadEngine,
+  type FlipbookOptions, type FlipbookCreateError, type ConeCurlEngine,
+} from 'conecurl';
 import { ConeFlipbookElement } from 'conecurl/element';
 import { loadEngine as loadEngineDirectly } from 'conecurl/engine';
 
@@ -20,6 +23,24 @@ export async function openBook(container: HTMLElement): Promise<number> {
   // @ts-expect-error: only the effects change on a live book
   book.setOptions({ duration: 10 });
   return turned ? book.page : book.pageCount;
+}
+
+// Without WebGL2 create() rejects; the error's fallback is a StaticBook with the same members.
+export async function openWithFallback(container: HTMLElement): Promise<number> {
+  try {
+    const book = await Flipbook.create(container, { pages: ['a.jpg', 'b.jpg'], fallback: true });
+    book.addEventListener('pageerror', (event) => {
+      if (event.detail.reason === 'http' && event.detail.error instanceof PageLoadError) console.warn(event.detail.error.status);
+    });
+    return book.page;
+  } catch (error) {
+    const fallback: StaticBook | undefined = (error as FlipbookCreateError).fallback;
+    if (!fallback) throw error;
+    await fallback.next();
+    // @ts-expect-error: 'sideways' is no reason a page fails
+    const reason: import('conecurl').PageErrorReason = 'sideways';
+    return reason ? fallback.page : (await StaticBook.create(container, { pages: ['a.jpg'] })).pageCount;
+  }
 }
 
 export async function useElement(): Promise<string | null> {

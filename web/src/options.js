@@ -1,0 +1,131 @@
+// The options of a book (Flipbook and its static fallback) checked in one place: every bad value is
+// a TypeError that names the option and says what is allowed, before anything is built.
+
+const BOOLEAN = (v) => typeof v === 'boolean' || 'true or false';
+export const MAX_PAGES = 1_000_000;  // the engine's Book refuses more (book_bindings.cpp)
+
+const OPTION_CHECKS = {
+  pages: (v) => (Array.isArray(v) && v.length > 0 && v.length <= MAX_PAGES)
+    || `a non-empty array of at most ${MAX_PAGES} page sources`,
+  display: (v) => ['single', 'double', 'auto'].includes(v) || "'single', 'double' or 'auto'",
+  direction: (v) => ['ltr', 'rtl', 'vertical'].includes(v) || "'ltr', 'rtl' or 'vertical'",
+  startPage: (v) => (Number.isInteger(v) && v >= 0) || 'a page index (a whole number from 0)',
+  duration: (v) => (Number.isFinite(v) && v > 0) || 'a positive number of milliseconds',
+  hardCovers: BOOLEAN,
+  lighting: BOOLEAN,
+  shadows: BOOLEAN,
+  gutter: BOOLEAN,
+  loadWindow: (v) => (Number.isInteger(v) && v >= 1) || 'a whole number of pages from 1',
+  wasmUrl: (v) => typeof v === 'string' || 'a URL string',
+  label: (v) => (typeof v === 'string' && v.trim() !== '') || 'a non-empty string',
+  fallback: BOOLEAN,
+};
+export const DEFAULTS = {
+  display: 'auto', direction: 'ltr', startPage: 0, duration: 1000, hardCovers: false,
+  lighting: true, shadows: true, gutter: true, loadWindow: 4, label: 'Book', fallback: true,
+};
+/** Options a live book takes through setOptions(); the others need a new book. */
+export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter'];
+const PAGE_ENTRY_KEYS = ['src', 'alt', 'hard'];
+const PAGE_SOURCES = 'a URL string, HTMLImageElement, HTMLCanvasElement, ImageBitmap, Blob, '
+  + 'a function returning one of these (or a Promise of one)';
+
+/**
+ * A value as an error message shows it: short, never the value's own toString (which may throw or
+ * be huge), strings quoted so an empty one is visible.
+ */
+export function describeValue(value) {
+  if (typeof value === 'string') return JSON.stringify(value.length > 60 ? `${value.slice(0, 57)}...` : value);
+  if (typeof value === 'number' || typeof value === 'boolean' || value === null || value === undefined) return String(value);
+  if (typeof value === 'bigint') return `${value}n`;
+  if (typeof value === 'symbol') return 'a symbol';
+  if (typeof value === 'function') return 'a function';
+  if (Array.isArray(value)) return `an array of ${value.length}`;
+  const name = Object.getPrototypeOf(value)?.constructor?.name;
+  return name && name !== 'Object' ? `a ${name}` : 'an object';
+}
+
+function isPageImage(src) {
+  return (typeof src === 'string' && src !== '') || src instanceof Blob
+    || (typeof HTMLImageElement !== 'undefined' && src instanceof HTMLImageElement)
+    || (typeof HTMLCanvasElement !== 'undefined' && src instanceof HTMLCanvasElement)
+    || (typeof ImageBitmap !== 'undefined' && src instanceof ImageBitmap);
+}
+
+function isPlainEntry(page) {
+  return page !== null && typeof page === 'object' && !Array.isArray(page) && !isPageImage(page);
+}
+
+function checkPage(page, index) {
+  const name = `pages[${index}]`;
+  if (!isPlainEntry(page)) {
+    if (isPageImage(page) || typeof page === 'function') return;
+    throw new TypeError(`conecurl: option '${name}' must be ${PAGE_SOURCES}, or { src, alt, hard }; got ${describeValue(page)}`);
+  }
+  const unknown = Object.keys(page).find((key) => !PAGE_ENTRY_KEYS.includes(key));
+  if (unknown !== undefined) {
+    throw new TypeError(`conecurl: option '${name}' has an unknown key '${unknown}' (allowed: ${PAGE_ENTRY_KEYS.join(', ')})`);
+  }
+  if (!isPageImage(page.src) && typeof page.src !== 'function') {
+    throw new TypeError(`conecurl: option '${name}.src' must be ${PAGE_SOURCES}; got ${describeValue(page.src)}`);
+  }
+  if (page.alt !== undefined && typeof page.alt !== 'string') {
+    throw new TypeError(`conecurl: option '${name}.alt' must be a string (the page's text for screen readers); got ${describeValue(page.alt)}`);
+  }
+  if (page.hard !== undefined && typeof page.hard !== 'boolean') {
+    throw new TypeError(`conecurl: option '${name}.hard' must be true or false; got ${describeValue(page.hard)}`);
+  }
+}
+
+/**
+ * Checks a book's options and returns them with the defaults filled in. Throws a TypeError naming
+ * the first bad option (or page entry) and what it allows.
+ */
+export function validateOptions(options) {
+  if (options === null || typeof options !== 'object') {
+    throw new TypeError(`conecurl: options must be an object, got ${describeValue(options)}`);
+  }
+  for (const [key, value] of Object.entries(options)) {
+    const check = OPTION_CHECKS[key];
+    if (!check) throw new TypeError(`conecurl: unknown option '${key}' (allowed: ${Object.keys(OPTION_CHECKS).join(', ')})`);
+    const verdict = check(value);
+    if (verdict !== true) throw new TypeError(`conecurl: option '${key}' must be ${verdict}, got ${describeValue(value)}`);
+  }
+  if (!('pages' in options)) throw new TypeError("conecurl: option 'pages' is missing (a non-empty array of page sources)");
+  // An index loop, not forEach: a hole in a sparse array is a missing page, not one to skip.
+  for (let index = 0; index < options.pages.length; index++) checkPage(options.pages[index], index);
+  if (options.startPage !== undefined && options.startPage >= options.pages.length) {
+    throw new TypeError(`conecurl: option 'startPage' must be below the page count ${options.pages.length}, got ${options.startPage}`);
+  }
+  return { ...DEFAULTS, ...options };
+}
+
+/** The page entries of checked options: every page as { src, alt?, hard? }. */
+export function pageEntries(pages) {
+  return pages.map((page) => (isPlainEntry(page) ? page : { src: page }));
+}
+
+/** `flip(index, options)`'s second argument: nothing, or { animate: boolean }. */
+export function checkFlipOptions(options) {
+  if (options === undefined) return { animate: true };
+  if (options === null || typeof options !== 'object') {
+    throw new TypeError(`conecurl: flip options must be an object like { animate: false }, got ${describeValue(options)}`);
+  }
+  const unknown = Object.keys(options).find((key) => key !== 'animate');
+  if (unknown !== undefined) throw new TypeError(`conecurl: unknown flip option '${unknown}' (allowed: animate)`);
+  if (options.animate !== undefined && typeof options.animate !== 'boolean') {
+    throw new TypeError(`conecurl: flip option 'animate' must be true or false, got ${describeValue(options.animate)}`);
+  }
+  return { animate: options.animate ?? true };
+}
+
+/** setOptions()'s argument on a live book: only LIVE_OPTIONS, each checked like at create. */
+export function checkLiveOptions(options, pages) {
+  if (options === null || typeof options !== 'object') {
+    throw new TypeError(`conecurl: options must be an object, got ${describeValue(options)}`);
+  }
+  const checked = validateOptions({ ...options, pages });  // a TypeError names a bad value
+  const fixed = Object.keys(options).find((key) => !LIVE_OPTIONS.includes(key));
+  if (fixed) throw new TypeError(`conecurl: option '${fixed}' cannot change on a live book (only ${LIVE_OPTIONS.join(', ')})`);
+  return Object.fromEntries(Object.keys(options).map((key) => [key, checked[key]]));
+}
