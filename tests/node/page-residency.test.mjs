@@ -41,3 +41,11 @@ test('node: pagesToRelease releases only beyond capacity, never a wanted page, t
   // Nothing unwanted to release: the wanted pages stay even over capacity.
   assert.deepEqual(pagesToRelease({ resident: [1, 2], wanted: [1, 2], lastWanted, capacity: 1 }), []);
 });
+
+test('node: wantedPages stops at the ends of the book and at capacity, so a huge loadWindow does not hang the book', { timeout: 10_000 }, () => {
+  // loadWindow 1e12 is a valid option; a loop over every distance would run for hours (the timeout
+  // catches a hang, it does not measure speed).
+  const wanted = wantedPages({ onScreen: [5], first: 5, last: 5, loadWindow: 1e12, pageCount: 12, capacity: textureCapacity(1e12) });
+  assert.deepEqual(wanted, [5, 6, 4, 7, 3, 8, 2, 9, 1, 10, 0, 11]);
+  assert.deepEqual(wantedPages({ onScreen: [500], first: 500, last: 500, loadWindow: 1e12, pageCount: 1e6, capacity: 5 }), [500, 501, 499, 502, 498]);
+});

@@ -1,0 +1,103 @@
+// Node tests of the book's option checks (web/src/options.js): every option refuses NaN, negatives,
+// wrong types and its neighbours' values with a TypeError that names it and says what is allowed;
+// page entries, sparse page arrays and unknown keys too. No DOM is needed to check options.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { checkFlipOptions, checkLiveOptions, DEFAULTS, describeValue, pageEntries, validateOptions } from '../../web/src/options.js';
+
+const pages = ['a.png', 'b.png', 'c.png'];
+
+/** Asserts options are refused with a TypeError whose message is exactly "conecurl: <expected>". */
+function refuses(options, expected) {
+  assert.throws(() => validateOptions(options), (error) => {
+    assert.ok(error instanceof TypeError, `${JSON.stringify(options)}: ${error}`);
+    assert.equal(error.message, `conecurl: ${expected}`);
+    return true;
+  });
+}
+
+test('node: every option refuses NaN, negative, wrong-type values with a TypeError naming it and what it allows', () => {
+  const allowed = {
+    display: "'single', 'double' or 'auto'",
+    direction: "'ltr', 'rtl' or 'vertical'",
+    startPage: 'a page index (a whole number from 0)',
+    duration: 'a positive number of milliseconds',
+    hardCovers: 'true or false',
+    lighting: 'true or false',
+    shadows: 'true or false',
+    gutter: 'true or false',
+    loadWindow: 'a whole number of pages from 1',
+    wasmUrl: 'a URL string',
+    label: 'a non-empty string',
+    fallback: 'true or false',
+  };
+  const bad = {
+    display: [NaN, 'triple', 2, null, ['double']],
+    direction: ['LTR', -1, undefined, {}],
+    startPage: [NaN, -1, 1.5, '1', Infinity, null],
+    duration: [NaN, -1, 0, Infinity, '300', null],
+    hardCovers: ['true', 1, NaN, null],
+    lighting: ['yes', 0, NaN],
+    shadows: ['false', -1],
+    gutter: [null, 'off'],
+    loadWindow: [NaN, -2, 0, 2.5, '4', Infinity],
+    wasmUrl: [42, null, {}, NaN],
+    label: ['', '   ', 42, null, NaN],
+    fallback: ['no', 0, NaN],
+  };
+  assert.deepEqual(Object.keys(bad).sort(), Object.keys(allowed).sort());
+  for (const [option, values] of Object.entries(bad)) {
+    for (const value of values) refuses({ pages, [option]: value }, `option '${option}' must be ${allowed[option]}, got ${describeValue(value)}`);
+  }
+  // Every option but `pages` has a default, so the table above covers them all.
+  assert.deepEqual(Object.keys(DEFAULTS).sort(), Object.keys(allowed).filter((k) => k !== 'wasmUrl').sort());
+});
+
+test('node: pages must be a non-empty array of page sources; each entry is checked by index, src, alt, hard and key', () => {
+  const sources = 'a URL string, HTMLImageElement, HTMLCanvasElement, ImageBitmap, Blob, a function returning one of these (or a Promise of one)';
+  const arrayRule = 'a non-empty array of at most 1000000 page sources';
+  refuses({ pages: [] }, `option 'pages' must be ${arrayRule}, got an array of 0`);
+  refuses({ pages: 'a.png' }, `option 'pages' must be ${arrayRule}, got "a.png"`);
+  refuses({ pages: NaN }, `option 'pages' must be ${arrayRule}, got NaN`);
+  refuses({ display: 'single' }, "option 'pages' is missing (a non-empty array of page sources)");
+  refuses({ pages: ['a.png', 42] }, `option 'pages[1]' must be ${sources}, or { src, alt, hard }; got 42`);
+  refuses({ pages: ['a.png', ''] }, `option 'pages[1]' must be ${sources}, or { src, alt, hard }; got ""`);
+  refuses({ pages: ['a.png', null] }, `option 'pages[1]' must be ${sources}, or { src, alt, hard }; got null`);
+  refuses({ pages: ['a.png', , 'c.png'] }, `option 'pages[1]' must be ${sources}, or { src, alt, hard }; got undefined`);  // eslint-disable-line no-sparse-arrays
+  refuses({ pages: [{ src: 5 }] }, `option 'pages[0].src' must be ${sources}; got 5`);
+  refuses({ pages: [{ alt: 'no source' }] }, `option 'pages[0].src' must be ${sources}; got undefined`);
+  refuses({ pages: [{ src: 'a.png', alt: 5 }] }, "option 'pages[0].alt' must be a string (the page's text for screen readers); got 5");
+  refuses({ pages: [{ src: 'a.png', hard: 'yes' }] }, "option 'pages[0].hard' must be true or false; got \"yes\"");
+  refuses({ pages: [{ src: 'a.png', title: 'x' }] }, "option 'pages[0]' has an unknown key 'title' (allowed: src, alt, hard)");
+  refuses({ pages: [['a.png']] }, `option 'pages[0]' must be ${sources}, or { src, alt, hard }; got an array of 1`);
+  // Accepted: URLs, Blobs, functions and entries with them.
+  const blob = new Blob(['x']);
+  const fn = () => 'a.png';
+  const settings = validateOptions({ pages: ['a.png', blob, fn, { src: 'b.png', alt: 'B', hard: true }] });
+  assert.deepEqual(pageEntries(settings.pages), [{ src: 'a.png' }, { src: blob }, { src: fn }, { src: 'b.png', alt: 'B', hard: true }]);
+});
+
+test('node: options that are not an object, unknown keys, and a start page past the end are refused by name', () => {
+  refuses(null, 'options must be an object, got null');
+  refuses('pages', 'options must be an object, got "pages"');
+  refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, direction, startPage, duration, hardCovers, "
+    + 'lighting, shadows, gutter, loadWindow, wasmUrl, label, fallback)');
+  refuses({ pages, startPage: 3 }, "option 'startPage' must be below the page count 3, got 3");
+  // A value whose own toString throws or is huge is described, not called.
+  const hostile = { toString() { throw new Error('gotcha'); } };
+  refuses({ pages, display: hostile }, "option 'display' must be 'single', 'double' or 'auto', got an object");
+  refuses({ pages, label: Symbol('x') }, "option 'label' must be a non-empty string, got a symbol");
+  refuses({ pages, display: 'x'.repeat(500) }, `option 'display' must be 'single', 'double' or 'auto', got "${'x'.repeat(57)}..."`);
+});
+
+test('node: setOptions takes only lighting, shadows and gutter, checked; flip options are { animate: boolean }', () => {
+  assert.deepEqual(checkLiveOptions({ lighting: false }, pages), { lighting: false });
+  assert.throws(() => checkLiveOptions({ display: 'single' }, pages), /option 'display' cannot change on a live book \(only lighting, shadows, gutter\)/);
+  assert.throws(() => checkLiveOptions({ shadows: NaN }, pages), /option 'shadows' must be true or false, got NaN/);
+  assert.throws(() => checkLiveOptions(undefined, pages), /options must be an object, got undefined/);
+  assert.deepEqual(checkFlipOptions(undefined), { animate: true });
+  assert.deepEqual(checkFlipOptions({ animate: false }), { animate: false });
+  assert.throws(() => checkFlipOptions({ animate: 0 }), (e) => e instanceof TypeError && /flip option 'animate' must be true or false, got 0/.test(e.message));
+  assert.throws(() => checkFlipOptions({ speed: 2 }), /unknown flip option 'speed' \(allowed: animate\)/);
+  assert.throws(() => checkFlipOptions(null), /flip options must be an object like \{ animate: false \}, got null/);
+});
