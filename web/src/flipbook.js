@@ -8,6 +8,7 @@ import { createShell } from './book-shell.js';
 import { PointerDrag } from './pointer-drag.js';
 import { listenForTapsAndSwipes } from './tap-swipe.js';
 import { listenForZoom } from './zoom-input.js';
+import { createLinkLayer } from './link-layer.js';
 import { pagesInFrame, pagesToRelease, textureCapacity, wantedPages } from './page-residency.js';
 
 const OPTION_CHECKS = {
@@ -87,6 +88,25 @@ function validate(options) {
       || (typeof ImageBitmap !== 'undefined' && zoomSrc instanceof ImageBitmap);
     if (!ok) throw new TypeError(`conecurl: option 'pages[${index}].zoomSrc' must be a URL, HTMLImageElement, HTMLCanvasElement, ImageBitmap or Blob`);
   });
+  options.pages.forEach((page, index) => {
+    const links = page && typeof page === 'object' && !(page instanceof Blob) ? page.links : undefined;
+    if (links === undefined) return;
+    const where = `option 'pages[${index}].links'`;
+    if (!Array.isArray(links)) throw new TypeError(`conecurl: ${where} must be an array of { rect, href } or { rect, page }`);
+    links.forEach((link, i) => {
+      const rect = link && link.rect;
+      if (!Array.isArray(rect) || rect.length !== 4 || !rect.every((v) => Number.isFinite(v) && v >= 0 && v <= 1)) {
+        throw new TypeError(`conecurl: ${where}[${i}].rect must be [x, y, width, height] as fractions of the page (0 to 1)`);
+      }
+      const toPage = link.page;
+      if (toPage !== undefined && !(Number.isInteger(toPage) && toPage >= 0 && toPage < options.pages.length)) {
+        throw new TypeError(`conecurl: ${where}[${i}].page must be a page index below ${options.pages.length}`);
+      }
+      if (toPage === undefined && typeof link.href !== 'string') {
+        throw new TypeError(`conecurl: ${where}[${i}] needs an href (a URL string) or a page (an index)`);
+      }
+    });
+  });
   if (options.startPage !== undefined && options.startPage >= options.pages.length) {
     throw new TypeError(`conecurl: option 'startPage' must be below the page count ${options.pages.length}`);
   }
@@ -141,7 +161,13 @@ export class Flipbook extends EventTarget {
     this._container = container;
     this._settings = settings;
     this._engine = engine;
-    this._pages = settings.pages.map((p) => (p && typeof p === 'object' && 'src' in p ? p : { src: p }));
+    // Entries as given (a PDF's fill in their alt and links as their pages render), with links in
+    // one form: { rect, href, toPage, title }.
+    this._pages = settings.pages.map((p) => {
+      if (!(p && typeof p === 'object' && 'src' in p)) return { src: p };
+      if (!p.links) return p;
+      return { ...p, links: p.links.map((l) => ({ rect: l.rect, href: l.href ?? '#', toPage: l.page, title: l.title })) };
+    });
     this._state = this._pages.map(() => 'idle');  // idle | loading | loaded | failed
     this._images = new Map();       // page -> decoded image, while its texture is resident
     this._lastWanted = new Map();   // page -> tick when it was last wanted (least recently wanted goes first)
@@ -154,6 +180,7 @@ export class Flipbook extends EventTarget {
     this._shell = createShell(container, { label: settings.label, direction: settings.direction });
     this._canvas = this._shell.canvas;
     this._restingTouchAction = this._canvas.style.touchAction;
+    this._links = createLinkLayer(this._shell.root, (link, event) => this._onLink(link, event));
     this._reducedMotion = typeof matchMedia === 'function' ? matchMedia('(prefers-reduced-motion: reduce)') : null;
   }
 
@@ -233,6 +260,7 @@ export class Flipbook extends EventTarget {
     this._pointer = null;
     this._pdf?.destroy();
     this._pdf = null;
+    this._links.remove();
     this._stopInput?.();
     clearTimeout(this._clickSeries?.timer);
     this._resizeObserver?.disconnect();
@@ -281,6 +309,7 @@ export class Flipbook extends EventTarget {
     this._pointer = new PointerDrag(this._view, {
       enabled: () => !this._zoomed(),
       onTurnStart: (direction) => {
+        this._links.hide();
         this._emit('turnstart', { direction, page: this.page, drag: true });
         this._followTurns();
         this._updateResidency();
@@ -447,6 +476,7 @@ export class Flipbook extends EventTarget {
     if (this._prefersReducedMotion()) return this._jumpOneLeaf(direction);
     const turning = direction === 'forward' ? this._view.next() : this._view.prev();
     if (this._view.animating) {
+      this._links.hide();
       this._emit('turnstart', { direction, page: this.page });
       this._followTurns();
     }
@@ -495,6 +525,7 @@ export class Flipbook extends EventTarget {
   }
 
   _showOpenPages() {
+    this._layoutLinks();
     const pages = this._openPages();
     this._shell.showOpenPages(pages, this.pageCount, pages.map((i) => this._pages[i].alt));
   }
@@ -549,8 +580,8 @@ export class Flipbook extends EventTarget {
       this._upload(index, image);
       this._state[index] = 'loaded';
       this._releaseExcess();
-      // A source may have learned its page's text while making it (a PDF page): say it if open.
-      if (this._pages[index].alt && this._openPages().includes(index)) this._showOpenPages();
+      // A source may have learned its page's text and links while making it (a PDF page).
+      if (this._openPages().includes(index)) this._showOpenPages();
     } catch (error) {
       if (this._destroyed) return;
       // The page keeps the plain paper placeholder; the book keeps working.
@@ -632,6 +663,7 @@ export class Flipbook extends EventTarget {
     this._view.requestRender();
     clearTimeout(this._refitTimer);
     this._refitTimer = setTimeout(() => this._refitTextures(), REFIT_DELAY_MS);
+    this._layoutLinks();
     this._emit('resize', { ...this._layoutSize, display: this.display });
   }
 
@@ -687,6 +719,40 @@ export class Flipbook extends EventTarget {
   }
 
 
+  // ---- links ---------------------------------------------------------------------------------
+
+  // Lays the open pages' links over them while the book rests; a moving leaf hides them.
+  _layoutLinks() {
+    if (this._destroyed || !this._view) return;
+    const open = this._openPages();
+    if (this._view.animating || !open.some((page) => this._pages[page].links?.length)) {
+      this._links.hide();
+      return;
+    }
+    const spread = this._view.restingRect();
+    const vertical = this._settings.direction === 'vertical';
+    const placed = open.map((page) => {
+      let rect = spread;
+      if (!this._view.book.isSingle()) {
+        // Even pages lie on the half the book turns forward to: right (ltr), left (rtl), bottom (vertical).
+        const forwardHalf = page % 2 === 0;
+        const second = this._settings.direction === 'rtl' ? !forwardHalf : forwardHalf;  // right, or bottom
+        rect = vertical
+          ? { x: spread.x, y: spread.y + (second ? spread.height / 2 : 0), width: spread.width, height: spread.height / 2 }
+          : { x: spread.x + (second ? spread.width / 2 : 0), y: spread.y, width: spread.width / 2, height: spread.height };
+      }
+      return { page, rect, links: this._pages[page].links ?? [] };
+    });
+    this._links.show(placed);
+  }
+
+  _onLink(link, event) {
+    const detail = { page: link.page, href: link.href, toPage: link.toPage };
+    const proceed = this.dispatchEvent(new CustomEvent('link', { detail, cancelable: true }));
+    if (link.toPage !== undefined || !proceed) event.preventDefault();
+    if (proceed && link.toPage !== undefined) this.flip(link.toPage).catch(() => {});
+  }
+
   // ---- zoom ------------------------------------------------------------------------------------
 
   _zoomed() { return this.zoom > 1.001; }
@@ -709,11 +775,13 @@ export class Flipbook extends EventTarget {
     const { width, height } = this._view.fitCanvas();
     this._view.book.panBy((dxCss * width) / Math.max(1, box.width), (dyCss * height) / Math.max(1, box.height), width, height);
     this._view.requestRender();
+    this._layoutLinks();
   }
 
   _afterZoom(before) {
     const scale = this.zoom;
     this._view.requestRender();
+    this._layoutLinks();
     // Zoomed in, a finger pans the view; at 1x the browser may scroll the page across the turn again.
     this._canvas.style.touchAction = scale > 1.001 ? 'none' : this._restingTouchAction;
     if (scale === before) return;
