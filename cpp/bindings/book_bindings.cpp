@@ -92,7 +92,7 @@ BookCamera cameraOf(const Book& book, double width, double height) {
     if (!(width >= 1.0 && height >= 1.0 && width < 1e5 && height < 1e5)) {
         js::throwError("RangeError", "canvas size must be at least 1x1 pixels");
     }
-    return bookCamera(book.config(), static_cast<int>(width), static_cast<int>(height));
+    return bookCamera(book.config(), static_cast<int>(width), static_cast<int>(height), book.zoom());
 }
 
 glm::dvec2 pixelOf(double x, double y) {
@@ -180,6 +180,24 @@ val restingRect(const Book& book, double width, double height) {
     return out;
 }
 
+// Zooms to `scale` keeping the table point under the pixel where it is; returns the scale kept.
+double zoomAboutPixel(Book& book, val scale, double x, double y, double width, double height) {
+    const double s = js::finiteNumber(scale, "zoom", 1.0, kMaxZoom, "1 to 4");
+    cameraOf(book, width, height);  // checks the size
+    book.setZoom(zoomAbout(book.zoom(), s, pixelOf(x, y), static_cast<int>(width), static_cast<int>(height)));
+    return book.zoom().scale;
+}
+
+// Moves the zoomed picture by (dx, dy) canvas pixels, as far as the pages still fill the view.
+void panByPixels(Book& book, double dx, double dy, double width, double height) {
+    cameraOf(book, width, height);
+    const glm::dvec2 d = pixelOf(dx, dy);
+    ViewZoom z = book.zoom();
+    z.offsetX += 2.0 * d.x / width;
+    z.offsetY -= 2.0 * d.y / height;
+    book.setZoom(z);
+}
+
 val viewProjection(const Book& book, double width, double height) {
     const BookCamera camera = cameraOf(book, width, height);
     val out = val::global("Float64Array").new_(16);
@@ -237,6 +255,16 @@ EMSCRIPTEN_BINDINGS(conecurl_book) {
         .function("gripPixel", &gripPixelNow)
         .function("viewProjection", &viewProjection)
         .function("restingRect", &restingRect)
+        .function("zoomAbout", &zoomAboutPixel)
+        .function("panBy", &panByPixels)
+        .function("zoom", optional_override([](const Book& b) {
+                      val out = val::object();
+                      out.set("scale", b.zoom().scale);
+                      out.set("offsetX", b.zoom().offsetX);
+                      out.set("offsetY", b.zoom().offsetY);
+                      return out;
+                  }))
+        .function("resetZoom", optional_override([](Book& b) { b.setZoom(ViewZoom{}); }))
         .function("jumpTo", optional_override([](Book& b, val position) {
                       b.jumpTo(js::wholeNumber(position, "position", 0, b.lastPosition()));
                   }))

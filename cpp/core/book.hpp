@@ -17,6 +17,16 @@ inline constexpr int kNoPage = -1;            // blank paper: an empty back, or 
 inline constexpr int kMaxTurnsInFlight = 6;
 inline constexpr int kMaxLeafDraws = kMaxTurnsInFlight + 2;  // + the two resting pages
 
+inline constexpr double kMaxZoom = 4.0;
+
+// Magnification of the view: the camera's picture scaled by `scale` about the canvas centre, then
+// moved by `offset` (normalised device coordinates, -1..1 across the canvas). 1 and (0, 0): all of it.
+struct ViewZoom {
+    double scale = 1.0;
+    double offsetX = 0.0;
+    double offsetY = 0.0;
+};
+
 struct BookConfig {
     int pageCount = 0;
     Display display = Display::Double;
@@ -93,6 +103,11 @@ public:
     // on along the schedule from where it is, theta and apex offsets fade out by the turn's end.
     void releaseHeldTurn(bool complete);
 
+    // View magnification, kept so the pages still fill the view: scale in [1, kMaxZoom], offset no more
+    // than scale - 1 either way. Not book state as such, but the camera reads it from here.
+    void setZoom(const ViewZoom& zoom);
+    const ViewZoom& zoom() const { return zoom_; }
+
     bool isHardLeaf(int leaf) const;
     // The pose of a leaf turning at progress p (soft: the schedule; hard: rigid).
     CurlParams scheduledPose(int leaf, double progress) const;
@@ -121,6 +136,7 @@ private:
 
     BookConfig config_;
     int position_ = 0;
+    ViewZoom zoom_;
     std::array<Turn, kMaxTurnsInFlight> turns_{};
     int turnCount_ = 0;
 };

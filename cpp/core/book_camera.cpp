@@ -16,7 +16,7 @@ constexpr double kFieldOfViewY = 24.0 * 3.14159265358979323846 / 180.0;  // mild
 constexpr double kFrameMargin = 1.3;  // room around the pages for leaves lifting up
 }  // namespace
 
-BookCamera bookCamera(const BookConfig& c, int width, int height) {
+BookCamera bookCamera(const BookConfig& c, int width, int height, const ViewZoom& zoom) {
     BookCamera camera;
     camera.width = std::max(1, width);
     camera.height = std::max(1, height);
@@ -30,11 +30,28 @@ BookCamera bookCamera(const BookConfig& c, int width, int height) {
     camera.eye = center + glm::dvec3(0.0, 0.0, distance);
     const double reach = std::max(c.pageWidth, c.pageHeight);
     const glm::dmat4 projection = glm::perspective(kFieldOfViewY, aspect, 0.02 * distance, distance + 2.0 * reach);
-    camera.viewProjection = projection * glm::lookAt(camera.eye, center, glm::dvec3(0.0, 1.0, 0.0));
-    camera.pixelsPerUnit = camera.height / (2.0 * distance * tanHalf);
+    // Zoom acts on the picture (after projection), so the perspective of a lifted leaf stays the same.
+    glm::dmat4 magnify(1.0);
+    magnify[0][0] = zoom.scale;
+    magnify[1][1] = zoom.scale;
+    magnify[3][0] = zoom.offsetX;
+    magnify[3][1] = zoom.offsetY;
+    camera.viewProjection = magnify * projection * glm::lookAt(camera.eye, center, glm::dvec3(0.0, 1.0, 0.0));
+    camera.pixelsPerUnit = zoom.scale * camera.height / (2.0 * distance * tanHalf);
     // A leaf standing on its spine comes a page width nearer the eye.
     camera.magnification = distance / std::max(distance - c.pageWidth, 0.25 * distance);
     return camera;
+}
+
+ViewZoom zoomAbout(const ViewZoom& zoom, double scale, glm::dvec2 pixel, int width, int height) {
+    const double ndcX = 2.0 * pixel.x / std::max(1, width) - 1.0;
+    const double ndcY = 1.0 - 2.0 * pixel.y / std::max(1, height);
+    const double s = std::clamp(std::isfinite(scale) ? scale : 1.0, 1.0, kMaxZoom);
+    // The unzoomed picture point under the pixel, then the offset that puts it back there.
+    const double px = (ndcX - zoom.offsetX) / zoom.scale;
+    const double py = (ndcY - zoom.offsetY) / zoom.scale;
+    const double reach = s - 1.0;
+    return ViewZoom{s, std::clamp(ndcX - s * px, -reach, reach), std::clamp(ndcY - s * py, -reach, reach)};
 }
 
 glm::dvec2 worldToPixel(const BookCamera& camera, glm::dvec3 world) {

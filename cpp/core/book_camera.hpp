@@ -20,8 +20,12 @@ struct BookCamera {
 };
 
 // A mild perspective looking straight down at the view frame of the book, with room around it for
-// leaves lifting up. Sizes below 1 pixel count as 1.
-BookCamera bookCamera(const BookConfig& config, int width, int height);
+// leaves lifting up, magnified by `zoom`. Sizes below 1 pixel count as 1.
+BookCamera bookCamera(const BookConfig& config, int width, int height, const ViewZoom& zoom = {});
+
+// `zoom` changed to `scale` so that the table point under `pixel` stays under it (zooming about the
+// pointer), kept inside the limits of Book::setZoom.
+ViewZoom zoomAbout(const ViewZoom& zoom, double scale, glm::dvec2 pixel, int width, int height);
 
 // Canvas pixel (x right, y down, origin at the top-left corner) of a world point.
 glm::dvec2 worldToPixel(const BookCamera& camera, glm::dvec3 world);

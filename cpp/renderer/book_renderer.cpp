@@ -180,15 +180,18 @@ void BookRenderer::uploadGrid() {
 
 void BookRenderer::updateGrid(const Book& book, const Camera& camera, int width, int height) {
     const BookConfig& c = book.config();
-    const GridKey key{width, height, requestedRows_, c.pageWidth, c.pageHeight, c.display, c.binding};
+    // Zoom in steps of a half: the grid is chosen again on each step, not on every pinch movement.
+    const double zoomStep = std::ceil(book.zoom().scale * 2.0) / 2.0;
+    const GridKey key{width, height, requestedRows_, c.pageWidth, c.pageHeight, c.display, c.binding, zoomStep};
     if (key == gridKey_) return;  // the choice costs milliseconds: never per frame
     const bool samePage = key.pageWidth == gridKey_.pageWidth && key.pageHeight == gridKey_.pageHeight;
     gridKey_ = key;
     int rows = requestedRows_;
     int columns = 0;
     if (rows <= 0) {
+        const float pixelsPerUnit = camera.pixelsPerUnit * static_cast<float>(zoomStep / book.zoom().scale);
         const GridResolution chosen = chooseGridResolution(c.pageWidth, c.pageHeight, c.schedule,
-                                                           camera.pixelsPerUnit, camera.magnification);
+                                                           pixelsPerUnit, camera.magnification);
         rows = chosen.rows;
         columns = chosen.columns;
         gridErrorPixels_ = chosen.predictedErrorPixels;
@@ -239,7 +242,7 @@ GLuint BookRenderer::textureFor(int page) const {
 
 BookRenderer::Camera BookRenderer::cameraFor(const Book& book, int width, int height) const {
     // The core's camera, in float for the GPU: pointer input is solved against the same one.
-    const BookCamera c = bookCamera(book.config(), width, height);
+    const BookCamera c = bookCamera(book.config(), width, height, book.zoom());
     return Camera{glm::mat4(c.viewProjection), glm::vec3(c.eye), static_cast<float>(c.pixelsPerUnit),
                   static_cast<float>(c.magnification)};
 }

@@ -108,10 +108,11 @@ private:
         double pageWidth = 0.0, pageHeight = 0.0;
         Display display = Display::Double;
         Binding binding = Binding::Left;
+        double zoomStep = 1.0;
         bool operator==(const GridKey& o) const {
             return width == o.width && height == o.height && requestedRows == o.requestedRows &&
                    pageWidth == o.pageWidth && pageHeight == o.pageHeight && display == o.display &&
-                   binding == o.binding;
+                   binding == o.binding && zoomStep == o.zoomStep;
         }
     } gridKey_;
     int maxTextureSize_ = 0;

@@ -63,3 +63,16 @@ test('browser: demo book turns when its corner is dragged across the spine', asy
   await page.mouse.up();
   await expect(page.locator('#where')).toHaveText('Pages 12–13 of 40', { timeout: 15000 });
 });
+
+test('browser: demo shows its PDF example through pdf.js, and the contents links turn to their pages', async ({ page }) => {
+  const problems = await openReady(page, '/web/demo/');
+  await page.selectOption('#source', 'pdf');
+  await expect(page.locator('#where')).toHaveText('Page 1 of 12', { timeout: 20000 });
+  await page.click('#next');
+  await expect(page.locator('#where')).toHaveText('Pages 2–3 of 12', { timeout: 20000 });
+  const contentsLinks = page.locator('#book .conecurl-links a');
+  await expect(contentsLinks).toHaveCount(9, { timeout: 20000 });
+  await contentsLinks.nth(4).click();  // "5. Cones, not cylinders", on page 7
+  await expect(page.locator('#where')).toHaveText('Pages 6–7 of 12', { timeout: 30000 });
+  expect(problems).toEqual([]);
+});

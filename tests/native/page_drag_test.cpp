@@ -350,3 +350,37 @@ TEST(PageDragNative, TheHoverHintLiftsTheCornerSlightlyAndStartsFlat) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(BookCameraNative, ZoomingAboutAPixelKeepsTheTablePointUnderItAndStaysWithinTheLimits) {
+    Book book = makeBook(Binding::Left, Display::Double);
+    const dvec2 pixel(700.0, 420.0);
+    const dvec3 before = pixelToTable(bookCamera(book.config(), kCanvasW, kCanvasH, book.zoom()), pixel);
+    for (double scale : {1.5, 2.0, 3.7, 4.0}) {
+        book.setZoom(zoomAbout(book.zoom(), scale, pixel, kCanvasW, kCanvasH));
+        const BookCamera camera = bookCamera(book.config(), kCanvasW, kCanvasH, book.zoom());
+        const dvec2 again = worldToPixel(camera, before);
+        EXPECT_NEAR(again.x, pixel.x, 1e-6) << scale;
+        EXPECT_NEAR(again.y, pixel.y, 1e-6) << scale;
+        EXPECT_DOUBLE_EQ(book.zoom().scale, scale);
+        EXPECT_NEAR(camera.pixelsPerUnit, scale * bookCamera(book.config(), kCanvasW, kCanvasH).pixelsPerUnit, 1e-9);
+    }
+    // Out of range: scale kept in [1, 4]; the offset never lets the view run off the pages' frame.
+    book.setZoom(ViewZoom{9.0, 50.0, -50.0});
+    EXPECT_EQ(book.zoom().scale, kMaxZoom);
+    EXPECT_EQ(book.zoom().offsetX, kMaxZoom - 1.0);
+    EXPECT_EQ(book.zoom().offsetY, 1.0 - kMaxZoom);
+    book.setZoom(ViewZoom{std::nan(""), 0.3, 0.0});
+    EXPECT_EQ(book.zoom().scale, 1.0);
+    EXPECT_EQ(book.zoom().offsetX, 0.0);
+    // Grips and drags work in the zoomed view: a press on the zoomed corner finds the corner.
+    book.jumpTo(2);
+    book.setZoom(zoomAbout(ViewZoom{}, 2.5, {800.0, 500.0}, kCanvasW, kCanvasH));
+    const BookCamera zoomed = bookCamera(book.config(), kCanvasW, kCanvasH, book.zoom());
+    const auto grip = gripAt(book, zoomed, restingPixel(book, zoomed, false, {kW * 0.95, kH * 0.05}));
+    ASSERT_TRUE(grip);
+    EXPECT_NEAR(grip->pagePoint.x, kW * 0.95, 1e-9);
+}
+
+}  // namespace

@@ -68,13 +68,21 @@ test('node: pages must be a non-empty array of page sources; each entry is check
   refuses({ pages: [{ alt: 'no source' }] }, `option 'pages[0].src' must be ${sources}; got undefined`);
   refuses({ pages: [{ src: 'a.png', alt: 5 }] }, "option 'pages[0].alt' must be a string (the page's text for screen readers); got 5");
   refuses({ pages: [{ src: 'a.png', hard: 'yes' }] }, "option 'pages[0].hard' must be true or false; got \"yes\"");
-  refuses({ pages: [{ src: 'a.png', title: 'x' }] }, "option 'pages[0]' has an unknown key 'title' (allowed: src, alt, hard)");
+  refuses({ pages: [{ src: 'a.png', title: 'x' }] }, "option 'pages[0]' has an unknown key 'title' (allowed: src, alt, hard, zoomSrc, links)");
+  refuses({ pages: [{ src: 'a.png', zoomSrc: () => 'b.png' }] },
+    "option 'pages[0].zoomSrc' must be a URL, HTMLImageElement, HTMLCanvasElement, ImageBitmap or Blob; got a function");
+  refuses({ pages: [{ src: 'a.png', links: {} }] }, "option 'pages[0].links' must be an array of { rect, href } or { rect, page }; got an object");
+  refuses({ pages: [{ src: 'a.png', links: [{ rect: [0, 0, 2, NaN], href: 'x' }] }] },
+    "option 'pages[0].links[0].rect' must be [x, y, width, height] as fractions of the page (0 to 1); got an array of 4");
+  refuses({ pages: ['a.png', { src: 'b.png', links: [{ rect: [0, 0, 1, 1], page: 2 }] }] },
+    "option 'pages[1].links[0].page' must be a page index below 2; got 2");
   refuses({ pages: [['a.png']] }, `option 'pages[0]' must be ${sources}, or { src, alt, hard }; got an array of 1`);
   // Accepted: URLs, Blobs, functions and entries with them.
   const blob = new Blob(['x']);
   const fn = () => 'a.png';
-  const settings = validateOptions({ pages: ['a.png', blob, fn, { src: 'b.png', alt: 'B', hard: true }] });
-  assert.deepEqual(pageEntries(settings.pages), [{ src: 'a.png' }, { src: blob }, { src: fn }, { src: 'b.png', alt: 'B', hard: true }]);
+  const settings = validateOptions({ pages: ['a.png', blob, fn, { src: 'b.png', alt: 'B', hard: true, links: [{ rect: [0, 0, 0.5, 0.5], page: 0 }] }] });
+  assert.deepEqual(pageEntries(settings.pages), [{ src: 'a.png' }, { src: blob }, { src: fn },
+    { src: 'b.png', alt: 'B', hard: true, links: [{ rect: [0, 0, 0.5, 0.5], href: '#', toPage: 0, title: undefined }] }]);
 });
 
 test('node: options that are not an object, unknown keys, and a start page past the end are refused by name', () => {

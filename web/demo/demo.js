@@ -4,6 +4,7 @@
 import { Flipbook } from '../src/flipbook.js';
 import { loadEngine } from '../src/engine.js';
 import { DEMO_PAGE_COUNT, drawBookPage, isHardPage } from './book-pages.js';
+import { makeDemoPdf } from './demo-pdf.js';
 
 const $ = (id) => document.getElementById(id);
 const deg = 180 / Math.PI;
@@ -11,6 +12,7 @@ const deg = 180 / Math.PI;
 let engine;
 let book;
 let building = Promise.resolve();
+let pdfBytes = null;  // the PDF example, made once when first chosen
 
 // Pages are drawn only when the book wants them: the cache keeps a handful, however long the book.
 const PAGES = Array.from({ length: DEMO_PAGE_COUNT }, (_, index) => ({
@@ -58,18 +60,20 @@ function showSchedule(t) {
 
 function showWhere() {
   const first = book.page;
-  const last = Math.min(DEMO_PAGE_COUNT - 1, first + (book.display === 'single' || first === 0 ? 0 : 1));
-  $('where').textContent = first === last ? `Page ${first + 1} of ${DEMO_PAGE_COUNT}`
-    : `Pages ${first + 1}–${last + 1} of ${DEMO_PAGE_COUNT}`;
+  const count = book.pageCount;
+  const last = Math.min(count - 1, first + (book.display === 'single' || first === 0 ? 0 : 1));
+  $('where').textContent = first === last ? `Page ${first + 1} of ${count}` : `Pages ${first + 1}–${last + 1} of ${count}`;
 }
 
 // Display, direction and speed are fixed for a book's life: changing one makes a new book at the page.
 function buildBook(startPage) {
   building = building.then(async () => {
     book?.destroy();
+    const pdf = $('source').value === 'pdf';
+    if (pdf) pdfBytes ??= await makeDemoPdf();
     book = await Flipbook.create($('book'), {
-      pages: PAGES,
-      startPage,
+      ...(pdf ? { pdf: pdfBytes } : { pages: PAGES }),
+      startPage: pdf ? 0 : startPage,
       display: $('display').value,
       direction: $('direction').value,
       duration: Number($('speed').value) * 1000,
@@ -108,7 +112,7 @@ async function main() {
     book.previewTurn('forward', t);
     showSchedule(t);
   });
-  for (const id of ['display', 'direction', 'speed']) {
+  for (const id of ['source', 'display', 'direction', 'speed']) {
     $(id).addEventListener('change', () => buildBook(book.page));
   }
   for (const id of ['lighting', 'shadows', 'gutter']) {

@@ -73,7 +73,8 @@ export function createShell(container, { label, direction }) {
   const canvas = document.createElement('canvas');
   canvas.setAttribute('aria-hidden', 'true');
   // The browser keeps the scrolling and zooming that does not turn pages (swipes go along the turn).
-  const touchAction = direction === 'vertical' ? 'pan-x pinch-zoom' : 'pan-y pinch-zoom';
+  // Pinches stay with the book (it zooms itself); a stroke across the turn still scrolls the page.
+  const touchAction = direction === 'vertical' ? 'pan-x' : 'pan-y';
   canvas.style.cssText = `display:block;width:100%;height:100%;touch-action:${touchAction}`;
 
   const status = document.createElement('div');

@@ -8,12 +8,27 @@ export type PageImage = string | HTMLImageElement | HTMLCanvasElement | ImageBit
  */
 export type PageSource = PageImage | ((index: number, size: { width: number; height: number }) => PageImage | Promise<PageImage>);
 
+export interface PageLink {
+  /** Where on the page: [x, y, width, height] as fractions of the page, from its top-left corner. */
+  rect: [number, number, number, number];
+  /** A URL (http, https, mailto or relative) ... */
+  href?: string;
+  /** ... or a page of this book to turn to. */
+  page?: number;
+  /** Its name for screen readers and the tooltip; default the URL or "Go to page N". */
+  title?: string;
+}
+
 export interface PageEntry {
   src: PageSource;
   /** Text of the page for screen readers. */
   alt?: string;
   /** Turns rigidly, like a cover. */
   hard?: boolean;
+  /** A sharper image of the page, loaded for the open pages when zoomed in. */
+  zoomSrc?: PageImage;
+  /** Clickable areas of the page, active while it lies open and flat. */
+  links?: PageLink[];
 }
 
 export interface FlipbookOptions {
@@ -79,6 +94,12 @@ export interface FlipbookEventMap {
   /** A turn begins: from next()/prev()/flip(), a click, tap, swipe or key, or a drag (`drag: true`). */
   turnstart: CustomEvent<{ direction: 'forward' | 'backward'; page: number; drag?: boolean }>;
   turned: CustomEvent<{ page: number }>;
+  /** The view's magnification changed (1 to 4). */
+  zoom: CustomEvent<{ scale: number }>;
+  /** A link in a page was clicked or activated; preventDefault() stops its navigation or flip. */
+  link: CustomEvent<{ page: number; href: string; toPage?: number }>;
+  /** An open page got a sharper texture for the zoomed view (its zoomSrc, or its function called again). */
+  sharpened: CustomEvent<{ index: number; width: number }>;
   /** A dragged page was let go short of the spine and fell back: the book stays at `page`. */
   turncancel: CustomEvent<{ page: number }>;
   /**
@@ -123,6 +144,12 @@ export class Flipbook extends EventTarget {
    * in [0, 1] (scrubbers, figures); false at the end of the book. TypeError/RangeError for bad input.
    */
   previewTurn(direction: 'forward' | 'backward', t: number): boolean;
+  /**
+   * View magnification, 1 (the whole book) to 4; setting it zooms about the middle of the book
+   * (RangeError outside 1..4). While above 1, clicks, swipes, drags and arrow keys do not turn pages;
+   * next(), prev() and flip() zoom back out first.
+   */
+  zoom: number;
   /**
    * Turns leaf by leaf to page `index` (or jumps with animate: false, or under
    * prefers-reduced-motion); RangeError if out of range, TypeError for bad options.

@@ -10,6 +10,8 @@ import { loadPage } from './page-loader.js';
 import { PointerDrag } from './pointer-drag.js';
 import { StaticBook } from './static-book.js';
 import { listenForTapsAndSwipes } from './tap-swipe.js';
+import { listenForZoom } from './zoom-input.js';
+import { createLinkLayer } from './link-layer.js';
 import { pagesInFrame, pagesToRelease, textureCapacity, wantedPages } from './page-residency.js';
 
 // Failures after which a book can still be shown, as still pages: Flipbook.create falls back on these.
@@ -18,6 +20,9 @@ const AUTO_DOUBLE_ASPECT = 1.2;  // containers wider than this show two pages in
 const TEXTURE_OVERSAMPLE = 1.5;  // textures up to this many texels per device pixel of the page on screen
 const REFIT_DELAY_MS = 150;      // re-upload textures for a new size once a resize has come to rest
 const REFIT_RATIO = 1.25;        // ... and only those this far off the size now wanted
+const MAX_ZOOM = 4;              // the engine's kMaxZoom
+const ZOOM_STEP = 1.25;          // the + and - keys
+const CLICK_SERIES_MS = 300;     // clicks this close together are one series (a double-click, or rapid turning)
 const SWIPE_DOMINANCE = 1.5;     // a swipe travels this much further along the turn than across it
 
 // `pdf` (a URL, ArrayBuffer or Uint8Array) instead of `pages`: pdf.js is imported only then.
@@ -91,6 +96,8 @@ export class Flipbook extends EventTarget {
     this._container = container;
     this._settings = settings;
     this._engine = engine;
+    // Entries as given (a PDF's fill in their alt and links as their pages render), with links in
+    // one form: { rect, href, toPage, title }.
     this._pages = pageEntries(settings.pages);
     this._state = this._pages.map(() => 'idle');  // idle | loading | loaded | failed
     this._images = new Map();       // page -> decoded image, while its texture is resident
@@ -105,6 +112,8 @@ export class Flipbook extends EventTarget {
     this._destroyed = false;
     this._shell = createShell(container, { label: settings.label, direction: settings.direction });
     this._canvas = this._shell.canvas;
+    this._restingTouchAction = this._canvas.style.touchAction;
+    this._links = createLinkLayer(this._shell.root, (link, event) => this._onLink(link, event));
     this._reducedMotion = typeof matchMedia === 'function' ? matchMedia('(prefers-reduced-motion: reduce)') : null;
   }
 
@@ -117,6 +126,17 @@ export class Flipbook extends EventTarget {
 
   next() { return this._turn('forward'); }
   prev() { return this._turn('backward'); }
+
+  /** View magnification, 1 (the whole book) to 4. Setting it zooms about the middle of the book. */
+  get zoom() { return this._view ? this._view.book.zoom().scale : 1; }
+  set zoom(scale) {
+    this._alive();
+    if (!(Number.isFinite(scale) && scale >= 1 && scale <= MAX_ZOOM)) {
+      throw new RangeError(`conecurl: zoom must be a number from 1 to ${MAX_ZOOM}, got ${String(scale)}`);
+    }
+    const box = this._canvas.getBoundingClientRect();
+    this._zoomAbout(scale, box.left + box.width / 2, box.top + box.height / 2);
+  }
 
   /**
    * Shows, frozen, the exact frame of the next ('forward') or previous ('backward') turn at progress
@@ -175,7 +195,9 @@ export class Flipbook extends EventTarget {
     this._pointer = null;
     this._pdf?.destroy();
     this._pdf = null;
+    this._links.remove();
     this._stopInput?.();
+    clearTimeout(this._clickSeries?.timer);
     this._resizeObserver?.disconnect();
     this._stopWatchingPixelRatio?.();
     clearTimeout(this._refitTimer);
@@ -222,7 +244,9 @@ export class Flipbook extends EventTarget {
   _attachPointer() {
     this._pointer?.destroy();
     this._pointer = new PointerDrag(this._view, {
+      enabled: () => !this._zoomed(),
       onTurnStart: (direction) => {
+        this._links.hide();
         this._emit('turnstart', { direction, page: this.page, drag: true });
         this._followTurns();
         this._updateResidency();
@@ -251,12 +275,24 @@ export class Flipbook extends EventTarget {
     const root = this._shell.root;
     const stopTaps = listenForTapsAndSwipes(this._canvas, {
       // A stroke that dragged a page is not also a tap or a swipe.
-      tap: (x, y) => { if (!this._pointer?.strokeWasDrag) this._onClick(this._pageHalfAt(x, y)); },
+      tap: (x, y, kind) => {
+        if (this._pointer?.strokeWasDrag) return;
+        const half = this._pageHalfAt(x, y);
+        if (kind === 'click') this._onMouseClick(half);
+        else this._onClick(half);
+      },
       swipe: (dx, dy) => { if (!this._pointer?.strokeWasDrag) this._onSwipe(dx, dy); },
+    });
+    const stopZoom = listenForZoom(this._canvas, {
+      scale: () => this.zoom,
+      zoomAbout: (scale, x, y) => this._zoomAbout(scale, x, y),
+      doubleClicked: () => this._onDoubleClick(),
+      panBy: (dx, dy) => this._panBy(dx, dy),
     });
     const onKeyDown = (event) => this._onKeyDown(event);
     root.addEventListener('keydown', onKeyDown);
     this._stopInput = () => {
+      stopZoom();
       stopTaps();
       root.removeEventListener('keydown', onKeyDown);
     };
@@ -283,13 +319,50 @@ export class Flipbook extends EventTarget {
 
   /** A click or tap on a half of the book: the half that holds the next page turns forward. */
   _onClick(half) {
-    if (this._destroyed || !half) return;
+    if (this._destroyed || !half || this._zoomed()) return;  // zoomed in, a press pans: no turning
     const forwardHalf = { ltr: 'right', rtl: 'left', vertical: 'bottom' }[this._settings.direction];
     this._turnQuietly(half === forwardHalf ? 'forward' : 'backward');
   }
 
+  // Mouse clicks come in series. A series of exactly two is a double-click, which zooms: so the
+  // first click of a series waits CLICK_SERIES_MS before it turns. A third click makes it rapid
+  // turning: the clicks held back turn at once, and every further click of the series turns at once.
+  _onMouseClick(half) {
+    const series = this._clickSeries;
+    if (series && !series.done) {
+      clearTimeout(series.timer);
+      if (series.turning) {
+        this._onClick(half);
+      } else {
+        series.halves.push(half);
+        if (series.halves.length >= 3) this._flushClicks(series, true);
+      }
+      if (!series.done) series.timer = setTimeout(() => this._flushClicks(series, false), CLICK_SERIES_MS);
+      return;
+    }
+    const next = { halves: [half], turning: false, done: false, timer: 0 };
+    next.timer = setTimeout(() => this._flushClicks(next, false), CLICK_SERIES_MS);
+    this._clickSeries = next;
+  }
+
+  // Turns the clicks a series held back; `keepGoing`: the series stays open for more rapid clicks.
+  _flushClicks(series, keepGoing) {
+    for (const half of series.halves.splice(0)) this._onClick(half);
+    series.turning = keepGoing;
+    if (!keepGoing) series.done = true;
+  }
+
+  _onDoubleClick() {
+    const series = this._clickSeries;
+    if (series && !series.done && !series.turning && series.halves.length === 2) {
+      clearTimeout(series.timer);
+      series.halves.length = 0;  // the two clicks were a double-click: it zooms (zoom-input.js), no turn
+      series.done = true;
+    }
+  }
+
   _onSwipe(dx, dy) {
-    if (this._destroyed) return;
+    if (this._destroyed || this._zoomed()) return;
     const vertical = this._settings.direction === 'vertical';
     const along = vertical ? dy : dx;
     const across = vertical ? dx : dy;
@@ -300,9 +373,16 @@ export class Flipbook extends EventTarget {
   }
 
   _onKeyDown(event) {
-    if (this._destroyed) return;
+    if (this._destroyed || event.defaultPrevented || event.altKey || event.ctrlKey || event.metaKey) return;
+    const zoomKey = { '+': ZOOM_STEP, '=': ZOOM_STEP, '-': 1 / ZOOM_STEP, 0: 0 }[event.key];
+    if (zoomKey !== undefined) {
+      event.preventDefault();
+      const box = this._canvas.getBoundingClientRect();
+      this._zoomAbout(zoomKey === 0 ? 1 : this.zoom * zoomKey, box.left + box.width / 2, box.top + box.height / 2);
+      return;
+    }
     const action = actionForKey(event, this._settings.direction);
-    if (!action) return;
+    if (!action || this._zoomed()) return;  // zoomed in, the keys do not turn: 0 (or -) comes back first
     event.preventDefault();
     if (action === 'first' || action === 'last') {
       // Home and End jump: animating a whole book's leaves one by one would take minutes.
@@ -324,9 +404,11 @@ export class Flipbook extends EventTarget {
 
   async _turn(direction) {
     this._alive();
+    if (this._zoomed()) this._zoomAbout(1, 0, 0);  // a turn asked for by code shows the whole book again
     if (this._prefersReducedMotion()) return this._jumpOneLeaf(direction);
     const turning = direction === 'forward' ? this._view.next() : this._view.prev();
     if (this._view.animating) {
+      this._links.hide();
       this._emit('turnstart', { direction, page: this.page });
       this._followTurns();
     }
@@ -375,6 +457,7 @@ export class Flipbook extends EventTarget {
   }
 
   _showOpenPages() {
+    this._layoutLinks();
     const pages = this._openPages();
     this._shell.showOpenPages(pages, this.pageCount, pages.map((i) => this._pages[i].alt));
   }
@@ -433,8 +516,8 @@ export class Flipbook extends EventTarget {
       this._upload(index, image);
       this._state[index] = 'loaded';
       this._releaseExcess();
-      // A source may have learned its page's text while making it (a PDF page): say it if open.
-      if (this._pages[index].alt && this._openPages().includes(index)) this._showOpenPages();
+      // A source may have learned its page's text and links while making it (a PDF page).
+      if (this._openPages().includes(index)) this._showOpenPages();
     } catch (error) {
       if (this._destroyed) return;
       // The page keeps the plain paper placeholder; the book keeps working. `reason` says why:
@@ -463,8 +546,12 @@ export class Flipbook extends EventTarget {
   }
 
   /** Texture pixels a page needs: its size on screen in device pixels, times TEXTURE_OVERSAMPLE. */
-  _textureCover() {
-    const rect = this._view.restingRect();
+  _textureCover({ zoomed = false } = {}) {
+    // restingRect is the zoomed picture; textures are sized for the whole book unless asked for the
+    // open pages while zoomed in (only those get the extra pixels: memory stays bounded).
+    const unzoom = zoomed ? 1 : 1 / this.zoom;
+    const full = this._view.restingRect();
+    const rect = { width: full.width * unzoom, height: full.height * unzoom };
     const spread = this._view.book.isSingle() ? 1 : 2;
     const vertical = this._settings.direction === 'vertical';
     const scale = (window.devicePixelRatio || 1) * TEXTURE_OVERSAMPLE;
@@ -476,6 +563,10 @@ export class Flipbook extends EventTarget {
 
   /** Resolves once no page is loading (tests; `progress` with pending 0 says the same). */
   _whenIdle() {
+    // Clicks held back to tell a double-click come first: wait them out (they may start a turn).
+    if (this._clickSeries && !this._clickSeries.done) {
+      return new Promise((resolve) => setTimeout(resolve, CLICK_SERIES_MS + 20)).then(() => this._whenIdle());
+    }
     if (this._loadsInFlight === 0) return Promise.resolve();
     return new Promise((resolve) => this._idleWaiters.push(resolve));
   }
@@ -515,6 +606,7 @@ export class Flipbook extends EventTarget {
     this._view.requestRender();
     clearTimeout(this._refitTimer);
     this._refitTimer = setTimeout(() => this._refitTextures(), REFIT_DELAY_MS);
+    this._layoutLinks();
     this._emit('resize', { ...this._layoutSize, display: this.display });
   }
 
@@ -533,15 +625,120 @@ export class Flipbook extends EventTarget {
 
   _refitTextures() {
     if (this._destroyed) return;
-    const cover = this._textureCover();
     const maxTextureSize = this._view.renderer.maxTextureSize();
+    const open = new Set(this._openPages());
     for (const [index, image] of this._images) {
+      const sharp = open.has(index) && this._zoomed();
+      const cover = this._textureCover({ zoomed: sharp });
       const uploaded = this._view.pageImageSize(index);
       const natural = { width: image.naturalWidth || image.width, height: image.naturalHeight || image.height };
       const wanted = uploadSizeFor(natural.width, natural.height, { cover, maxTextureSize });
       const ratio = wanted.width / uploaded.width;
       if (ratio > REFIT_RATIO || ratio < 1 / REFIT_RATIO) this._view.setPageImage(index, image, { cover });
+      // Zoomed in past what the image holds: a sharper source, where the page has one.
+      if (sharp && wanted.width < cover.width / REFIT_RATIO && wanted.width < maxTextureSize) this._sharpen(index, cover);
     }
+  }
+
+  // Loads a sharper image of an open page for the zoomed view: `zoomSrc`, or the page's function
+  // called again for the larger size (a PDF page rendered anew). The page keeps its present texture
+  // until the sharper one is ready.
+  async _sharpen(index, cover) {
+    const entry = this._pages[index];
+    const source = typeof entry.src === 'function' ? entry.src : entry.zoomSrc;  // a function is told `cover`
+    if (!source || this._sharpening?.has(index)) return;
+    (this._sharpening ??= new Set()).add(index);
+    try {
+      const { image, owned } = await loadPage(source, { index, size: cover, signal: this._abort.signal });
+      if (owned) this._owned.add(image);
+      if (this._destroyed || !this._images.has(index)) {
+        this._closeIfOwned(image);
+        return;
+      }
+      const previous = this._images.get(index);
+      this._view.setPageImage(index, image, { cover });
+      this._images.set(index, image);
+      if (previous !== image) this._closeIfOwned(previous);
+      this._emit('sharpened', { index, width: this._view.pageImageSize(index).width });
+    } catch (error) {
+      if (!this._destroyed) {
+        this._emit('pageerror', { index, error: error instanceof Error ? error : new Error(String(error)), reason: error?.reason || 'upload' });
+      }
+    } finally {
+      this._sharpening.delete(index);
+    }
+  }
+
+
+  // ---- links ---------------------------------------------------------------------------------
+
+  // Lays the open pages' links over them while the book rests; a moving leaf hides them.
+  _layoutLinks() {
+    if (this._destroyed || !this._view) return;
+    const open = this._openPages();
+    if (this._view.animating || !open.some((page) => this._pages[page].links?.length)) {
+      this._links.hide();
+      return;
+    }
+    const spread = this._view.restingRect();
+    const vertical = this._settings.direction === 'vertical';
+    const placed = open.map((page) => {
+      let rect = spread;
+      if (!this._view.book.isSingle()) {
+        // Even pages lie on the half the book turns forward to: right (ltr), left (rtl), bottom (vertical).
+        const forwardHalf = page % 2 === 0;
+        const second = this._settings.direction === 'rtl' ? !forwardHalf : forwardHalf;  // right, or bottom
+        rect = vertical
+          ? { x: spread.x, y: spread.y + (second ? spread.height / 2 : 0), width: spread.width, height: spread.height / 2 }
+          : { x: spread.x + (second ? spread.width / 2 : 0), y: spread.y, width: spread.width / 2, height: spread.height };
+      }
+      return { page, rect, links: this._pages[page].links ?? [] };
+    });
+    this._links.show(placed);
+  }
+
+  _onLink(link, event) {
+    const detail = { page: link.page, href: link.href, toPage: link.toPage };
+    const proceed = this.dispatchEvent(new CustomEvent('link', { detail, cancelable: true }));
+    if (link.toPage !== undefined || !proceed) event.preventDefault();
+    if (proceed && link.toPage !== undefined) this.flip(link.toPage).catch(() => {});
+  }
+
+  // ---- zoom ------------------------------------------------------------------------------------
+
+  _zoomed() { return this.zoom > 1.001; }
+
+  /** Zooms to `scale` about a viewport point (the engine keeps the table point under it). */
+  _zoomAbout(scale, clientX, clientY) {
+    if (this._destroyed) return;
+    const before = this.zoom;
+    const box = this._canvas.getBoundingClientRect();
+    const { width, height } = this._view.fitCanvas();
+    const clamped = Math.min(MAX_ZOOM, Math.max(1, scale));
+    this._view.book.zoomAbout(clamped, ((clientX - box.left) * width) / Math.max(1, box.width),
+      ((clientY - box.top) * height) / Math.max(1, box.height), width, height);
+    this._afterZoom(before);
+  }
+
+  /** Moves the zoomed view by CSS pixels (a pan), as far as the pages still fill it. */
+  _panBy(dxCss, dyCss) {
+    const box = this._canvas.getBoundingClientRect();
+    const { width, height } = this._view.fitCanvas();
+    this._view.book.panBy((dxCss * width) / Math.max(1, box.width), (dyCss * height) / Math.max(1, box.height), width, height);
+    this._view.requestRender();
+    this._layoutLinks();
+  }
+
+  _afterZoom(before) {
+    const scale = this.zoom;
+    this._view.requestRender();
+    this._layoutLinks();
+    // Zoomed in, a finger pans the view; at 1x the browser may scroll the page across the turn again.
+    this._canvas.style.touchAction = scale > 1.001 ? 'none' : this._restingTouchAction;
+    if (scale === before) return;
+    clearTimeout(this._refitTimer);
+    this._refitTimer = setTimeout(() => this._refitTextures(), REFIT_DELAY_MS);  // sharp pages once it rests
+    this._emit('zoom', { scale });
   }
 
   _emit(type, detail) {

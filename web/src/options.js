@@ -26,7 +26,7 @@ export const DEFAULTS = {
 };
 /** Options a live book takes through setOptions(); the others need a new book. */
 export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter'];
-const PAGE_ENTRY_KEYS = ['src', 'alt', 'hard'];
+const PAGE_ENTRY_KEYS = ['src', 'alt', 'hard', 'zoomSrc', 'links'];
 const PAGE_SOURCES = 'a URL string, HTMLImageElement, HTMLCanvasElement, ImageBitmap, Blob, '
   + 'a function returning one of these (or a Promise of one)';
 
@@ -56,7 +56,7 @@ function isPlainEntry(page) {
   return page !== null && typeof page === 'object' && !Array.isArray(page) && !isPageImage(page);
 }
 
-function checkPage(page, index) {
+function checkPage(page, index, pageCount) {
   const name = `pages[${index}]`;
   if (!isPlainEntry(page)) {
     if (isPageImage(page) || typeof page === 'function') return;
@@ -75,6 +75,31 @@ function checkPage(page, index) {
   if (page.hard !== undefined && typeof page.hard !== 'boolean') {
     throw new TypeError(`conecurl: option '${name}.hard' must be true or false; got ${describeValue(page.hard)}`);
   }
+  if (page.zoomSrc !== undefined && !isPageImage(page.zoomSrc)) {
+    throw new TypeError(`conecurl: option '${name}.zoomSrc' must be a URL, HTMLImageElement, HTMLCanvasElement, ImageBitmap or Blob; `
+      + `got ${describeValue(page.zoomSrc)}`);
+  }
+  if (page.links !== undefined) checkLinks(page.links, `${name}.links`, pageCount);
+}
+
+function checkLinks(links, where, pageCount) {
+  if (!Array.isArray(links)) {
+    throw new TypeError(`conecurl: option '${where}' must be an array of { rect, href } or { rect, page }; got ${describeValue(links)}`);
+  }
+  links.forEach((link, i) => {
+    const rect = link && link.rect;
+    if (!Array.isArray(rect) || rect.length !== 4 || !rect.every((v) => Number.isFinite(v) && v >= 0 && v <= 1)) {
+      throw new TypeError(`conecurl: option '${where}[${i}].rect' must be [x, y, width, height] as fractions of the page (0 to 1); `
+        + `got ${describeValue(rect)}`);
+    }
+    const toPage = link.page;
+    if (toPage !== undefined && !(Number.isInteger(toPage) && toPage >= 0 && toPage < pageCount)) {
+      throw new TypeError(`conecurl: option '${where}[${i}].page' must be a page index below ${pageCount}; got ${describeValue(toPage)}`);
+    }
+    if (toPage === undefined && typeof link.href !== 'string') {
+      throw new TypeError(`conecurl: option '${where}[${i}]' needs an href (a URL string) or a page (an index)`);
+    }
+  });
 }
 
 /**
@@ -93,16 +118,24 @@ export function validateOptions(options) {
   }
   if (!('pages' in options)) throw new TypeError("conecurl: option 'pages' is missing (a non-empty array of page sources)");
   // An index loop, not forEach: a hole in a sparse array is a missing page, not one to skip.
-  for (let index = 0; index < options.pages.length; index++) checkPage(options.pages[index], index);
+  for (let index = 0; index < options.pages.length; index++) checkPage(options.pages[index], index, options.pages.length);
   if (options.startPage !== undefined && options.startPage >= options.pages.length) {
     throw new TypeError(`conecurl: option 'startPage' must be below the page count ${options.pages.length}, got ${options.startPage}`);
   }
   return { ...DEFAULTS, ...options };
 }
 
-/** The page entries of checked options: every page as { src, alt?, hard? }. */
+/**
+ * The page entries of checked options: every page as { src, alt?, hard?, zoomSrc?, links? }, links
+ * in one form { rect, href, toPage, title }. Entries without links stay the objects given (a PDF's
+ * fill in their alt and links as their pages render).
+ */
 export function pageEntries(pages) {
-  return pages.map((page) => (isPlainEntry(page) ? page : { src: page }));
+  return pages.map((page) => {
+    if (!isPlainEntry(page)) return { src: page };
+    if (!page.links) return page;
+    return { ...page, links: page.links.map((l) => ({ rect: l.rect, href: l.href ?? '#', toPage: l.page, title: l.title })) };
+  });
 }
 
 /** `flip(index, options)`'s second argument: nothing, or { animate: boolean }. */

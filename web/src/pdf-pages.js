@@ -72,8 +72,42 @@ async function renderPage(doc, number, size, entry) {
       const words = text.items.map((item) => item.str || '').join(' ').replace(/\s+/g, ' ').trim();
       entry.alt = words ? `Page ${number}: ${words}` : `Page ${number}`;
     }
+    if (!entry.links) {
+      try {
+        entry.links = await pageLinks(doc, page, base);
+      } catch {
+        entry.links = [];  // links are a bonus: a page whose annotations pdf.js cannot read still shows
+      }
+    }
     return canvas;
   } finally {
     page.cleanup();
   }
+}
+
+/** The page's link annotations as { rect (fractions of the page, from its top-left), href | toPage }. */
+async function pageLinks(doc, page, viewport) {
+  const links = [];
+  for (const annotation of await page.getAnnotations()) {
+    if (annotation.subtype !== 'Link' || !annotation.rect) continue;
+    const [x1, y1] = viewport.convertToViewportPoint(annotation.rect[0], annotation.rect[1]);
+    const [x2, y2] = viewport.convertToViewportPoint(annotation.rect[2], annotation.rect[3]);
+    const rect = [Math.min(x1, x2) / viewport.width, Math.min(y1, y2) / viewport.height,
+      Math.abs(x2 - x1) / viewport.width, Math.abs(y2 - y1) / viewport.height];
+    const href = annotation.url || annotation.unsafeUrl;
+    if (href) {
+      links.push({ rect, href });
+      continue;
+    }
+    try {
+      const dest = typeof annotation.dest === 'string' ? await doc.getDestination(annotation.dest) : annotation.dest;
+      if (Array.isArray(dest) && dest[0]) {
+        const toPage = typeof dest[0] === 'number' ? dest[0] : await doc.getPageIndex(dest[0]);
+        links.push({ rect, href: '#', toPage });
+      }
+    } catch {
+      // A destination pdf.js cannot resolve is left out, not guessed.
+    }
+  }
+  return links;
 }

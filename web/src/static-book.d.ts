@@ -4,8 +4,9 @@ import type { FlipbookEventMap, FlipbookOptions } from './flipbook.js';
 /**
  * The open pages as still images on a 2D canvas: what Flipbook.create leaves in the container when
  * WebGL2 or the engine is unavailable (the rejection's `fallback`), or a book of its own. The same
- * options, members, keys, clicks, taps, swipes, events (no `turncancel`: nothing is dragged) and
- * screen-reader support as Flipbook; turns cut straight to the next spread.
+ * options, members, keys, clicks, taps, swipes, links, events (no `turncancel`, `zoom` or `sharpened`:
+ * nothing is dragged or magnified) and screen-reader support as Flipbook; turns cut straight to the
+ * next spread.
  */
 export class StaticBook extends EventTarget {
   /** Rejects with a TypeError naming a bad option; resolves once the open pages loaded or failed. */
@@ -14,6 +15,11 @@ export class StaticBook extends EventTarget {
   readonly page: number;
   readonly display: 'single' | 'double';
   readonly element: HTMLElement;
+  /**
+   * Always 1: still pages are not magnified by the book (the browser's pinch-zoom works on them).
+   * Setting it checks the value (RangeError outside 1..4) and changes nothing.
+   */
+  zoom: number;
   /** True when it turned (at once), false at the end of the book. Rejects after destroy(). */
   next(): Promise<boolean>;
   prev(): Promise<boolean>;

@@ -2,6 +2,7 @@
 // canvas, turned by the same methods, keys, clicks, taps and swipes, with the same events and the same
 // screen-reader support as Flipbook, so a page that embeds a book never shows an empty box.
 import { actionForKey, createShell } from './book-shell.js';
+import { createLinkLayer } from './link-layer.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries, validateOptions } from './options.js';
 import { loadPage } from './page-loader.js';
 import { pagesToRelease, textureCapacity, wantedPages } from './page-residency.js';
@@ -13,6 +14,7 @@ const FRAME_MARGIN = 1.3;            // room around the pages, as the WebGL book
 const AUTO_DOUBLE_ASPECT = 1.2;      // as Flipbook: wider containers show two pages in 'auto'
 const SWIPE_DOMINANCE = 1.5;
 const IMAGE_OVERSAMPLE = 1.5;        // the size a page function is asked for, per device pixel on screen
+const MAX_ZOOM = 4;                  // Flipbook's range, checked the same way
 
 // ---- where the book is: the engine Book's positions, in JS so the fallback needs no wasm -------------
 
@@ -86,6 +88,9 @@ export class StaticBook extends EventTarget {
     this._destroyed = false;
     this._shell = createShell(container, { label: settings.label, direction: settings.direction });
     this._canvas = this._shell.canvas;
+    // The still pages do not zoom themselves: pinch-zoom stays the browser's.
+    this._canvas.style.touchAction = settings.direction === 'vertical' ? 'pan-x pinch-zoom' : 'pan-y pinch-zoom';
+    this._links = createLinkLayer(this._shell.root, (link, event) => this._onLink(link, event));
     this._display = 'double';
     this._position = 0;
   }
@@ -96,6 +101,18 @@ export class StaticBook extends EventTarget {
   get display() { return this._display; }
   /** The focusable element the book made in its container (holds the canvas). */
   get element() { return this._shell.root; }
+
+  /**
+   * Always 1: still pages are not magnified by the book (the browser's pinch-zoom works on them).
+   * Setting it checks the value like Flipbook (RangeError outside 1..4) and changes nothing.
+   */
+  get zoom() { return 1; }
+  set zoom(scale) {
+    this._alive();
+    if (!(Number.isFinite(scale) && scale >= 1 && scale <= MAX_ZOOM)) {
+      throw new RangeError(`conecurl: zoom must be a number from 1 to ${MAX_ZOOM}, got ${String(scale)}`);
+    }
+  }
 
   /** Shows the next spread at once (there is no curl to animate); false at the end. */
   next() { return this._turn('forward'); }
@@ -138,6 +155,7 @@ export class StaticBook extends EventTarget {
     this._pdf?.destroy();
     this._pdf = null;
     for (const index of [...this._images.keys()]) this._drop(index);
+    this._links.remove();
     this._shell.remove();
     for (const resolve of this._idleWaiters.splice(0)) resolve();
   }
@@ -255,6 +273,18 @@ export class StaticBook extends EventTarget {
       const kept = this._images.get(slot.page);
       if (kept) context.drawImage(kept.image, slot.x, slot.y, slot.width, slot.height);
     }
+    // Links of the open pages, as anchors over them (the same layer as Flipbook's).
+    const placed = this._slots().filter((slot) => slot.page >= 0 && this._pages[slot.page].links?.length)
+      .map(({ page, x, y, width, height }) => ({ page, rect: { x, y, width, height }, links: this._pages[page].links }));
+    if (placed.length > 0) this._links.show(placed);
+    else this._links.hide();
+  }
+
+  _onLink(link, event) {
+    const detail = { page: link.page, href: link.href, toPage: link.toPage };
+    const proceed = this.dispatchEvent(new CustomEvent('link', { detail, cancelable: true }));
+    if (link.toPage !== undefined || !proceed) event.preventDefault();
+    if (proceed && link.toPage !== undefined) this.flip(link.toPage).catch(() => {});
   }
 
   // ---- loading: the open pages, then their neighbours, a bounded number kept ---------------------

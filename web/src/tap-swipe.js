@@ -43,7 +43,7 @@ export function listenForTapsAndSwipes(element, { tap, swipe }) {
     // Touch and pen taps were handled at pointerup; their click follows (Safari's without a pointerType).
     if (event.pointerType === 'touch' || event.pointerType === 'pen') return;
     if (event.timeStamp - lastTouchUp < CLICK_AFTER_TOUCH_MS) return;
-    tap(event.clientX, event.clientY);
+    tap(event.clientX, event.clientY, 'click');
   };
 
   element.addEventListener('pointerdown', onPointerDown);
