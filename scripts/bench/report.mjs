@@ -1,0 +1,274 @@
+// Turns the raw runs of `npm run bench` into the summary (medians with ranges, conecurl/peer ratios
+// from the same repetition, the issue's targets), a Markdown table and an SVG chart of frame intervals.
+import { summarize } from './metrics.mjs';
+
+export const LIBRARY_NAMES = { conecurl: 'conecurl', 'page-flip': 'page-flip 2.0.7', turnjs: 'turn.js 1.0.5 + jQuery 1.12.0' };
+const PEERS = ['page-flip', 'turnjs'];
+const MB = 1024 * 1024;
+
+const maxTextures = (r) => Math.max(...(r.turnStats || []).map((s) => s.pageTextures ?? NaN), r.stats.pageTextures ?? NaN);
+
+// Scalar figures per run, lower is better for all of them. [key, label, unit, decimals, from result]
+export const METRICS = [
+  ['firstFrameMs', 'navigation to first rendered book', 'ms', 0, (r) => r.firstFrameMs],
+  ['turnSeconds', 'wall time per turn (animation set to the same duration)', 's', 2, (r) => r.turnSeconds / r.turns.length],
+  ['frameMedianMs', 'frame interval, median', 'ms', 1, (r) => summarize(r.intervals).median],
+  ['frameP95Ms', 'frame interval, p95', 'ms', 1, (r) => summarize(r.intervals).p95],
+  ['frameMaxMs', 'frame interval, max', 'ms', 1, (r) => summarize(r.intervals).max],
+  ['maxOverMedian', 'max / median frame interval', 'x', 2, (r) => summarize(r.intervals).max / summarize(r.intervals).median],
+  ['framesOver20', 'frames over 20 ms', '', 0, (r) => r.intervals.filter((i) => i > 20).length],
+  ['frames', 'frames during the turns', '', 0, (r) => r.frames],
+  ['mainThreadMsPerFrame', 'main-thread busy per frame (TaskDuration, wall time of tasks)', 'ms', 2, (r) => r.perFrame.mainThreadMs],
+  ['rendererCpuMsPerFrame', 'renderer process CPU per frame', 'ms', 2, (r) => r.perFrame.rendererCpuMs],
+  ['gpuCpuMsPerFrame', 'GPU process CPU per frame', 'ms', 1, (r) => r.perFrame.gpuCpuMs],
+  ['idleCpuPercent', 'idle CPU, renderer + GPU (% of a core)', '', 1, (r) => r.idle.totalCpuPercent],
+  ['idleMainThreadPercent', 'idle main-thread busy (% of the time)', '', 2, (r) => r.idle.mainThreadPercent],
+  ['jsHeapMB', 'JS heap after GC', 'MB', 2, (r) => r.memory.jsHeapBytes / MB],
+  ['rendererPssMB', 'renderer process memory (PSS)', 'MB', 0, (r) => (r.memory.rendererPssBytes ?? NaN) / MB],
+  ['gpuPssMB', 'GPU process memory (PSS)', 'MB', 0, (r) => (r.memory.gpuPssBytes ?? NaN) / MB],
+  ['wasmHeapMB', 'wasm heap (conecurl)', 'MB', 1, (r) => (r.stats.wasmHeapBytes ?? NaN) / MB],
+  ['pageTextures', 'page textures resident after the turns (conecurl)', '', 0, (r) => r.stats.pageTextures ?? NaN],
+  ['pageTexturesMax', 'page textures resident, most after any turn (conecurl)', '', 0, (r) => maxTextures(r)],
+];
+// Ratios conecurl / peer are shown for these (the others are counts or conecurl-only).
+const RATIO_METRICS = ['firstFrameMs', 'turnSeconds', 'frameMedianMs', 'frameP95Ms', 'frameMaxMs', 'mainThreadMsPerFrame',
+  'rendererCpuMsPerFrame', 'gpuCpuMsPerFrame', 'idleCpuPercent', 'jsHeapMB', 'rendererPssMB', 'gpuPssMB'];
+
+const range = (values) => {
+  const finite = values.filter(Number.isFinite);
+  if (finite.length === 0) return null;
+  const s = summarize(finite);
+  return { median: s.median, min: s.min, max: s.max, n: finite.length };
+};
+
+/** Medians and ranges per configuration and library, ratios from the same repetition, targets. */
+export function summarizeRuns(runs, configs, loadBytes) {
+  const summary = {};
+  const ratios = {};
+  for (const config of configs) {
+    summary[config.id] = {};
+    ratios[config.id] = {};
+    const ok = runs.filter((r) => r.config === config.id && r.result);
+    for (const lib of Object.keys(LIBRARY_NAMES)) {
+      const mine = ok.filter((r) => r.lib === lib);
+      summary[config.id][lib] = Object.fromEntries(METRICS.map(([key, , , , get]) => [key, range(mine.map((r) => get(r.result)))]));
+      summary[config.id][lib].failed = runs.filter((r) => r.config === config.id && r.lib === lib && r.error).length;
+    }
+    const reps = [...new Set(ok.map((r) => r.rep))];
+    for (const [key, , , , get] of METRICS.filter(([key]) => RATIO_METRICS.includes(key))) {
+      const perPeer = { bestPeer: [] };
+      for (const peer of PEERS) perPeer[peer] = [];
+      for (const rep of reps) {
+        const value = (lib) => { const run = ok.find((r) => r.rep === rep && r.lib === lib); return run ? get(run.result) : NaN; };
+        const mine = value('conecurl');
+        const peerValues = PEERS.map(value);
+        PEERS.forEach((peer, i) => perPeer[peer].push(mine / peerValues[i]));
+        const finitePeers = peerValues.filter(Number.isFinite);
+        perPeer.bestPeer.push(finitePeers.length ? mine / Math.min(...finitePeers) : NaN);
+      }
+      ratios[config.id][key] = Object.fromEntries(Object.entries(perPeer).map(([k, v]) => [k, range(v)]));
+    }
+  }
+  return { summary, ratios, targets: evaluateTargets(runs, configs, summary, ratios, loadBytes) };
+}
+
+function evaluateTargets(runs, configs, summary, ratios, loadBytes) {
+  const targets = [];
+  const perConfig = (metric, pick) => configs.map((c) => ({ config: c.id, value: pick(c) }));
+  const add = (id, name, limit, values, holds, note = '') => targets.push({ id, name, limit, values, holds, note });
+
+  const ratioValues = (metric) => perConfig(metric, (c) => ratios[c.id][metric]?.bestPeer?.median ?? NaN);
+  const mainRatios = ratioValues('mainThreadMsPerFrame');
+  add('main-thread', 'main-thread time per turning frame, conecurl / best peer', '<= 0.5x', mainRatios,
+    mainRatios.every((v) => v.value <= 0.5));
+  const gpuRatios = ratioValues('gpuCpuMsPerFrame');
+  add('gpu', 'GPU-process CPU per frame, conecurl / best peer', '<= 0.8x', gpuRatios, gpuRatios.every((v) => v.value <= 0.8));
+  const idle = perConfig('idleCpuPercent', (c) => summary[c.id].conecurl.idleCpuPercent?.median ?? NaN);
+  add('idle', 'idle CPU of conecurl, renderer + GPU process', '<= 2% of a core', idle, idle.every((v) => v.value <= 2));
+  // Worst run, not the median: the target says no interval at all.
+  const spikes = perConfig('maxOverMedian', (c) => summary[c.id].conecurl.maxOverMedian?.max ?? NaN);
+  add('smooth', 'longest frame interval / median during the turns (worst run)', '<= 2x', spikes, spikes.every((v) => v.value <= 2));
+  const bytes = loadBytes?.conecurl?.totalGzip ?? NaN;
+  add('bytes', 'load bytes of conecurl, wasm + JS, gzip -9', '<= 30 KB', [{ config: 'all', value: bytes / 1024 }], bytes <= 30 * 1024,
+    loadBytes?.conecurl ? `JS ${(loadBytes.conecurl.jsGzip / 1024).toFixed(1)} KB + wasm ${(loadBytes.conecurl.wasmGzip / 1024).toFixed(1)} KB` : '');
+
+  for (const display of ['double', 'single']) {
+    const small = configs.find((c) => c.display === display && c.pages === 20);
+    const large = configs.find((c) => c.display === display && c.pages === 1000);
+    if (!small || !large) continue;
+    const pairs = [...new Set(runs.map((r) => r.rep))].map((rep) => {
+      const find = (c) => runs.find((r) => r.rep === rep && r.config === c.id && r.lib === 'conecurl' && r.result)?.result;
+      return [find(small), find(large)];
+    }).filter(([a, b]) => a && b);
+    const firstRatio = range(pairs.map(([a, b]) => b.firstFrameMs / a.firstFrameMs));
+    add(`first-frame-${display}`, `first frame, 1000 pages / 20 pages (${display})`, '<= 1.5x',
+      [{ config: `${large.id} / ${small.id}`, value: firstRatio?.median ?? NaN }], (firstRatio?.median ?? Infinity) <= 1.5);
+    // The most resident after any turn: after the 10th turn the 20-page book is at its end, where
+    // the load window is cut short, so the count there says nothing about page count.
+    const textures = pairs.map(([a, b]) => [maxTextures(a), maxTextures(b)]);
+    add(`textures-${display}`, `page textures resident (most after any turn), 20 vs 1000 pages (${display})`, 'equal',
+      [{ config: `${small.id} vs ${large.id}`, value: textures.map(([a, b]) => `${a} vs ${b}`).join(', ') }],
+      textures.length > 0 && textures.every(([a, b]) => a === b));
+  }
+  return targets;
+}
+
+const fmt = (value, decimals) => (Number.isFinite(value) ? value.toFixed(decimals) : '–');
+const cell = (r, decimals) => (r ? (r.n > 1 && r.min !== r.max ? `${fmt(r.median, decimals)} (${fmt(r.min, decimals)}–${fmt(r.max, decimals)})` : fmt(r.median, decimals)) : '–');
+
+/** The Markdown report: setting, targets, then one table per configuration. */
+export function markdown({ meta, loadBytes, summary, ratios, targets, configs }) {
+  const lines = [];
+  lines.push(`# conecurl benchmark`);
+  lines.push('');
+  lines.push(`${meta.date} · ${meta.chromium} (SwiftShader WebGL2, headless) · ${meta.cpus} CPUs · ${meta.reps} repetitions in fresh browsers, order alternated · `
+    + `${meta.turns} turns of ${meta.turnDurationMs} ms animation · idle ${meta.idleMs / 1000} s · run took ${Math.round(meta.wallSeconds)} s`);
+  lines.push('');
+  lines.push(`Load average (1/5/15 min): start ${meta.loadavgStart.map((v) => v.toFixed(2)).join(' / ')}, `
+    + `end ${meta.loadavgEnd.map((v) => v.toFixed(2)).join(' / ')} — the machine is shared, so absolute times vary from run to run; `
+    + 'ratios come from the same repetition.');
+  lines.push('');
+  lines.push('Cells: median over repetitions (range). Ratios: conecurl / peer in the same repetition, median (range).');
+  lines.push('');
+  lines.push('## Targets');
+  lines.push('');
+  lines.push('| target | limit | measured | holds |');
+  lines.push('|---|---|---|---|');
+  for (const t of targets) {
+    const measured = t.values.map((v) => `${v.config}: ${typeof v.value === 'number' ? fmt(v.value, 2) : v.value}`).join('; ');
+    lines.push(`| ${t.name} | ${t.limit} | ${measured}${t.note ? ` (${t.note})` : ''} | ${t.holds ? 'yes' : '**no**'} |`);
+  }
+  lines.push('');
+  lines.push('## Load bytes (Vite production build of each library alone, minified)');
+  lines.push('');
+  lines.push('| library | JS min | JS gzip -9 | wasm | wasm gzip -9 | total gzip -9 |');
+  lines.push('|---|---|---|---|---|---|');
+  for (const [lib, b] of Object.entries(loadBytes)) {
+    const kb = (v) => `${(v / 1024).toFixed(1)} KB`;
+    lines.push(`| ${LIBRARY_NAMES[lib]} | ${kb(b.js)} | ${kb(b.jsGzip)} | ${b.wasm ? kb(b.wasm) : '–'} | ${b.wasm ? kb(b.wasmGzip) : '–'} | **${kb(b.totalGzip)}** |`);
+  }
+  for (const config of configs) {
+    lines.push('');
+    lines.push(`## ${config.label}`);
+    lines.push('');
+    lines.push(`| metric | conecurl | page-flip | turn.js | conecurl / page-flip | conecurl / turn.js |`);
+    lines.push('|---|---|---|---|---|---|');
+    for (const [key, label, unit, decimals] of METRICS) {
+      const s = summary[config.id];
+      const r = ratios[config.id][key];
+      const name = unit && unit !== 'x' ? `${label} (${unit})` : label;
+      lines.push(`| ${name} | ${cell(s.conecurl[key], decimals)} | ${cell(s['page-flip'][key], decimals)} | ${cell(s.turnjs[key], decimals)} | `
+        + `${r ? cell(r['page-flip'], 2) : ''} | ${r ? cell(r.turnjs, 2) : ''} |`);
+    }
+    const failed = Object.entries(summary[config.id]).filter(([, s]) => s.failed).map(([lib, s]) => `${lib}: ${s.failed}`);
+    if (failed.length) lines.push(`\nFailed runs (see the JSON for the errors): ${failed.join(', ')}`);
+  }
+  lines.push('');
+  return lines.join('\n');
+}
+
+// The README's short version: one row per configuration and library, then the targets.
+const README_COLUMNS = [
+  ['firstFrameMs', 'first frame ms', 0], ['turnSeconds', 's / turn', 2], ['frameMedianMs', 'frame median ms', 0],
+  ['frameP95Ms', 'p95 ms', 0], ['maxOverMedian', 'max / median', 1], ['mainThreadMsPerFrame', 'main ms / frame', 1],
+  ['gpuCpuMsPerFrame', 'GPU ms / frame', 0], ['idleCpuPercent', 'idle CPU %', 1], ['jsHeapMB', 'JS heap MB', 1],
+  ['rendererPssMB', 'renderer MB', 0],
+];
+
+export function readmeTables({ meta, loadBytes, summary, targets, configs }) {
+  const lines = [];
+  lines.push(`Run of ${meta.date.slice(0, 10)}: ${meta.reps} repetitions, ${meta.turns} turns of ${meta.turnDurationMs} ms, ${meta.cpus} CPUs, `
+    + `load average ${meta.loadavgStart[0].toFixed(1)} at the start and ${meta.loadavgEnd[0].toFixed(1)} at the end, ${Math.round(meta.wallSeconds / 60)} min. `
+    + 'Medians over the repetitions; full tables with ranges and ratios in [docs/bench/latest.md](docs/bench/latest.md).');
+  lines.push('');
+  lines.push(`| configuration | library | ${README_COLUMNS.map(([, label]) => label).join(' | ')} |`);
+  lines.push(`|---|---|${README_COLUMNS.map(() => '---').join('|')}|`);
+  for (const config of configs) {
+    for (const lib of Object.keys(LIBRARY_NAMES)) {
+      const s = summary[config.id][lib];
+      lines.push(`| ${config.id} | ${lib} | ${README_COLUMNS.map(([key, , d]) => fmt(s[key]?.median, d)).join(' | ')} |`);
+    }
+  }
+  lines.push('');
+  lines.push(`Load bytes, gzip -9: ${Object.entries(loadBytes).map(([lib, b]) => `${lib} ${(b.totalGzip / 1024).toFixed(1)} KB`).join(', ')}.`);
+  lines.push('');
+  lines.push('| target | limit | measured | holds |');
+  lines.push('|---|---|---|---|');
+  for (const t of targets) {
+    const measured = t.values.map((v) => `${v.config}: ${typeof v.value === 'number' ? fmt(v.value, 2) : v.value}`).join('; ');
+    lines.push(`| ${t.name} | ${t.limit} | ${measured} | ${t.holds ? 'yes' : '**no**'} |`);
+  }
+  return lines.join('\n');
+}
+
+const COLORS = { conecurl: '#d6336c', 'page-flip': '#1c7ed6', turnjs: '#37b24d' };
+
+/** An SVG of the rAF frame intervals over the turns, one panel per configuration, log-scale ms (median repetition). */
+export function frameChart(runs, configs) {
+  const panelW = 520;
+  const panelH = 230;
+  const margin = { left: 52, right: 12, top: 28, bottom: 34 };
+  const cols = 2;
+  const rows = Math.ceil(configs.length / cols);
+  const width = cols * panelW;
+  const height = rows * panelH + 30;
+  const yTicks = [10, 20, 50, 100, 200, 500, 1000, 2000, 5000];
+  const yOf = (ms) => { const v = Math.log10(Math.min(Math.max(ms, 10), 5000)); return (1 - (v - 1) / (Math.log10(5000) - 1)); };
+  // x: turn number, each turn stretched to the same width, so libraries whose turns last different
+  // wall times line up turn by turn.
+  const turnPosition = (turns, t) => {
+    for (let k = 0; k < turns.length; k++) {
+      const { start, end } = turns[k];
+      if (t <= end || k === turns.length - 1) return k + Math.min(1, Math.max(0, (t - start) / Math.max(1, end - start)));
+    }
+    return 0;
+  };
+  const parts = [`<svg xmlns="http://www.w3.org/2000/svg" width="${width}" height="${height}" viewBox="0 0 ${width} ${height}" font-family="DejaVu Sans, sans-serif" font-size="11">`,
+    `<rect width="100%" height="100%" fill="#fff"/>`];
+  configs.forEach((config, index) => {
+    const x0 = (index % cols) * panelW;
+    const y0 = Math.floor(index / cols) * panelH;
+    const w = panelW - margin.left - margin.right;
+    const h = panelH - margin.top - margin.bottom;
+    const ox = x0 + margin.left;
+    const oy = y0 + margin.top;
+    // The repetition whose median frame interval is the median, per library.
+    const chosen = Object.keys(LIBRARY_NAMES).map((lib) => {
+      const mine = runs.filter((r) => r.config === config.id && r.lib === lib && r.result)
+        .sort((a, b) => summarize(a.result.intervals).median - summarize(b.result.intervals).median);
+      return mine.length ? { lib, run: mine[Math.floor((mine.length - 1) / 2)] } : null;
+    }).filter(Boolean);
+    const turnCount = Math.max(1, ...chosen.map(({ run }) => run.result.turns.length));
+    parts.push(`<text x="${ox}" y="${y0 + 18}" font-weight="bold">${config.label}</text>`);
+    for (const t of yTicks) {
+      const y = oy + h * yOf(t);
+      parts.push(`<line x1="${ox}" x2="${ox + w}" y1="${y}" y2="${y}" stroke="${t === 20 ? '#999' : '#eee'}" ${t === 20 ? 'stroke-dasharray="4 3"' : ''}/>`);
+      parts.push(`<text x="${ox - 6}" y="${y + 4}" text-anchor="end" fill="#555">${t}</text>`);
+    }
+    for (let k = 0; k <= turnCount; k++) {
+      const x = ox + (w * k) / turnCount;
+      if (k > 0 && k < turnCount) parts.push(`<line x1="${x}" x2="${x}" y1="${oy}" y2="${oy + h}" stroke="#f3f3f3"/>`);
+      parts.push(`<text x="${x}" y="${oy + h + 16}" text-anchor="middle" fill="#555">${k}</text>`);
+    }
+    parts.push(`<text x="${ox + w / 2}" y="${oy + h + 30}" text-anchor="middle" fill="#555">turns (each stretched to the same width)</text>`);
+    parts.push(`<text transform="translate(${x0 + 14} ${oy + h / 2}) rotate(-90)" text-anchor="middle" fill="#555">frame interval (ms)</text>`);
+    parts.push(`<rect x="${ox}" y="${oy}" width="${w}" height="${h}" fill="none" stroke="#ccc"/>`);
+    for (const { lib, run } of chosen) {
+      let t = 0;
+      const points = run.result.intervals.map((ms) => {
+        t += ms;
+        const x = ox + (w * turnPosition(run.result.turns, t)) / turnCount;
+        return `${x.toFixed(1)},${(oy + h * yOf(ms)).toFixed(1)}`;
+      });
+      parts.push(`<polyline fill="none" stroke="${COLORS[lib]}" stroke-width="1.3" points="${points.join(' ')}"/>`);
+    }
+  });
+  let lx = 12;
+  for (const [lib, name] of Object.entries(LIBRARY_NAMES)) {
+    parts.push(`<rect x="${lx}" y="${height - 20}" width="14" height="4" fill="${COLORS[lib]}"/><text x="${lx + 20}" y="${height - 14}">${name}</text>`);
+    lx += 40 + name.length * 7;
+  }
+  parts.push(`<text x="${width - 12}" y="${height - 14}" text-anchor="end" fill="#555">dashed: 20 ms</text>`);
+  parts.push('</svg>');
+  return parts.join('\n');
+}

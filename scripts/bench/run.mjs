@@ -1,0 +1,192 @@
+// `npm run bench`: conecurl against page-flip and turn.js in one run, in headless Chromium on this
+// machine. Generates the page images, bundles the libraries, measures every library x configuration
+// x repetition in a fresh browser (order alternated), then writes JSON, Markdown and an SVG chart.
+// Usage: node scripts/bench/run.mjs [--reps 3] [--configs double-20,single-1000] [--libs conecurl,turnjs]
+//        [--duration 600] [--turns 10] [--port 8095] [--out bench-results] [--publish]
+import { spawn } from 'node:child_process';
+import fs from 'node:fs';
+import http from 'node:http';
+import os from 'node:os';
+import path from 'node:path';
+import { chromium } from '@playwright/test';
+import { bundleLibraries, LIBRARIES } from './bundle.mjs';
+import { CHROMIUM_ARGS, measureOnce } from './measure.mjs';
+import { summarize } from './metrics.mjs';
+import { writePageImages } from './page-images.mjs';
+import { frameChart, markdown, readmeTables, summarizeRuns } from './report.mjs';
+
+const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
+const CONFIGS = [
+  { id: 'double-20', display: 'double', pages: 20, viewport: { width: 1600, height: 1100 }, label: 'Two-page spread, 1600x1100, 20 pages' },
+  { id: 'double-1000', display: 'double', pages: 1000, viewport: { width: 1600, height: 1100 }, label: 'Two-page spread, 1600x1100, 1000 pages' },
+  { id: 'single-20', display: 'single', pages: 20, viewport: { width: 800, height: 1100 }, label: 'Single page, 800x1100, 20 pages' },
+  { id: 'single-1000', display: 'single', pages: 1000, viewport: { width: 800, height: 1100 }, label: 'Single page, 800x1100, 1000 pages' },
+];
+
+function parseArgs(argv) {
+  const options = {
+    reps: 3, configs: CONFIGS.map((c) => c.id), libs: [...LIBRARIES], duration: 600, turns: 10, idleMs: 2000,
+    port: Number(process.env.CONECURL_BENCH_PORT) || 8095, out: 'bench-results', publish: false,
+  };
+  for (let i = 0; i < argv.length; i++) {
+    const name = argv[i];
+    const value = () => {
+      if (i + 1 >= argv.length) throw new Error(`bench: ${name} needs a value`);
+      return argv[++i];
+    };
+    const count = (v, min) => {
+      const n = Number(v);
+      if (!Number.isInteger(n) || n < min) throw new Error(`bench: ${name} must be a whole number from ${min}, got ${v}`);
+      return n;
+    };
+    if (name === '--reps') options.reps = count(value(), 1);
+    else if (name === '--turns') options.turns = count(value(), 1);
+    else if (name === '--duration') options.duration = count(value(), 100);
+    else if (name === '--port') options.port = count(value(), 1);
+    else if (name === '--out') options.out = value();
+    else if (name === '--publish') options.publish = true;
+    else if (name === '--configs' || name === '--libs') {
+      const list = value().split(',');
+      const known = name === '--configs' ? CONFIGS.map((c) => c.id) : LIBRARIES;
+      const unknown = list.filter((v) => !known.includes(v));
+      if (unknown.length) throw new Error(`bench: unknown ${name.slice(2)} ${unknown.join(', ')} (known: ${known.join(', ')})`);
+      options[name.slice(2)] = list;
+    } else throw new Error(`bench: unknown argument ${name}`);
+  }
+  const full = options.reps >= 3 && options.configs.length === CONFIGS.length && options.libs.length === LIBRARIES.length;
+  if (options.publish && !full) throw new Error('bench: --publish needs the full run (all configurations and libraries, 3+ repetitions)');
+  return options;
+}
+
+async function startServer(port) {
+  const server = spawn(process.execPath, [path.join(root, 'scripts/serve.mjs'), '--port', String(port)], { stdio: ['ignore', 'ignore', 'pipe'] });
+  let stderr = '';
+  server.stderr.on('data', (d) => { stderr += d; });
+  const up = () => new Promise((resolve) => {
+    http.get(`http://127.0.0.1:${port}/scripts/bench/harness.html`, (res) => { res.resume(); resolve(res.statusCode === 200); })
+      .on('error', () => resolve(false));
+  });
+  for (let i = 0; i < 50; i++) {
+    if (server.exitCode !== null) throw new Error(`bench: the server on port ${port} exited (${stderr.trim() || 'port in use?'})`);
+    if (await up()) return server;
+    await new Promise((resolve) => setTimeout(resolve, 100));
+  }
+  server.kill();
+  throw new Error(`bench: the server on port ${port} did not answer`);
+}
+
+async function chromiumVersion() {
+  const browser = await chromium.launch({ executablePath: process.env.CHROMIUM_PATH || '/usr/bin/chromium', args: CHROMIUM_ARGS });
+  const version = browser.version();
+  await browser.close();
+  return `Chromium ${version}`;
+}
+
+// The README's "Benchmark" section holds the latest short table between these markers.
+const README_START = '<!-- bench:latest:start -->';
+const README_END = '<!-- bench:latest:end -->';
+
+function publishToReadme(tables) {
+  const readme = path.join(root, 'README.md');
+  const text = fs.readFileSync(readme, 'utf8');
+  const start = text.indexOf(README_START);
+  const end = text.indexOf(README_END);
+  if (start < 0 || end < start) throw new Error(`bench: README.md has no ${README_START} ... ${README_END} block to update`);
+  fs.writeFileSync(readme, `${text.slice(0, start + README_START.length)}\n${tables}\n${text.slice(end)}`);
+}
+
+async function main() {
+  const options = parseArgs(process.argv.slice(2));
+  const out = path.resolve(root, options.out);
+  if (!out.startsWith(root + path.sep)) throw new Error(`bench: --out must be inside the repository (it is served to the pages), got ${out}`);
+  const wasm = path.join(root, 'dist/conecurl-engine.wasm');
+  if (!fs.existsSync(wasm)) throw new Error('bench: dist/conecurl-engine.wasm is missing; run `npm run build` (npm run bench does)');
+  const started = Date.now();
+  const loadavgStart = os.loadavg();
+  const configs = CONFIGS.filter((c) => options.configs.includes(c.id));
+  const maxPages = Math.max(...configs.map((c) => c.pages));
+
+  const images = writePageImages(path.join(out, 'pages'), maxPages);
+  console.log(`bench: ${maxPages} page images ready (${images.written} written)`);
+  const loadBytes = await bundleLibraries(path.join(out, 'bundles'));
+  console.log('bench: libraries bundled');
+  const server = await startServer(options.port);
+  const chromiumName = await chromiumVersion();
+  const base = `http://127.0.0.1:${options.port}`;
+  const relative = (dir) => `/${path.relative(root, dir).split(path.sep).join('/')}`;
+
+  const plan = [];
+  for (let rep = 0; rep < options.reps; rep++) {
+    configs.forEach((config, c) => {
+      const order = (rep + c) % 2 === 0 ? options.libs : [...options.libs].reverse();
+      order.forEach((lib) => plan.push({ rep: rep + 1, config, lib }));
+    });
+  }
+  console.log(`bench: ${plan.length} measurements (${options.reps} repetitions x ${configs.length} configurations x ${options.libs.length} libraries)`);
+
+  const runs = [];
+  try {
+    for (const [index, { rep, config, lib }] of plan.entries()) {
+      const query = new URLSearchParams({
+        lib, pages: String(config.pages), display: config.display, duration: String(options.duration),
+        bundles: relative(path.join(out, 'bundles')), images: relative(path.join(out, 'pages')),
+      });
+      const url = `${base}/scripts/bench/harness.html?${query}`;
+      const t0 = Date.now();
+      const run = { rep, config: config.id, lib, loadavg: os.loadavg()[0] };
+      try {
+        run.result = await measureOnce({ url, viewport: config.viewport, turns: options.turns, turnTimeoutMs: 30000, idleMs: options.idleMs });
+        const f = summarize(run.result.intervals);
+        console.log(`[${index + 1}/${plan.length}] rep ${rep} ${config.id} ${lib}: first frame ${run.result.firstFrameMs.toFixed(0)} ms, `
+          + `frame median ${f.median.toFixed(0)} ms, max ${f.max.toFixed(0)} ms, main ${run.result.perFrame.mainThreadMs.toFixed(1)} ms/frame, `
+          + `GPU ${run.result.perFrame.gpuCpuMs.toFixed(0)} ms/frame, idle ${run.result.idle.totalCpuPercent.toFixed(1)}% (${((Date.now() - t0) / 1000).toFixed(0)} s)`);
+      } catch (error) {
+        run.error = String(error && error.message ? error.message : error).split('\n')[0];
+        console.log(`[${index + 1}/${plan.length}] rep ${rep} ${config.id} ${lib}: FAILED ${run.error}`);
+      }
+      runs.push(run);
+    }
+  } finally {
+    server.kill();
+  }
+
+  const meta = {
+    date: new Date().toISOString().replace(/\.\d+Z$/, 'Z'),
+    chromium: chromiumName,
+    node: process.version,
+    cpus: os.cpus().length,
+    cpuModel: os.cpus()[0]?.model,
+    loadavgStart,
+    loadavgEnd: os.loadavg(),
+    reps: options.reps,
+    turns: options.turns,
+    turnDurationMs: options.duration,
+    idleMs: options.idleMs,
+    wallSeconds: (Date.now() - started) / 1000,
+  };
+  const { summary, ratios, targets } = summarizeRuns(runs, configs, loadBytes);
+  const report = { meta, configs, loadBytes, targets, summary, ratios, runs };
+  const md = markdown({ meta, loadBytes, summary, ratios, targets, configs });
+  fs.mkdirSync(out, { recursive: true });
+  fs.writeFileSync(path.join(out, 'latest.json'), `${JSON.stringify(report, null, 1)}\n`);
+  fs.writeFileSync(path.join(out, 'latest.md'), md);
+  fs.writeFileSync(path.join(out, 'frame-intervals.svg'), frameChart(runs, configs));
+  if (options.publish) {
+    const docs = path.join(root, 'docs/bench');
+    fs.mkdirSync(docs, { recursive: true });
+    for (const file of ['latest.json', 'latest.md', 'frame-intervals.svg']) fs.copyFileSync(path.join(out, file), path.join(docs, file));
+    publishToReadme(readmeTables({ meta, loadBytes, summary, targets, configs }));
+  }
+  console.log(`\n${md}`);
+  console.log(`bench: wrote ${path.relative(root, out)}/latest.{json,md} and frame-intervals.svg${options.publish ? ', copied to docs/bench/ and README.md' : ''}`
+    + ` in ${Math.round(meta.wallSeconds)} s`);
+  if (runs.some((r) => r.error)) {
+    console.error('bench: some measurements failed (see above)');
+    process.exitCode = 1;
+  }
+}
+
+main().catch((error) => {
+  console.error(error.message || error);
+  process.exit(1);
+});

@@ -1,0 +1,118 @@
+// Node tests of the benchmark's arithmetic and page images (not of any speed): order statistics,
+// ratios taken within one repetition, the target verdicts, and that the generated PNGs are valid.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import zlib from 'node:zlib';
+import { summarize } from '../../scripts/bench/metrics.mjs';
+import { summarizeRuns } from '../../scripts/bench/report.mjs';
+import { drawPage, encodePalettePng, PAGE_HEIGHT, PAGE_WIDTH } from '../../scripts/bench/page-images.mjs';
+
+test('node: bench summarize gives the median of an even count and the nearest-rank p95', () => {
+  const s = summarize([4, 1, 3, 2]);
+  assert.equal(s.median, 2.5);
+  assert.equal(s.min, 1);
+  assert.equal(s.max, 4);
+  const hundred = summarize(Array.from({ length: 100 }, (_, i) => i + 1));
+  assert.equal(hundred.p95, 95);
+  assert.ok(Number.isNaN(summarize([]).median));
+});
+
+// A run result with just what the report reads; `scale` multiplies every figure.
+function fakeResult({ frameMs, mainMs, gpuMs, idle = 0.5, first = 1000, textures }) {
+  return {
+    firstFrameMs: first,
+    turnSeconds: 1,
+    turns: [{ start: 0, end: 1000 }],
+    intervals: [frameMs, frameMs, frameMs],
+    frames: 3,
+    perFrame: { mainThreadMs: mainMs, scriptMs: 0, rendererCpuMs: mainMs, gpuCpuMs: gpuMs },
+    idle: { totalCpuPercent: idle, mainThreadPercent: 0 },
+    memory: { jsHeapBytes: 1 << 20, rendererPssBytes: 1 << 20, gpuPssBytes: 1 << 20 },
+    stats: textures === undefined ? {} : { pageTextures: textures, wasmHeapBytes: 1 << 24 },
+  };
+}
+
+test('node: bench ratios to the best peer come from the same repetition, not from the medians', () => {
+  const configs = [{ id: 'double-20', display: 'double', pages: 20 }];
+  // Repetition 1 is slow for everyone, repetition 2 fast: per-repetition ratios are 0.4 and 0.4,
+  // while the ratio of medians across repetitions would mix the two machines' states.
+  const runs = [
+    { rep: 1, config: 'double-20', lib: 'conecurl', result: fakeResult({ frameMs: 40, mainMs: 4, gpuMs: 80 }) },
+    { rep: 1, config: 'double-20', lib: 'page-flip', result: fakeResult({ frameMs: 100, mainMs: 10, gpuMs: 100 }) },
+    { rep: 1, config: 'double-20', lib: 'turnjs', result: fakeResult({ frameMs: 200, mainMs: 20, gpuMs: 50 }) },
+    { rep: 2, config: 'double-20', lib: 'conecurl', result: fakeResult({ frameMs: 4, mainMs: 0.4, gpuMs: 8 }) },
+    { rep: 2, config: 'double-20', lib: 'page-flip', result: fakeResult({ frameMs: 10, mainMs: 1, gpuMs: 10 }) },
+    { rep: 2, config: 'double-20', lib: 'turnjs', result: fakeResult({ frameMs: 20, mainMs: 2, gpuMs: 5 }) },
+  ];
+  const { ratios, targets } = summarizeRuns(runs, configs, { conecurl: { totalGzip: 40 * 1024, jsGzip: 0, wasmGzip: 0 } });
+  const main = ratios['double-20'].mainThreadMsPerFrame;
+  assert.equal(main.bestPeer.median, 0.4);
+  assert.equal(main['page-flip'].median, 0.4);
+  assert.equal(main.turnjs.median, 0.2);
+  // The best peer is chosen per metric: turn.js for GPU time (50 and 5), so 80/50 and 8/5.
+  assert.equal(ratios['double-20'].gpuCpuMsPerFrame.bestPeer.median, 1.6);
+  const verdict = Object.fromEntries(targets.map((t) => [t.id, t.holds]));
+  assert.deepEqual(verdict, { 'main-thread': true, gpu: false, idle: true, smooth: true, bytes: false });
+});
+
+test('node: bench 1000-page targets compare first frames and resident textures within a repetition', () => {
+  const configs = [
+    { id: 'single-20', display: 'single', pages: 20 },
+    { id: 'single-1000', display: 'single', pages: 1000 },
+  ];
+  const run = (rep, config, first, textures) => ({
+    rep, config, lib: 'conecurl', result: fakeResult({ frameMs: 10, mainMs: 1, gpuMs: 1, first, textures }),
+  });
+  const runs = [run(1, 'single-20', 1000, 5), run(1, 'single-1000', 1400, 5), run(2, 'single-20', 500, 5), run(2, 'single-1000', 1000, 6)];
+  const { targets } = summarizeRuns(runs, configs, {});
+  const first = targets.find((t) => t.id === 'first-frame-single');
+  assert.equal(first.values[0].value, (1.4 + 2) / 2);
+  assert.equal(first.holds, false);
+  const textures = targets.find((t) => t.id === 'textures-single');
+  assert.equal(textures.holds, false, 'one repetition kept 6 textures for 1000 pages and 5 for 20');
+});
+
+test('node: bench compares the most page textures after any turn, not the count at the end of a short book', () => {
+  const configs = [
+    { id: 'double-20', display: 'double', pages: 20 },
+    { id: 'double-1000', display: 'double', pages: 1000 },
+  ];
+  const run = (config, perTurn) => {
+    const result = fakeResult({ frameMs: 10, mainMs: 1, gpuMs: 1, textures: perTurn[perTurn.length - 1] });
+    result.turnStats = perTurn.map((pageTextures) => ({ pageTextures }));
+    return { rep: 1, config, lib: 'conecurl', result };
+  };
+  // The 20-page book reaches its back cover, where the load window holds only 5 pages.
+  const bounded = summarizeRuns([run('double-20', [8, 10, 10, 5]), run('double-1000', [8, 10, 10, 10])], configs, {});
+  assert.equal(bounded.targets.find((t) => t.id === 'textures-double').holds, true);
+  const growing = summarizeRuns([run('double-20', [8, 10, 10, 5]), run('double-1000', [8, 10, 12, 14])], configs, {});
+  assert.equal(growing.targets.find((t) => t.id === 'textures-double').holds, false);
+});
+
+test('node: bench page images are valid palette PNGs with the page number in ink', () => {
+  const pixels = drawPage(122);
+  const png = encodePalettePng(PAGE_WIDTH, PAGE_HEIGHT, pixels, [[255, 255, 255], [0, 0, 0]]);
+  assert.deepEqual([...png.subarray(0, 8)], [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a]);
+  const chunks = [];
+  for (let at = 8; at < png.length;) {
+    const length = png.readUInt32BE(at);
+    const type = png.toString('ascii', at + 4, at + 8);
+    const data = png.subarray(at + 8, at + 8 + length);
+    assert.equal(png.readUInt32BE(at + 8 + length), zlib.crc32(png.subarray(at + 4, at + 8 + length)), `CRC of ${type}`);
+    chunks.push({ type, data });
+    at += 12 + length;
+  }
+  assert.deepEqual(chunks.map((c) => c.type), ['IHDR', 'PLTE', 'IDAT', 'IEND']);
+  assert.equal(chunks[0].data.readUInt32BE(0), PAGE_WIDTH);
+  assert.equal(chunks[0].data.readUInt32BE(4), PAGE_HEIGHT);
+  const raw = zlib.inflateSync(chunks[2].data);
+  assert.equal(raw.length, (PAGE_WIDTH + 1) * PAGE_HEIGHT);
+  for (let y = 0; y < PAGE_HEIGHT; y++) assert.equal(raw[y * (PAGE_WIDTH + 1)], 0, 'filter byte 0 on every row');
+  // The big number "123" sits centred from y = 70 to 154; its first digit's stem is ink.
+  const ink = (x, y) => raw[y * (PAGE_WIDTH + 1) + 1 + x] === 1;
+  let inkInNumber = 0;
+  for (let y = 70; y < 154; y++) for (let x = 200; x < 440; x++) inkInNumber += ink(x, y);
+  assert.ok(inkInNumber > 2000, `the page number is drawn (${inkInNumber} ink pixels)`);
+  assert.notDeepEqual(drawPage(1), drawPage(2), 'pages differ');
+  assert.deepEqual(drawPage(7), drawPage(7), 'pages are the same on every run');
+});
