@@ -209,6 +209,7 @@ export class BookView {
   readPixels() { return this.renderer.readPixels(); }
 
   requestRender() {
+    this._contextLease?.demand();  // Flipbook's share of the page's WebGL contexts (context-budget.js)
     if (!this._frame && this.renderer) this._frame = requestAnimationFrame((now) => this._tick(now));
   }
 

@@ -7,6 +7,7 @@ import { BookView, uploadSizeFor } from './book-view.js';
 import { createShell } from './book-shell.js';
 import { PointerDrag } from './pointer-drag.js';
 import { listenForTapsAndSwipes } from './tap-swipe.js';
+import { contextBudget } from './context-budget.js';
 import { pagesInFrame, pagesToRelease, textureCapacity, wantedPages } from './page-residency.js';
 
 const OPTION_CHECKS = {
@@ -109,6 +110,7 @@ export class Flipbook extends EventTarget {
     this._destroyed = false;
     this._shell = createShell(container, { label: settings.label, direction: settings.direction });
     this._canvas = this._shell.canvas;
+    this._contextLease = contextBudget().lease(this._canvas);  // many books on a page share the WebGL contexts
     this._reducedMotion = typeof matchMedia === 'function' ? matchMedia('(prefers-reduced-motion: reduce)') : null;
   }
 
@@ -166,6 +168,7 @@ export class Flipbook extends EventTarget {
     cancelAnimationFrame(this._followFrame);
     this._view?.destroy();
     this._view = null;
+    this._contextLease.dispose();
     this._images.clear();
     this._shell.remove();
     for (const resolve of this._idleWaiters.splice(0)) resolve();
@@ -186,7 +189,8 @@ export class Flipbook extends EventTarget {
   _makeView(display) {
     const hardPages = this._pages.map((p, i) => (p.hard || (this._settings.hardCovers
       && (i === 0 || i === this.pageCount - 1)) ? i : -1)).filter((i) => i >= 0);
-    return new BookView(this._engine, this._canvas, {
+    this._contextLease.admit();  // room in the page's context budget before the renderer makes one
+    const view = new BookView(this._engine, this._canvas, {
       pageCount: this.pageCount,
       display,
       direction: this._settings.direction,
@@ -196,6 +200,8 @@ export class Flipbook extends EventTarget {
       shadows: this._settings.shadows,
       gutter: this._settings.gutter,
     });
+    this._contextLease.attach(view);
+    return view;
   }
 
   // Dragging a corner or edge: a PointerDrag on each BookView (a display switch makes a new one).
@@ -490,6 +496,18 @@ export class Flipbook extends EventTarget {
   // The C++ Book takes its display at creation: a new BookView on the same canvas, at the same page,
   // with the textures uploaded again from the images in the cache. Turns in flight land at once.
   _rebuildView(display) {
+    // A canvas that handed its context back (out of view, see context-budget.js) cannot take a new
+    // renderer: switch once it has its context again.
+    if (this._contextLease.state !== 'live') {
+      if (!this._relayoutWhenLive) {
+        this._relayoutWhenLive = true;
+        this._contextLease.whenLive(() => {
+          this._relayoutWhenLive = false;
+          if (!this._destroyed) this._relayout();
+        });
+      }
+      return;
+    }
     const page = this.page;
     this._view.destroy();
     this._view = this._makeView(display);
