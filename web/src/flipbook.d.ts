@@ -55,9 +55,9 @@ export class Flipbook extends EventTarget {
   /** Rejects with a TypeError naming a bad option, or an Error if WebGL2 is unavailable. */
   static create(container: HTMLElement, options: FlipbookOptions): Promise<Flipbook>;
   readonly pageCount: number;
-  /** First visible page at the settled position. */
+  /** First visible page at the settled position; after destroy(), the page the book was left at. */
   readonly page: number;
-  /** Follows the container's aspect when the option is 'auto'. */
+  /** Follows the container's aspect when the option is 'auto'; after destroy(), as it was last. */
   readonly display: 'single' | 'double';
   /**
    * The element the book made in its container: focusable (tabindex 0), role "region" with
@@ -69,7 +69,8 @@ export class Flipbook extends EventTarget {
   prev(): Promise<boolean>;
   /**
    * Turns leaf by leaf to page `index` (or jumps with animate: false, or under
-   * prefers-reduced-motion); RangeError if out of range.
+   * prefers-reduced-motion); RangeError if out of range. A later flip() takes over: an animated
+   * flip still under way stops turning and resolves.
    */
   flip(index: number, options?: { animate?: boolean }): Promise<void>;
   /** Switches the effects on a live book; any other option is a TypeError (it needs a new book). */

@@ -108,6 +108,7 @@ export class Flipbook extends EventTarget {
     this._loadsInFlight = 0;
     this._idleWaiters = [];
     this._destroyed = false;
+    this._flips = 0;       // counts flip() calls: a later one stops an earlier one's leaf-by-leaf turning
     this._shell = createShell(container, { label: settings.label, direction: settings.direction });
     this._canvas = this._shell.canvas;
     this._contextLease = contextBudget().lease(this._canvas);  // many books on a page share the WebGL contexts
@@ -115,9 +116,12 @@ export class Flipbook extends EventTarget {
   }
 
   get pageCount() { return this._pages.length; }
-  /** The first visible page at the settled position. */
-  get page() { return this._view ? this._view.book.firstVisiblePage() : 0; }
-  get display() { return this._view.book.isSingle() ? 'single' : 'double'; }
+  /** The first visible page at the settled position (after destroy(), where the book was left). */
+  get page() { return this._view ? this._view.book.firstVisiblePage() : (this._left?.page ?? 0); }
+  get display() {
+    if (!this._view) return this._left?.display ?? (this._settings.display === 'single' ? 'single' : 'double');
+    return this._view.book.isSingle() ? 'single' : 'double';
+  }
   /** The focusable element the book made in its container (holds the canvas). */
   get element() { return this._shell.root; }
 
@@ -130,17 +134,22 @@ export class Flipbook extends EventTarget {
     if (!Number.isInteger(index) || index < 0 || index >= this.pageCount) {
       throw new RangeError(`conecurl: page ${index} is not in 0..${this.pageCount - 1}`);
     }
-    const target = this._view.book.positionOfPage(index);
+    // The latest flip wins: an animated flip still under way stops where it is (and resolves), or two
+    // would turn the book back and forth for ever.
+    const flip = ++this._flips;
     if (!animate || this._prefersReducedMotion()) {
+      const target = this._view.book.positionOfPage(index);
       if (this._view.position === target && !this._view.animating) return;
       this._view.jumpTo(target);
       this._updateResidency();
       this._landed();
       return;
     }
-    while (this._view.position !== target) {
+    for (;;) {
+      const target = this._view.book.positionOfPage(index);  // again each leaf: the display may switch
+      if (this._view.position === target) return;
       const turned = await this._turn(target > this._view.position ? 'forward' : 'backward');
-      if (!turned || this._destroyed) return;
+      if (!turned || this._destroyed || flip !== this._flips) return;
     }
   }
 
@@ -166,6 +175,7 @@ export class Flipbook extends EventTarget {
     this._stopWatchingPixelRatio?.();
     clearTimeout(this._refitTimer);
     cancelAnimationFrame(this._followFrame);
+    if (this._view) this._left = { page: this.page, display: this.display };  // reads stay answered after destroy
     this._view?.destroy();
     this._view = null;
     this._contextLease.dispose();
