@@ -199,8 +199,13 @@ export class BookView {
   readPixels() { return this.renderer.readPixels(); }
 
   requestRender() {
-    if (!this._frame && this.renderer && !this._lost) this._frame = requestAnimationFrame((now) => this._tick(now));
+    this._contextLease?.demand();  // Flipbook's share of the page's WebGL contexts (context-budget.js)
+    if (!this._frame && this.renderer && (!this._lost || this._parked)) this._frame = requestAnimationFrame((now) => this._tick(now));
   }
+
+  // The context was handed back on purpose (context-budget.js parks a book out of view): unlike an
+  // accidental loss, the clock runs on, so turns land and resolve, and nothing is drawn.
+  get _parked() { return this._lost && this._contextLease?.state === 'parked'; }
 
   /**
    * Cancels animation, removes listeners, deletes every GL object and the wasm objects. With
@@ -240,7 +245,7 @@ export class BookView {
 
   _tick(now) {
     this._frame = 0;
-    if (!this.renderer || this._lost) return;
+    if (!this.renderer || (this._lost && !this._parked)) return;
     if (this._clockRunning && this.book.moving()) {
       const seconds = this._lastTime ? Math.min(MAX_FRAME_SECONDS, (now - this._lastTime) / 1000) : 0;
       this.book.advance(seconds);

@@ -123,9 +123,9 @@ export class Flipbook extends EventTarget {
    */
   static create(container: HTMLElement, options: FlipbookOptions): Promise<Flipbook>;
   readonly pageCount: number;
-  /** First visible page at the settled position; after destroy(), where the book was. */
+  /** First visible page at the settled position; after destroy(), the page the book was left at. */
   readonly page: number;
-  /** Follows the container's aspect when the option is 'auto'. */
+  /** Follows the container's aspect when the option is 'auto'; after destroy(), as it was last. */
   readonly display: 'single' | 'double';
   /**
    * The element the book made in its container: focusable (tabindex 0), role "region" with
@@ -152,7 +152,8 @@ export class Flipbook extends EventTarget {
   zoom: number;
   /**
    * Turns leaf by leaf to page `index` (or jumps with animate: false, or under
-   * prefers-reduced-motion); RangeError if out of range, TypeError for bad options.
+   * prefers-reduced-motion); RangeError if out of range, TypeError for bad options. A later flip()
+   * takes over: an animated flip still under way stops turning and resolves.
    */
   flip(index: number, options?: { animate?: boolean }): Promise<void>;
   /** Switches the effects on a live book; any other option is a TypeError (it needs a new book). */

@@ -12,6 +12,7 @@ import { StaticBook } from './static-book.js';
 import { listenForTapsAndSwipes } from './tap-swipe.js';
 import { listenForZoom } from './zoom-input.js';
 import { createLinkLayer } from './link-layer.js';
+import { contextBudget } from './context-budget.js';
 import { pagesInFrame, pagesToRelease, textureCapacity, wantedPages } from './page-residency.js';
 
 // Failures after which a book can still be shown, as still pages: Flipbook.create falls back on these.
@@ -110,17 +111,22 @@ export class Flipbook extends EventTarget {
     this._owned = new Set();        // images made here (ImageBitmaps from URLs and Blobs): closed when let go
     this._abort = new AbortController();  // page fetches still running when the book is destroyed stop
     this._destroyed = false;
+    this._flips = 0;       // counts flip() calls: a later one stops an earlier one's leaf-by-leaf turning
     this._shell = createShell(container, { label: settings.label, direction: settings.direction });
     this._canvas = this._shell.canvas;
     this._restingTouchAction = this._canvas.style.touchAction;
     this._links = createLinkLayer(this._shell.root, (link, event) => this._onLink(link, event));
+    this._contextLease = contextBudget().lease(this._canvas);  // many books on a page share the WebGL contexts
     this._reducedMotion = typeof matchMedia === 'function' ? matchMedia('(prefers-reduced-motion: reduce)') : null;
   }
 
   get pageCount() { return this._pages.length; }
-  /** The first visible page at the settled position. */
-  get page() { return this._view ? this._view.book.firstVisiblePage() : this._finalPage ?? 0; }
-  get display() { return this._view ? (this._view.book.isSingle() ? 'single' : 'double') : this._finalDisplay ?? null; }
+  /** The first visible page at the settled position (after destroy(), where the book was left). */
+  get page() { return this._view ? this._view.book.firstVisiblePage() : (this._finalPage ?? 0); }
+  get display() {
+    if (!this._view) return this._finalDisplay ?? (this._settings.display === 'single' ? 'single' : 'double');
+    return this._view.book.isSingle() ? 'single' : 'double';
+  }
   /** The focusable element the book made in its container (holds the canvas). */
   get element() { return this._shell.root; }
 
@@ -161,17 +167,22 @@ export class Flipbook extends EventTarget {
     if (!Number.isInteger(index) || index < 0 || index >= this.pageCount) {
       throw new RangeError(`conecurl: page ${index} is not in 0..${this.pageCount - 1}`);
     }
-    const target = this._view.book.positionOfPage(index);
+    // The latest flip wins: an animated flip still under way stops where it is (and resolves), or two
+    // would turn the book back and forth for ever.
+    const flip = ++this._flips;
     if (!animate || this._prefersReducedMotion()) {
+      const target = this._view.book.positionOfPage(index);
       if (this._view.position === target && !this._view.animating) return;
       this._view.jumpTo(target);
       this._updateResidency();
       this._landed();
       return;
     }
-    while (this._view.position !== target) {
+    for (;;) {
+      const target = this._view.book.positionOfPage(index);  // again each leaf: the display may switch
+      if (this._view.position === target) return;
       const turned = await this._turn(target > this._view.position ? 'forward' : 'backward');
-      if (!turned || this._destroyed) return;
+      if (!turned || this._destroyed || flip !== this._flips) return;
     }
   }
 
@@ -204,6 +215,7 @@ export class Flipbook extends EventTarget {
     cancelAnimationFrame(this._followFrame);
     this._view?.destroy({ releaseContext: true });  // the canvas goes: give its WebGL context up now
     this._view = null;
+    this._contextLease.dispose();
     for (const image of this._owned) image.close?.();
     this._owned.clear();
     this._images.clear();
@@ -226,7 +238,8 @@ export class Flipbook extends EventTarget {
   _makeView(display) {
     const hardPages = this._pages.map((p, i) => (p.hard || (this._settings.hardCovers
       && (i === 0 || i === this.pageCount - 1)) ? i : -1)).filter((i) => i >= 0);
-    return new BookView(this._engine, this._canvas, {
+    this._contextLease.admit();  // room in the page's context budget before the renderer makes one
+    const view = new BookView(this._engine, this._canvas, {
       pageCount: this.pageCount,
       // A PDF's pages keep their shape; image books use the engine's default page (0.8 : 1).
       ...(this._settings.pageAspect ? { pageWidth: this._settings.pageAspect, pageHeight: 1 } : {}),
@@ -238,6 +251,8 @@ export class Flipbook extends EventTarget {
       shadows: this._settings.shadows,
       gutter: this._settings.gutter,
     });
+    this._contextLease.attach(view);
+    return view;
   }
 
   // Dragging a corner or edge: a PointerDrag on each BookView (a display switch makes a new one).
@@ -613,6 +628,18 @@ export class Flipbook extends EventTarget {
   // The C++ Book takes its display at creation: a new BookView on the same canvas, at the same page,
   // with the textures uploaded again from the images in the cache. Turns in flight land at once.
   _rebuildView(display) {
+    // A canvas that handed its context back (out of view, see context-budget.js) cannot take a new
+    // renderer: switch once it has its context again.
+    if (this._contextLease.state !== 'live') {
+      if (!this._relayoutWhenLive) {
+        this._relayoutWhenLive = true;
+        this._contextLease.whenLive(() => {
+          this._relayoutWhenLive = false;
+          if (!this._destroyed) this._relayout();
+        });
+      }
+      return;
+    }
     const page = this.page;
     this._view.destroy();
     this._view = this._makeView(display);

@@ -104,7 +104,11 @@ export class PointerDrag {
     }
     this._drag = { id: event.pointerId, grip, samples: [] };
     this.strokeWasDrag = true;
-    this.canvas.setPointerCapture?.(event.pointerId);
+    try {
+      this.canvas.setPointerCapture?.(event.pointerId);
+    } catch {
+      // No such active pointer (a synthetic event) or the canvas left the document: drag uncaptured.
+    }
     this._hooks.onTurnStart?.(grip.backward ? 'backward' : 'forward');
     this._follow(event);
   }

@@ -1,0 +1,63 @@
+// Browser: regression tests for the failures the random-sequence test (fuzz.spec.js) found, each
+// reduced to the few calls or events that showed it.
+import { test, expect } from '@playwright/test';
+import { openReady } from './helpers.js';
+
+const FIXTURE = '/tests/browser/fixtures/flipbook-fixture.html';
+
+test('browser: page and display still answer after destroy() (they read the destroyed view: TypeError)', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    await window.openBook({ pages: 4, startPage: 3, display: 'double' });
+    window.book.destroy();
+    return { page: window.book.page, display: window.book.display, pageCount: window.book.pageCount };
+  });
+  expect(result).toEqual({ page: 3, display: 'double', pageCount: 4 });
+});
+
+test('browser: a drag whose pointer cannot be captured (synthetic touch events) still turns with paired events and no uncaught error', async ({ page }) => {
+  const problems = await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    await window.openBook({ pages: 8, startPage: 2, display: 'double', duration: 100 });
+    const events = [];
+    for (const type of ['turnstart', 'turned', 'turncancel']) window.book.addEventListener(type, () => events.push(type));
+    const canvas = window.book.element.querySelector('canvas');
+    // A finger that the browser never saw: setPointerCapture(7) throws NotFoundError.
+    const send = (type, fx, fy) => {
+      const { x, y } = window.halfPoint(fx, fy);
+      canvas.dispatchEvent(new PointerEvent(type, { bubbles: true, pointerId: 7, pointerType: 'touch', isPrimary: true,
+        button: type === 'pointermove' ? -1 : 0, buttons: type === 'pointerup' ? 0 : 1, clientX: x, clientY: y }));
+    };
+    send('pointerdown', 0.995, 0.99);
+    for (const fx of [0.9, 0.7, 0.5, 0.3, 0.1]) send('pointermove', fx, 0.9);
+    send('pointerup', 0.05, 0.9);
+    await window.settle();
+    return { events, page: window.book.page };
+  });
+  expect(problems).toEqual([]);
+  expect(result.events).toEqual(['turnstart', 'turned']);
+  expect(result.page).toBe(3);
+});
+
+test('browser: two animated flips at once end at the later one\'s page and the book comes to rest (they turned it back and forth for ever)', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    await window.openBook({ pages: 12, display: 'double', duration: 60 });
+    const book = window.book;
+    let landed = 0;
+    book.addEventListener('turned', () => landed++);
+    const first = book.flip(9);
+    const second = book.flip(0);
+    const third = book.flip(5);
+    const outcome = await Promise.race([
+      Promise.all([first, second, third]).then(() => 'resolved'),
+      new Promise((resolve) => setTimeout(() => resolve('still turning after 10 s'), 10_000)),
+    ]);
+    await window.settle();
+    return { outcome, page: book.page, landed, animating: book._view.animating };
+  });
+  expect(result.outcome).toBe('resolved');
+  expect(result.page).toBe(5);
+  expect(result.animating).toBe(false);
+  expect(result.landed).toBeLessThan(12);
+});
