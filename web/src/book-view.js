@@ -251,7 +251,7 @@ export class BookView {
       this.book.advance(seconds);
       while (this._pending.length > 0 && this.book.startTurn(this._pending[0])) this._pending.shift();
     }
-    this.drawNow();
+    if (!this._lost) this.drawNow();
     if (this._clockRunning && this.book.moving()) {
       this._lastTime = now;
       this._frame = requestAnimationFrame((t) => this._tick(t));
