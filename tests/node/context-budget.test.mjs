@@ -98,6 +98,7 @@ test('node: a parked book scrolled into view takes its context back from the boo
   const a = book(budget);
   const b = book(budget);
   const c = book(budget);  // parks a
+  a.lease._onVisibility(false);  // a is out of view
   c.lease._onVisibility(false);
   b.lease._onVisibility(false);  // b left the view after c: c goes first
   await tasks();
@@ -160,4 +161,35 @@ test('node: dispose frees the context at once and leaves the budget; a parked bo
   assert.equal(b.canvas.gl.lost, true);
   assert.deepEqual(b.canvas.calls, ['lose', 'restore', 'lose']);
   assert.equal(c.lease.state, 'live');
+});
+
+test('node: a book parked while in view takes a context back once another book reports it is out of view, or lets go (no scroll needed)', async () => {
+  const budget = new ContextBudget({ maxLive: 2 });
+  // New books count as visible until their first report: the third admitted parks the first, in view.
+  const a = book(budget);
+  a.lease._onVisibility(true);  // its report comes before it is parked: nothing changes for it later
+  const b = book(budget);
+  const c = book(budget);
+  assert.equal(a.lease.state, 'parked');
+  await tasks();
+  b.lease._onVisibility(true);
+  assert.equal(a.lease.state, 'parked', 'every live book is in view: the budget is full');
+  c.lease._onVisibility(false);
+  assert.equal(a.lease.state, 'restoring', 'the book out of view gave way');
+  assert.equal(c.lease.state, 'parked');
+  await tasks(6);
+  assert.equal(a.lease.state, 'live');
+  assert.equal(budget.liveCount, 2);
+
+  // A live book destroyed: a parked book in view takes the freed context.
+  const full = new ContextBudget({ maxLive: 1 });
+  const x = book(full);
+  x.lease._onVisibility(true);
+  const y = book(full);  // parks x, in view
+  y.lease._onVisibility(true);
+  assert.equal(x.lease.state, 'parked', 'the one context is held by a book in view');
+  await tasks();
+  y.lease.dispose();
+  assert.equal(x.lease.state, 'restoring');
+  assert.equal(full.liveCount, 1);
 });

@@ -47,6 +47,19 @@ export class ContextBudget {
 
   _forget(lease) { this._leases.delete(lease); }
 
+  // A book in view without a context takes one that is free or held by a book out of view, the book
+  // used last first. Run whenever books come and go from view or let go: a book may have been parked
+  // while it was in view, e.g. when newcomers still counted as visible before their first report.
+  _rebalance() {
+    for (;;) {
+      const waiting = [...this._leases].filter((lease) => lease.state === 'parked' && lease.visible);
+      if (waiting.length === 0) return;
+      const live = [...this._leases].filter((lease) => lease.live);
+      if (live.length >= this.maxLive && live.every((lease) => lease.visible)) return;
+      waiting.sort((a, b) => b._lastUsed - a._lastUsed)[0]._acquire();  // leaves 'parked': the loop ends
+    }
+  }
+
   // Parks live books (the policy's choice first) until `newcomer` fits within maxLive.
   _makeRoom(newcomer) {
     const others = [...this._leases].filter((lease) => lease !== newcomer && lease.live);
@@ -175,6 +188,7 @@ export class ContextLease {
     this.view = null;
     // A canvas's context otherwise lives until the canvas is garbage collected, and counts until then.
     if (this._gl && !this._gl.isContextLost()) this._loseContext?.loseContext();
+    this._budget._rebalance();  // the context freed may go to a book in view without one
   }
 
   _ranking() {
@@ -186,6 +200,7 @@ export class ContextLease {
     if (visible !== this._visible) this._lastUsed = this._budget._tick();  // out of view: from now; in view: used now
     this._visible = visible;
     if (visible && this.state === 'parked') this._acquire();
+    this._budget._rebalance();
   }
 
   // Hands the context back: the last frame becomes the canvas's background, then WEBGL_lose_context.
