@@ -32,28 +32,31 @@ void main() {
     vec3 n = normalize(vNormal);
     bool facing = dot(n, uEye - vWorldPosition) >= 0.0;
     vec2 st = vPagePoint / uPageSize;
-    vec2 uv = facing ? (uFacingUv * vec3(st, 1.0)).xy : (uAwayUv * vec3(st, 1.0)).xy;
-    vec4 texel = facing ? texture(uFacingTexture, uv) : texture(uAwayTexture, uv);
+    // A branch, not ?: — a select would sample both textures (software rasterizers pay for both).
+    vec4 texel;
+    if (facing) {
+        texel = texture(uFacingTexture, (uFacingUv * vec3(st, 1.0)).xy);
+    } else {
+        texel = texture(uAwayTexture, (uAwayUv * vec3(st, 1.0)).xy);
+    }
     vec3 color = mix(uPaper, texel.rgb, texel.a);
 
     // The side seen is lit by its own normal (a back is lit as a back), relative to a flat page so
     // resting pages keep their true colours.
     vec3 sideNormal = facing ? n : -n;
     float light = mix(1.0, diffuse(sideNormal) / diffuse(vec3(0.0, 0.0, 1.0)), uLighting);
-    // Paper curves down into the binding: darker within a few percent of the width of the spine.
-    light *= 1.0 - uGutter * 0.22 * exp(-st.x / 0.045);
+    // Paper curves down into the binding: darker within a few percent of the width of the spine
+    // (beyond a quarter of the width the term is below 1/1000 and is skipped).
+    if (uGutter > 0.0 && st.x < 0.25) light *= 1.0 - 0.22 * exp(-st.x / 0.045);
 
     if (uShadow > 0.0) {
-        // A 3x3 tent blur of the mask softens the projected edge.
+        // Four bilinear taps a texel and a half off each way: a tent blur about 5 mask texels wide
+        // (10 screen pixels) that softens the projected edge for the price of four samples.
         vec2 at = gl_FragCoord.xy * uViewportInverse;
-        float shadow = 0.0;
-        for (int i = -1; i <= 1; ++i) {
-            for (int j = -1; j <= 1; ++j) {
-                float weight = (i == 0 ? 2.0 : 1.0) * (j == 0 ? 2.0 : 1.0);
-                shadow += weight * texture(uShadowMask, at + 2.0 * vec2(float(i), float(j)) * uShadowTexel).a;
-            }
-        }
-        light *= 1.0 - shadow / 16.0;
+        vec2 d = 1.5 * uShadowTexel;
+        float shadow = texture(uShadowMask, at + vec2(-d.x, -d.y)).a + texture(uShadowMask, at + vec2(d.x, -d.y)).a
+                     + texture(uShadowMask, at + vec2(-d.x, d.y)).a + texture(uShadowMask, at + vec2(d.x, d.y)).a;
+        light *= 1.0 - 0.25 * shadow;
     }
     outColor = vec4(color * light, 1.0);
 }

@@ -14,8 +14,12 @@ namespace {
 using namespace conecurl;
 using emscripten::val;
 
-std::unique_ptr<BookRenderer> createRenderer(const std::string& canvasTarget) {
-    auto renderer = std::make_unique<BookRenderer>(canvasTarget);
+// create(canvasTarget, antialias?): antialias is a boolean, true when left out.
+std::unique_ptr<BookRenderer> createRenderer(const std::string& canvasTarget, val antialias) {
+    if (!antialias.isUndefined() && !antialias.isTrue() && !antialias.isFalse()) {
+        js::throwError("TypeError", "antialias must be true or false");
+    }
+    auto renderer = std::make_unique<BookRenderer>(canvasTarget, !antialias.isFalse());
     if (!renderer->ok()) {
         const std::string message = renderer->error();
         const bool noContext = !renderer->hasContext();

@@ -41,14 +41,14 @@ std::string decimal(int n) {
 
 }  // namespace
 
-BookRenderer::BookRenderer(const std::string& canvasTarget) {
+BookRenderer::BookRenderer(const std::string& canvasTarget, bool antialias) {
     EmscriptenWebGLContextAttributes attributes;
     emscripten_webgl_init_context_attributes(&attributes);
     attributes.majorVersion = 2;
     attributes.minorVersion = 0;
     attributes.alpha = true;
     attributes.premultipliedAlpha = true;
-    attributes.antialias = true;
+    attributes.antialias = antialias;
     attributes.depth = true;
     context_ = emscripten_webgl_create_context(canvasTarget.c_str(), &attributes);
     if (context_ <= 0) {

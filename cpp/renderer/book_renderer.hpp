@@ -36,7 +36,8 @@ class BookRenderer {
 public:
     // Creates a WebGL2 context on the canvas found by `canvasTarget` (a CSS selector, or a name
     // registered in Emscripten's specialHTMLTargets). On failure ok() is false and error() says why.
-    explicit BookRenderer(const std::string& canvasTarget);
+    // antialias: multisampled edges (smooth curl silhouettes); a software rasterizer pays ~30% a frame for it.
+    explicit BookRenderer(const std::string& canvasTarget, bool antialias = true);
     ~BookRenderer();
     BookRenderer(const BookRenderer&) = delete;
     BookRenderer& operator=(const BookRenderer&) = delete;

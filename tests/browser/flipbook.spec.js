@@ -106,3 +106,30 @@ test('browser: destroy removes the canvas, is idempotent, and later calls fail c
   expect(result.canvases).toBe(0);
   expect(result.message).toContain('destroyed');
 });
+
+test('browser: antialias \'auto\' leaves multisampling off on a software rasterizer (SwiftShader here) and true or false is obeyed; a bad value is a TypeError', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    const container = document.getElementById('container');
+    const pages = [window.makeNumberedPage(0), window.makeNumberedPage(1)];
+    const probe = document.createElement('canvas').getContext('webgl2');
+    const info = probe.getExtension('WEBGL_debug_renderer_info');
+    const rendererName = probe.getParameter(info.UNMASKED_RENDERER_WEBGL);
+    probe.getExtension('WEBGL_lose_context').loseContext();
+    const antialiased = async (options) => {
+      const book = await window.Flipbook.create(container, { pages, ...options });
+      const canvas = book.element.querySelector('canvas');
+      const attributes = canvas.getContext('webgl2').getContextAttributes();  // the book's own context
+      book.destroy();
+      return attributes.antialias;
+    };
+    let bad;
+    try { await window.Flipbook.create(container, { pages, antialias: 'yes' }); } catch (e) { bad = `${e.name}: ${e.message}`; }
+    return { rendererName, auto: await antialiased({}), on: await antialiased({ antialias: true }), off: await antialiased({ antialias: false }), bad };
+  });
+  expect(result.rendererName).toMatch(/SwiftShader/i);
+  expect(result.auto).toBe(false);
+  expect(result.on).toBe(true);
+  expect(result.off).toBe(false);
+  expect(result.bad).toBe("TypeError: conecurl: option 'antialias' must be 'auto', true or false, got \"yes\"");
+});

@@ -868,6 +868,7 @@ test('browser: the renderer refuses bad arguments at the Embind boundary (page i
       leafNegative: attempt(() => renderer.captureLeaf(view.book, -1)),
       leafString: attempt(() => renderer.captureLeaf(view.book, '0')),
       notABook: attempt(() => renderer.draw({})),
+      antialiasString: attempt(() => view.engine.BookRenderer.create('#unused', 'yes')),
       stillResident: [1, 2].map((i) => renderer.hasPageImage(i)),
     };
   });
@@ -877,6 +878,7 @@ test('browser: the renderer refuses bad arguments at the Embind boundary (page i
     pageString: 'RangeError: conecurl: page must be a whole number from 0 to 1000000',
     widthNaN: 'RangeError: conecurl: image width must be a whole number from 1 to 65536',
     heightZero: 'RangeError: conecurl: image height must be a whole number from 1 to 65536',
+    antialiasString: 'TypeError: conecurl: antialias must be true or false',
     wrongLength: 'TypeError: conecurl: page image pixels must be an array of width * height * 4 RGBA bytes (16 for 2x2)',
     noPixels: 'TypeError: conecurl: page image pixels must be an array of width * height * 4 RGBA bytes (4 for 1x1)',
     stringPixels: 'TypeError: conecurl: page image pixels must be an array of width * height * 4 RGBA bytes (4 for 1x1)',

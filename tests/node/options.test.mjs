@@ -30,6 +30,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     wasmUrl: 'a URL string',
     label: 'a non-empty string',
     fallback: 'true or false',
+    antialias: "'auto', true or false",
   };
   const bad = {
     display: [NaN, 'triple', 2, null, ['double']],
@@ -44,6 +45,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     wasmUrl: [42, null, {}, NaN],
     label: ['', '   ', 42, null, NaN],
     fallback: ['no', 0, NaN],
+    antialias: ['AUTO', 'on', 1, null, NaN],
   };
   assert.deepEqual(Object.keys(bad).sort(), Object.keys(allowed).sort());
   for (const [option, values] of Object.entries(bad)) {
@@ -89,7 +91,8 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses(null, 'options must be an object, got null');
   refuses('pages', 'options must be an object, got "pages"');
   refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, direction, startPage, duration, hardCovers, "
-    + 'lighting, shadows, gutter, loadWindow, wasmUrl, label, fallback)');
+    + 'lighting, shadows, gutter, loadWindow, wasmUrl, label, fallback, antialias)');
+  refuses({ pages, antialias: 'yes' }, "option 'antialias' must be 'auto', true or false, got \"yes\"");
   refuses({ pages, startPage: 3 }, "option 'startPage' must be below the page count 3, got 3");
   // A value whose own toString throws or is huge is described, not called.
   const hostile = { toString() { throw new Error('gotcha'); } };

@@ -16,6 +16,8 @@ export interface BookViewOptions extends LoadEngineOptions, RenderOptions {
   turnSeconds?: number;
   /** Indices of hard pages (covers): they turn rigidly. */
   hardPages?: number[];
+  /** Multisampled edges (the WebGL context's antialias); default true. */
+  antialias?: boolean;
 }
 
 /** The size setPageImage uploads a width x height image at (see its `cover`). */

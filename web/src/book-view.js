@@ -75,7 +75,7 @@ export class BookView {
     this._target = `!conecurl-canvas-${nextTargetId++}`;
     engine.specialHTMLTargets[this._target] = canvas;
     try {
-      this.renderer = engine.BookRenderer.create(this._target);
+      this.renderer = engine.BookRenderer.create(this._target, options.antialias ?? true);
     } catch (error) {
       delete engine.specialHTMLTargets[this._target];
       this.book.delete();

@@ -15,7 +15,8 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
 /**
  * The Flipbook as an element. Attributes (all optional except the pages): pages (URLs separated by
  * spaces; else the child <img> elements, alt text kept), display, direction, start-page, duration,
- * hard-covers, lighting, shadows, gutter ("true"/"false"), load-window, wasm-url, pdf, pdf-worker-src.
+ * hard-covers, lighting, shadows, gutter ("true"/"false"), antialias ("auto"/"true"/"false"),
+ * load-window, wasm-url, pdf, pdf-worker-src.
  */
 export class ConeFlipbookElement extends HTMLElement {
   static readonly observedAttributes: string[];

@@ -15,6 +15,11 @@ function parseBoolean(raw, attribute) {
   if (raw === 'false') return false;
   throw attributeError(attribute, '"true" or "false"', raw);
 }
+function parseAntialias(raw, attribute) {
+  if (raw === 'auto') return 'auto';
+  if (raw === '' || raw === 'true' || raw === 'false') return raw !== 'false';
+  throw attributeError(attribute, '"auto", "true" or "false"', raw);
+}
 function parseList(raw, attribute) {
   const urls = raw.split(/\s+/).filter(Boolean);
   if (urls.length === 0) throw attributeError(attribute, 'image URLs separated by spaces', raw);
@@ -34,6 +39,7 @@ const ATTRIBUTES = {
   gutter: ['gutter', parseBoolean],
   'load-window': ['loadWindow', parseNumber],
   'wasm-url': ['wasmUrl', parseText],
+  antialias: ['antialias', parseAntialias],
   pdf: ['pdf', parseText],
   'pdf-worker-src': ['pdfWorkerSrc', parseText],
 };

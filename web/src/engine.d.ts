@@ -141,9 +141,10 @@ export interface ConeCurlEngine {
   BookRenderer: {
     /**
      * Throws an Error ("conecurl: ...") if the renderer cannot be made: with `code`
-     * 'webgl2-unavailable' when the canvas gives no WebGL2 context at all.
+     * 'webgl2-unavailable' when the canvas gives no WebGL2 context at all. `antialias` (default true)
+     * asks for a multisampled drawing buffer; anything but a boolean is a TypeError.
      */
-    create(canvasTarget: string): BookRenderer;
+    create(canvasTarget: string, antialias?: boolean): BookRenderer;
   };
   /** Bytes of the wasm heap allocated and not freed (malloc's in-use count): for leak tests. */
   heapBytesInUse(): number;

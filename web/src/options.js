@@ -19,10 +19,12 @@ const OPTION_CHECKS = {
   wasmUrl: (v) => typeof v === 'string' || 'a URL string',
   label: (v) => (typeof v === 'string' && v.trim() !== '') || 'a non-empty string',
   fallback: BOOLEAN,
+  antialias: (v) => typeof v === 'boolean' || v === 'auto' || "'auto', true or false",
 };
 export const DEFAULTS = {
   display: 'auto', direction: 'ltr', startPage: 0, duration: 1000, hardCovers: false,
   lighting: true, shadows: true, gutter: true, loadWindow: 4, label: 'Book', fallback: true,
+  antialias: 'auto',
 };
 /** Options a live book takes through setOptions(); the others need a new book. */
 export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter'];
