@@ -27,7 +27,7 @@ function libraryOnlyPlugin() {
 }
 
 async function viteBuild(input, outDir, plugins = []) {
-  await build({
+  return build({
     configFile: false,
     root,
     base: './',  // assets (the wasm) are found next to the bundle, wherever it is served
@@ -50,9 +50,25 @@ async function viteBuild(input, outDir, plugins = []) {
 
 const gzipSize = (bytes) => zlib.gzipSync(bytes, { level: 9 }).length;
 
+// The files a page loads up front: the entry chunks, what they import statically, and the assets
+// (the wasm). Chunks reached only through import() (pdf.js, for PDF books) load on demand.
+function upFrontFiles(result) {
+  const output = (Array.isArray(result) ? result[0] : result).output;
+  const byName = new Map(output.map((item) => [item.fileName, item]));
+  const upFront = new Set(output.filter((item) => item.type === 'asset').map((item) => item.fileName));
+  const visit = (name) => {
+    if (upFront.has(name)) return;
+    upFront.add(name);
+    for (const dependency of byName.get(name)?.imports ?? []) visit(dependency);
+  };
+  for (const item of output) if (item.type === 'chunk' && item.isEntry) visit(item.fileName);
+  return upFront;
+}
+
 /**
  * Builds the adapter bundles into `outDir` (served to the pages) and measures each library alone.
- * Returns { [lib]: { js, jsGzip, wasm, wasmGzip, total, totalGzip, files } }.
+ * Returns { [lib]: { js, jsGzip, wasm, wasmGzip, total, totalGzip, files, lazy: { files, js, jsGzip } } }:
+ * the totals count what a page loads up front; `lazy` the chunks loaded only on demand.
  */
 export async function bundleLibraries(outDir) {
   const adapters = Object.fromEntries(LIBRARIES.map((lib) => [lib, path.join(root, 'scripts/bench/libraries', `${lib}.js`)]));
@@ -60,12 +76,19 @@ export async function bundleLibraries(outDir) {
   const sizes = {};
   for (const lib of LIBRARIES) {
     const libDir = path.join(outDir, 'library-only', lib);
-    await viteBuild({ [lib]: `bench-library:${lib}` }, libDir, [libraryOnlyPlugin()]);
-    const entry = { files: [], js: 0, jsGzip: 0, wasm: 0, wasmGzip: 0 };
+    const upFront = upFrontFiles(await viteBuild({ [lib]: `bench-library:${lib}` }, libDir, [libraryOnlyPlugin()]));
+    const entry = { files: [], js: 0, jsGzip: 0, wasm: 0, wasmGzip: 0, lazy: { files: [], js: 0, jsGzip: 0 } };
     for (const file of fs.readdirSync(libDir)) {
       const bytes = fs.readFileSync(path.join(libDir, file));
       const kind = file.endsWith('.wasm') ? 'wasm' : file.endsWith('.js') ? 'js' : null;
       if (!kind) throw new Error(`bench bundle: unexpected file ${file} in the ${lib} build`);
+      if (!upFront.has(file)) {
+        if (kind !== 'js') throw new Error(`bench bundle: ${file} of the ${lib} build is not loaded up front`);
+        entry.lazy.js += bytes.length;
+        entry.lazy.jsGzip += gzipSize(bytes);
+        entry.lazy.files.push(file);
+        continue;
+      }
       entry[kind] += bytes.length;
       entry[`${kind}Gzip`] += gzipSize(bytes);
       entry.files.push(file);
@@ -81,6 +104,7 @@ if (import.meta.url === `file://${process.argv[1]}`) {
   const outDir = path.resolve(process.argv[2] || 'bench-results/bundles');
   const sizes = await bundleLibraries(outDir);
   for (const [lib, s] of Object.entries(sizes)) {
-    console.log(`${lib.padEnd(10)} js ${s.js} (gzip ${s.jsGzip})  wasm ${s.wasm} (gzip ${s.wasmGzip})  total gzip ${s.totalGzip}  [${s.files.join(', ')}]`);
+    console.log(`${lib.padEnd(10)} js ${s.js} (gzip ${s.jsGzip})  wasm ${s.wasm} (gzip ${s.wasmGzip})  total gzip ${s.totalGzip}  [${s.files.join(', ')}]`
+      + (s.lazy.files.length ? `; on demand: ${s.lazy.jsGzip} gzip [${s.lazy.files.join(', ')}]` : ''));
   }
 }

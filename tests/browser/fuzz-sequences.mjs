@@ -31,6 +31,7 @@ const validCreate = fc.record({
   gutter: flag,
   loadWindow: fc.integer({ min: 1, max: 3 }),
   label: fc.constantFrom('Book', 'Catalogue <img src=x onerror=alert(1)>'),
+  antialias: fc.constantFrom('auto', true, false),
 }, { requiredKeys: ['pages', 'duration'] }).map((options) => {
   if (options.startPage !== undefined) options.startPage %= options.pages;
   return options;
@@ -50,6 +51,7 @@ const BAD_CREATE_VALUES = {
   loadWindow: [0, 2.5, -1, Number.NaN],
   label: ['', '   ', 7],
   wasmUrl: [5],
+  antialias: ['on', 1, null],
   colour: ['red'],
 };
 

@@ -8,7 +8,6 @@ import { actionForKey, createShell } from './book-shell.js';
 import { checkFlipOptions, checkLiveOptions, describeValue, pageEntries, validateOptions } from './options.js';
 import { loadPage } from './page-loader.js';
 import { PointerDrag } from './pointer-drag.js';
-import { StaticBook } from './static-book.js';
 import { listenForTapsAndSwipes } from './tap-swipe.js';
 import { listenForZoom } from './zoom-input.js';
 import { createLinkLayer } from './link-layer.js';
@@ -83,6 +82,8 @@ export class Flipbook extends EventTarget {
     this.destroy();
     if (canFallBack) {
       try {
+        // Loaded only now: books that have WebGL2 never download the fallback.
+        const { StaticBook } = await import('./static-book.js');
         error.fallback = await StaticBook._fromSettings(this._container, this._settings, pdf);
       } catch (fallbackError) {
         pdf?.destroy();
