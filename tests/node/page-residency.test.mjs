@@ -3,7 +3,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import {
-  MAX_TURNS_IN_FLIGHT, pagesInFrame, pagesToRelease, textureCapacity, wantedPages,
+  MAX_TURNS_IN_FLIGHT, PageCache, pagesInFrame, pagesToRelease, textureCapacity, wantedPages,
 } from '../../web/src/page-residency.js';
 
 const resting = (frontPage, backPage, turnedOver) => ({ frontPage, backPage, resting: true, curl: { rho: turnedOver ? Math.PI : 0 } });
@@ -48,4 +48,23 @@ test('node: wantedPages stops at the ends of the book and at capacity, so a huge
   const wanted = wantedPages({ onScreen: [5], first: 5, last: 5, loadWindow: 1e12, pageCount: 12, capacity: textureCapacity(1e12) });
   assert.deepEqual(wanted, [5, 6, 4, 7, 3, 8, 2, 9, 1, 10, 0, 11]);
   assert.deepEqual(wantedPages({ onScreen: [500], first: 500, last: 500, loadWindow: 1e12, pageCount: 1e6, capacity: 5 }), [500, 501, 499, 502, 498]);
+});
+
+test('node: PageCache walking through a 1000-page book wants the open pages and their neighbours, and never keeps more than its capacity, least recently wanted going first', () => {
+  const cache = new PageCache(4);
+  assert.equal(cache.capacity, textureCapacity(4));
+  let resident = [];
+  let most = 0;
+  for (let first = 1; first + 1 < 1000; first += 2) {
+    const wanted = cache.want({ onScreen: [first, first + 1], first, last: first + 1, loadWindow: 4, pageCount: 1000 });
+    assert.deepEqual(wanted.slice(0, 2), [first, first + 1], 'the open pages come first');
+    assert.ok(wanted.every((page) => page >= 0 && page < 1000));
+    resident = [...new Set([...resident, ...wanted])];
+    const released = cache.release(resident);
+    assert.ok(released.every((page) => !cache.wanted.has(page)), 'a wanted page is never let go');
+    resident = resident.filter((page) => !released.includes(page));
+    most = Math.max(most, resident.length);
+    if (first > 40) assert.ok(resident.every((page) => Math.abs(page - first) <= 12), `far pages were let go (at ${first}: ${resident})`);
+  }
+  assert.ok(most <= cache.capacity, `at most ${cache.capacity} resident, saw ${most}`);
 });

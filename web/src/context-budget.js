@@ -52,7 +52,9 @@ export class ContextBudget {
   // while it was in view, e.g. when newcomers still counted as visible before their first report.
   _rebalance() {
     for (;;) {
-      const waiting = [...this._leases].filter((lease) => lease.state === 'parked' && lease.visible);
+      // Only books known to be in view: a newcomer counts as visible before its first report, but
+      // waking it on that guess would take a context for a book that may be far below.
+      const waiting = [...this._leases].filter((lease) => lease.state === 'parked' && lease.visible && lease._visibilityReported);
       if (waiting.length === 0) return;
       const live = [...this._leases].filter((lease) => lease.live);
       if (live.length >= this.maxLive && live.every((lease) => lease.visible)) return;
@@ -92,6 +94,7 @@ export class ContextLease {
     this.state = 'new';
     this.view = null;             // the BookView drawing on the canvas now
     this._visible = true;         // until the observer says otherwise, a new book is taken to be in view
+    this._visibilityReported = false;
     this._lastUsed = budget._tick();
     this._lostEventSeen = false;  // a restore is allowed only after the lost event was dispatched
     this._restoreTimer = 0;
@@ -199,6 +202,7 @@ export class ContextLease {
     if (this.state === 'disposed') return;
     if (visible !== this._visible) this._lastUsed = this._budget._tick();  // out of view: from now; in view: used now
     this._visible = visible;
+    this._visibilityReported = true;
     if (visible && this.state === 'parked') this._acquire();
     this._budget._rebalance();
   }

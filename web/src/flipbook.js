@@ -13,7 +13,7 @@ import { listenForZoom } from './zoom-input.js';
 import { createLinkLayer } from './link-layer.js';
 import { contextBudget } from './context-budget.js';
 import { softwareWebGL } from './software-gl.js';
-import { pagesInFrame, pagesToRelease, textureCapacity, wantedPages } from './page-residency.js';
+import { PageCache, pagesInFrame } from './page-residency.js';
 
 // Failures after which a book can still be shown, as still pages: Flipbook.create falls back on these.
 const FALLBACK_CODES = ['webgl2-unavailable', 'engine-unavailable'];
@@ -104,10 +104,7 @@ export class Flipbook extends EventTarget {
     this._pages = pageEntries(settings.pages);
     this._state = this._pages.map(() => 'idle');  // idle | loading | loaded | failed
     this._images = new Map();       // page -> decoded image, while its texture is resident
-    this._lastWanted = new Map();   // page -> tick when it was last wanted (least recently wanted goes first)
-    this._wanted = new Set();
-    this._wantClock = 0;   // counts residency updates, to stamp _lastWanted
-    this._capacity = textureCapacity(settings.loadWindow);
+    this._cache = new PageCache(settings.loadWindow);  // which page textures to keep
     this._loadsInFlight = 0;
     this._idleWaiters = [];
     this._owned = new Set();        // images made here (ImageBitmaps from URLs and Blobs): closed when let go
@@ -487,31 +484,22 @@ export class Flipbook extends EventTarget {
   // releases the least recently wanted beyond the cache's capacity, which does not grow with the book.
   _updateResidency() {
     const open = this._openPages();
-    const wanted = wantedPages({
+    const wanted = this._cache.want({
       onScreen: pagesInFrame(this._view.book.frame()),
       first: open[0],
       last: open[open.length - 1],
       loadWindow: this._settings.loadWindow,
       pageCount: this.pageCount,
-      capacity: this._capacity,
     });
-    this._wantClock++;
-    this._wanted = new Set(wanted);
-    for (const page of wanted) {
-      this._lastWanted.set(page, this._wantClock);
-      if (this._state[page] === 'idle') this._load(page);
-    }
+    for (const page of wanted) if (this._state[page] === 'idle') this._load(page);
     this._releaseExcess();
   }
 
   _releaseExcess() {
-    const resident = [...this._images.keys()];
-    const release = pagesToRelease({ resident, wanted: this._wanted, lastWanted: this._lastWanted, capacity: this._capacity });
-    for (const page of release) {
+    for (const page of this._cache.release([...this._images.keys()])) {
       this._view.releasePageImage(page);
       this._closeIfOwned(this._images.get(page));
       this._images.delete(page);
-      this._lastWanted.delete(page);
       this._state[page] = 'idle';
     }
   }
@@ -526,7 +514,7 @@ export class Flipbook extends EventTarget {
         { index, size: this._textureCover(), signal: this._abort.signal });
       if (owned) this._owned.add(image);
       if (this._destroyed || this._state[index] !== 'loading'
-          || (!this._wanted.has(index) && this._images.size >= this._capacity)) {
+          || (!this._cache.wanted.has(index) && this._images.size >= this._cache.capacity)) {
         // Destroyed, or no longer wanted and no room: not worth a texture.
         this._closeIfOwned(image);
         if (!this._destroyed && this._state[index] === 'loading') this._state[index] = 'idle';

@@ -63,3 +63,32 @@ export function pagesToRelease({ resident, wanted, lastWanted, capacity }) {
     .sort((a, b) => (lastWanted.get(a) ?? -Infinity) - (lastWanted.get(b) ?? -Infinity))
     .slice(0, excess);
 }
+
+/**
+ * One book's cache bookkeeping (Flipbook's textures, StaticBook's images): which pages are wanted now
+ * and when each was last wanted, so that the least recently wanted goes first.
+ */
+export class PageCache {
+  constructor(loadWindow) {
+    this.capacity = textureCapacity(loadWindow);
+    this.wanted = new Set();
+    this._lastWanted = new Map();  // page -> tick of the update that last wanted it
+    this._clock = 0;
+  }
+
+  /** Records and returns the pages wanted now ({ onScreen, first, last, loadWindow, pageCount }). */
+  want(view) {
+    const pages = wantedPages({ ...view, capacity: this.capacity });
+    this._clock++;
+    this.wanted = new Set(pages);
+    for (const page of pages) this._lastWanted.set(page, this._clock);
+    return pages;
+  }
+
+  /** The pages of `resident` to let go now (and forget), least recently wanted first. */
+  release(resident) {
+    const pages = pagesToRelease({ resident, wanted: this.wanted, lastWanted: this._lastWanted, capacity: this.capacity });
+    for (const page of pages) this._lastWanted.delete(page);
+    return pages;
+  }
+}

@@ -5,7 +5,7 @@ import { actionForKey, createShell } from './book-shell.js';
 import { createLinkLayer } from './link-layer.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries, validateOptions } from './options.js';
 import { loadPage } from './page-loader.js';
-import { pagesToRelease, textureCapacity, wantedPages } from './page-residency.js';
+import { PageCache } from './page-residency.js';
 import { listenForTapsAndSwipes } from './tap-swipe.js';
 
 const PAPER = 'rgb(250, 247, 240)';  // the renderer's placeholder paper (kPaper in book_renderer.cpp)
@@ -78,10 +78,7 @@ export class StaticBook extends EventTarget {
     this._pages = pageEntries(settings.pages);
     this._state = this._pages.map(() => 'idle');  // idle | loading | loaded | failed
     this._images = new Map();       // page -> { image, owned } while kept
-    this._lastWanted = new Map();
-    this._wanted = new Set();
-    this._wantClock = 0;
-    this._capacity = textureCapacity(settings.loadWindow);
+    this._cache = new PageCache(settings.loadWindow);  // which page images to keep
     this._loadsInFlight = 0;
     this._idleWaiters = [];
     this._abort = new AbortController();
@@ -291,31 +288,21 @@ export class StaticBook extends EventTarget {
 
   _updateResidency() {
     const open = this._openPages();
-    const wanted = wantedPages({
+    const wanted = this._cache.want({
       onScreen: this._slots().map((slot) => slot.page),
       first: open[0],
       last: open[open.length - 1],
       loadWindow: this._settings.loadWindow,
       pageCount: this.pageCount,
-      capacity: this._capacity,
     });
-    this._wantClock++;
-    this._wanted = new Set(wanted);
-    for (const page of wanted) {
-      this._lastWanted.set(page, this._wantClock);
-      if (this._state[page] === 'idle') this._load(page);
-    }
-    const release = pagesToRelease({
-      resident: [...this._images.keys()], wanted: this._wanted, lastWanted: this._lastWanted, capacity: this._capacity,
-    });
-    for (const page of release) this._drop(page);
+    for (const page of wanted) if (this._state[page] === 'idle') this._load(page);
+    for (const page of this._cache.release([...this._images.keys()])) this._drop(page);
   }
 
   _drop(index) {
     const kept = this._images.get(index);
     if (kept?.owned && typeof kept.image.close === 'function') kept.image.close();  // an ImageBitmap made here
     this._images.delete(index);
-    this._lastWanted.delete(index);
     this._state[index] = 'idle';
   }
 
