@@ -28,7 +28,7 @@ test('browser: demo turns with the arrow keys when the book has focus', async ({
   await page.selectOption('#speed', '0.5');
   await expect(page.locator('#where')).toHaveText('Pages 10–11 of 40');
   await page.focus('#book [aria-roledescription="book"]');
-  // SwiftShader under a loaded CI machine draws few frames a second; each advances at most 0.1 s.
+  // SwiftShader under a loaded CI machine draws few frames a second; each advances at most 0.25 s.
   await page.keyboard.press('ArrowRight');
   await expect(page.locator('#where')).toHaveText('Pages 12–13 of 40', { timeout: 15000 });
   await page.keyboard.press('ArrowLeft');

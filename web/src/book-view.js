@@ -3,7 +3,9 @@
 import { loadEngine } from './engine.js';
 
 const BINDING_OF_DIRECTION = { ltr: 'left', rtl: 'right', vertical: 'top' };
-const MAX_FRAME_SECONDS = 0.1;  // after a stall (hidden tab), jump at most this far per frame
+// A frame advances the clock by the time since the last one, up to this much: turns keep their duration
+// down to 4 frames a second (a slow machine, software WebGL), and a stall (a hidden tab) does not jump.
+const MAX_FRAME_SECONDS = 0.25;
 let nextTargetId = 1;
 
 function naturalSize(source) {
