@@ -176,13 +176,13 @@ function fitFont(g, text, maxWidth, size, template) {
   return size;
 }
 
-/** Greedy word wrap of `text` in the current font. */
-function wrap(g, text, maxWidth) {
+/** Greedy word wrap: `text` in lines no wider than `maxWidth` as `measure(line)` sees it (also demo-pdf.js). */
+export function wrapWords(text, maxWidth, measure) {
   const lines = [];
   let line = '';
   for (const word of text.split(' ')) {
     const next = line ? `${line} ${word}` : word;
-    if (line && g.measureText(next).width > maxWidth) {
+    if (line && measure(next) > maxWidth) {
       lines.push(line);
       line = word;
     } else {
@@ -191,6 +191,11 @@ function wrap(g, text, maxWidth) {
   }
   if (line) lines.push(line);
   return lines;
+}
+
+/** Greedy word wrap of `text` in the canvas's current font. */
+function wrap(g, text, maxWidth) {
+  return wrapWords(text, maxWidth, (line) => g.measureText(line).width);
 }
 
 /** Fills `text` with the current alignment, never wider than maxWidth (fillText squeezes it if needed). */

@@ -1,6 +1,7 @@
 // The demo's PDF example: a twelve-page brochure made in the browser with pdf-lib (a dev dependency),
 // with headings, paragraphs, figures, a contents page whose entries link to their pages, and a web link.
 import { PDFDocument, PDFName, PDFString, StandardFonts, rgb } from '/node_modules/pdf-lib/dist/pdf-lib.esm.min.js';
+import { wrapWords } from './book-pages.js';
 
 const SECTIONS = ['Paper and grain', 'Folding the sheet', 'Sewing the book', 'The turning leaf', 'Cones, not cylinders',
   'Light on paper', 'Shadows in the gutter', 'Reading on screens', 'Zoom and detail'];
@@ -13,19 +14,7 @@ function paragraph(seed, count) {
 
 /** Lays `text` out in lines of at most `width` points; returns the lines. */
 function wrap(text, font, size, width) {
-  const lines = [];
-  let line = '';
-  for (const word of text.split(' ')) {
-    const next = line ? `${line} ${word}` : word;
-    if (font.widthOfTextAtSize(next, size) > width && line) {
-      lines.push(line);
-      line = word;
-    } else {
-      line = next;
-    }
-  }
-  if (line) lines.push(line);
-  return lines;
+  return wrapWords(text, width, (line) => font.widthOfTextAtSize(line, size));
 }
 
 export async function makeDemoPdf() {

@@ -8,7 +8,7 @@ import { actionForKey, createShell } from './book-shell.js';
 import { checkFlipOptions, checkLiveOptions, describeValue, pageEntries, validateOptions } from './options.js';
 import { loadPage } from './page-loader.js';
 import { PointerDrag } from './pointer-drag.js';
-import { listenForTapsAndSwipes } from './tap-swipe.js';
+import { listenForTapsAndSwipes, swipeDirection } from './tap-swipe.js';
 import { listenForZoom } from './zoom-input.js';
 import { createLinkLayer } from './link-layer.js';
 import { contextBudget } from './context-budget.js';
@@ -24,7 +24,6 @@ const REFIT_RATIO = 1.25;        // ... and only those this far off the size now
 const MAX_ZOOM = 4;              // the engine's kMaxZoom
 const ZOOM_STEP = 1.25;          // the + and - keys
 const CLICK_SERIES_MS = 300;     // clicks this close together are one series (a double-click, or rapid turning)
-const SWIPE_DOMINANCE = 1.5;     // a swipe travels this much further along the turn than across it
 
 // `pdf` (a URL, ArrayBuffer or Uint8Array) instead of `pages`: pdf.js is imported only then.
 async function openPdfOption(options) {
@@ -379,13 +378,8 @@ export class Flipbook extends EventTarget {
 
   _onSwipe(dx, dy) {
     if (this._destroyed || this._zoomed()) return;
-    const vertical = this._settings.direction === 'vertical';
-    const along = vertical ? dy : dx;
-    const across = vertical ? dx : dy;
-    if (Math.abs(along) < SWIPE_DOMINANCE * Math.abs(across)) return;
-    // The finger moves the way the page turns: toward the spine side of the next page's place.
-    const forwardSign = this._settings.direction === 'rtl' ? 1 : -1;
-    this._turnQuietly(Math.sign(along) === forwardSign ? 'forward' : 'backward');
+    const turn = swipeDirection(dx, dy, this._settings.direction);
+    if (turn) this._turnQuietly(turn);
   }
 
   _onKeyDown(event) {

@@ -6,13 +6,12 @@ import { createLinkLayer } from './link-layer.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries, validateOptions } from './options.js';
 import { loadPage } from './page-loader.js';
 import { PageCache } from './page-residency.js';
-import { listenForTapsAndSwipes } from './tap-swipe.js';
+import { listenForTapsAndSwipes, swipeDirection } from './tap-swipe.js';
 
 const PAPER = 'rgb(250, 247, 240)';  // the renderer's placeholder paper (kPaper in book_renderer.cpp)
 const DEFAULT_PAGE_WIDTH = 0.8;      // the engine's page, 0.8 wide for 1 along the spine
 const FRAME_MARGIN = 1.3;            // room around the pages, as the WebGL book's camera leaves
 const AUTO_DOUBLE_ASPECT = 1.2;      // as Flipbook: wider containers show two pages in 'auto'
-const SWIPE_DOMINANCE = 1.5;
 const IMAGE_OVERSAMPLE = 1.5;        // the size a page function is asked for, per device pixel on screen
 const MAX_ZOOM = 4;                  // Flipbook's range, checked the same way
 
@@ -374,12 +373,8 @@ export class StaticBook extends EventTarget {
 
   _onSwipe(dx, dy) {
     if (this._destroyed) return;
-    const vertical = this._settings.direction === 'vertical';
-    const along = vertical ? dy : dx;
-    const across = vertical ? dx : dy;
-    if (Math.abs(along) < SWIPE_DOMINANCE * Math.abs(across)) return;
-    const forwardSign = this._settings.direction === 'rtl' ? 1 : -1;
-    this._turnQuietly(Math.sign(along) === forwardSign ? 'forward' : 'backward');
+    const turn = swipeDirection(dx, dy, this._settings.direction);
+    if (turn) this._turnQuietly(turn);
   }
 
   _onKeyDown(event) {

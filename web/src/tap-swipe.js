@@ -5,6 +5,21 @@ const TAP_SLOP = 10;          // CSS px a finger may wander and still tap
 const TAP_MAX_MS = 500;
 const SWIPE_MIN = 40;         // CSS px of travel that make a stroke a swipe, slow or fast
 const CLICK_AFTER_TOUCH_MS = 800;  // the compatibility click that follows a tap is not a second tap
+const SWIPE_DOMINANCE = 1.5;  // a swipe travels this much further along the turn than across it
+
+/**
+ * Which way a swipe of (dx, dy) CSS px turns a book of `direction`: 'forward', 'backward', or null
+ * when it runs more across the turn than along it. The finger moves the way the page turns: toward
+ * the spine side of the next page's place.
+ */
+export function swipeDirection(dx, dy, direction) {
+  const vertical = direction === 'vertical';
+  const along = vertical ? dy : dx;
+  const across = vertical ? dx : dy;
+  if (Math.abs(along) < SWIPE_DOMINANCE * Math.abs(across)) return null;
+  const forwardSign = direction === 'rtl' ? 1 : -1;
+  return Math.sign(along) === forwardSign ? 'forward' : 'backward';
+}
 
 /**
  * Calls `tap(clientX, clientY)` for a primary mouse click or a touch/pen tap on `element`, and
