@@ -730,7 +730,7 @@ test('browser: destroy() mid-drag and while pages load leaves nothing behind eit
   await page.mouse.move(corner.x, corner.y);
   await page.mouse.down();
   await page.mouse.move(middle.x, middle.y, { steps: 4 });
-  const dragging = await page.evaluate(() => ({ holding: window.book._view.book.holding(), loading: window.book._loadsInFlight }));
+  const dragging = await page.evaluate(() => ({ holding: window.book._view.book.holding(), loading: window.book._cache.loadsInFlight }));
   expect(dragging.holding).toBe(true);
   expect(dragging.loading).toBeGreaterThan(0);
   expect(await page.evaluate(() => { window.book.destroy(); return window.held.frames(); })).toBe(0);

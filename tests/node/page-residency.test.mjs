@@ -68,3 +68,22 @@ test('node: PageCache walking through a 1000-page book wants the open pages and 
   }
   assert.ok(most <= cache.capacity, `at most ${cache.capacity} resident, saw ${most}`);
 });
+
+test('node: PageCache counts loads in flight and pages settled for progress, and whenIdle resolves when the last load ends', async () => {
+  const cache = new PageCache(1, 5);
+  assert.equal(cache.stateOf(3), 'idle');
+  cache.startLoad(0);
+  cache.startLoad(1);
+  let idle = false;
+  const waiting = cache.whenIdle().then(() => { idle = true; });
+  cache.setState(0, 'loaded');
+  assert.deepEqual(cache.endLoad(), { loaded: 1, total: 5, pending: 1 });
+  cache.setState(1, 'failed');
+  assert.deepEqual(cache.endLoad(), { loaded: 2, total: 5, pending: 0 });
+  await waiting;
+  assert.equal(idle, true);
+  cache.setState(0, 'idle');  // let go: no longer counted as loaded
+  cache.startLoad(2);
+  cache.setState(2, 'loaded');
+  assert.deepEqual(cache.endLoad(), { loaded: 2, total: 5, pending: 0 });
+});

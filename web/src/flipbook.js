@@ -101,11 +101,8 @@ export class Flipbook extends EventTarget {
     // Entries as given (a PDF's fill in their alt and links as their pages render), with links in
     // one form: { rect, href, toPage, title }.
     this._pages = pageEntries(settings.pages);
-    this._state = this._pages.map(() => 'idle');  // idle | loading | loaded | failed
     this._images = new Map();       // page -> decoded image, while its texture is resident
-    this._cache = new PageCache(settings.loadWindow);  // which page textures to keep
-    this._loadsInFlight = 0;
-    this._idleWaiters = [];
+    this._cache = new PageCache(settings.loadWindow, this._pages.length);  // loads, and which textures to keep
     this._owned = new Set();        // images made here (ImageBitmaps from URLs and Blobs): closed when let go
     this._abort = new AbortController();  // page fetches still running when the book is destroyed stop
     this._destroyed = false;
@@ -218,7 +215,7 @@ export class Flipbook extends EventTarget {
     this._owned.clear();
     this._images.clear();
     this._shell.remove();
-    for (const resolve of this._idleWaiters.splice(0)) resolve();
+    this._cache.releaseWaiters();
   }
 
   async _build() {
@@ -485,7 +482,7 @@ export class Flipbook extends EventTarget {
       loadWindow: this._settings.loadWindow,
       pageCount: this.pageCount,
     });
-    for (const page of wanted) if (this._state[page] === 'idle') this._load(page);
+    for (const page of wanted) if (this._cache.stateOf(page) === 'idle') this._load(page);
     this._releaseExcess();
   }
 
@@ -494,28 +491,27 @@ export class Flipbook extends EventTarget {
       this._view.releasePageImage(page);
       this._closeIfOwned(this._images.get(page));
       this._images.delete(page);
-      this._state[page] = 'idle';
+      this._cache.setState(page, 'idle');
     }
   }
 
   async _load(index) {
-    this._state[index] = 'loading';
-    this._loadsInFlight++;
+    this._cache.startLoad(index);
     try {
       // A function makes its page only when the page is wanted (drawn, fetched or rendered on
       // demand), told the size in device pixels the page is drawn at.
       const { image, owned } = await loadPage(this._pages[index].src,
         { index, size: this._textureCover(), signal: this._abort.signal });
       if (owned) this._owned.add(image);
-      if (this._destroyed || this._state[index] !== 'loading'
+      if (this._destroyed || this._cache.stateOf(index) !== 'loading'
           || (!this._cache.wanted.has(index) && this._images.size >= this._cache.capacity)) {
         // Destroyed, or no longer wanted and no room: not worth a texture.
         this._closeIfOwned(image);
-        if (!this._destroyed && this._state[index] === 'loading') this._state[index] = 'idle';
+        if (!this._destroyed && this._cache.stateOf(index) === 'loading') this._cache.setState(index, 'idle');
         return;
       }
       this._upload(index, image);
-      this._state[index] = 'loaded';
+      this._cache.setState(index, 'loaded');
       this._releaseExcess();
       // A source may have learned its page's text and links while making it (a PDF page).
       if (this._openPages().includes(index)) this._showOpenPages();
@@ -523,17 +519,13 @@ export class Flipbook extends EventTarget {
       if (this._destroyed) return;
       // The page keeps the plain paper placeholder; the book keeps working. `reason` says why:
       // 'http', 'network', 'cors' or 'decode' (PageLoadError), or 'upload' (the image would not upload).
-      this._state[index] = 'failed';
+      this._cache.setState(index, 'failed');
       this._emit('pageerror', {
         index, error: error instanceof Error ? error : new Error(String(error)), reason: error?.reason || 'upload',
       });
     } finally {
-      this._loadsInFlight--;
-      if (!this._destroyed) {
-        const loaded = this._state.filter((s) => s === 'loaded' || s === 'failed').length;
-        this._emit('progress', { loaded, total: this.pageCount, pending: this._loadsInFlight });
-      }
-      if (this._loadsInFlight === 0) for (const resolve of this._idleWaiters.splice(0)) resolve();
+      const progress = this._cache.endLoad();
+      if (!this._destroyed) this._emit('progress', progress);
     }
   }
 
@@ -568,8 +560,7 @@ export class Flipbook extends EventTarget {
     if (this._clickSeries && !this._clickSeries.done) {
       return new Promise((resolve) => setTimeout(resolve, CLICK_SERIES_MS + 20)).then(() => this._whenIdle());
     }
-    if (this._loadsInFlight === 0) return Promise.resolve();
-    return new Promise((resolve) => this._idleWaiters.push(resolve));
+    return this._cache.whenIdle();
   }
 
   // ---- size and pixel ratio ----------------------------------------------------------------

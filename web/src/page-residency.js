@@ -65,15 +65,54 @@ export function pagesToRelease({ resident, wanted, lastWanted, capacity }) {
 }
 
 /**
- * One book's cache bookkeeping (Flipbook's textures, StaticBook's images): which pages are wanted now
- * and when each was last wanted, so that the least recently wanted goes first.
+ * One book's cache bookkeeping (Flipbook's textures, StaticBook's images): each page's load state,
+ * the loads in flight, which pages are wanted now and when each was last wanted, so that the least
+ * recently wanted goes first.
  */
 export class PageCache {
-  constructor(loadWindow) {
+  constructor(loadWindow, pageCount) {
     this.capacity = textureCapacity(loadWindow);
     this.wanted = new Set();
+    this.loadsInFlight = 0;
     this._lastWanted = new Map();  // page -> tick of the update that last wanted it
     this._clock = 0;
+    this._states = new Array(pageCount).fill('idle');  // idle | loading | loaded | failed
+    this._settled = 0;             // pages loaded or failed
+    this._idleWaiters = [];
+  }
+
+  /** 'idle', 'loading', 'loaded' or 'failed'. */
+  stateOf(page) { return this._states[page]; }
+
+  /** Sets a page's state (a load started, landed, failed, or was let go: 'idle'). */
+  setState(page, state) {
+    const settled = (s) => s === 'loaded' || s === 'failed';
+    this._settled += (settled(state) ? 1 : 0) - (settled(this._states[page]) ? 1 : 0);
+    this._states[page] = state;
+  }
+
+  /** A load of `page` starts. */
+  startLoad(page) {
+    this.setState(page, 'loading');
+    this.loadsInFlight++;
+  }
+
+  /** A load ended (its page's state set already): the `progress` event's detail. */
+  endLoad() {
+    this.loadsInFlight--;
+    if (this.loadsInFlight === 0) this.releaseWaiters();
+    return { loaded: this._settled, total: this._states.length, pending: this.loadsInFlight };
+  }
+
+  /** Resolves once no page is loading. */
+  whenIdle() {
+    if (this.loadsInFlight === 0) return Promise.resolve();
+    return new Promise((resolve) => this._idleWaiters.push(resolve));
+  }
+
+  /** Lets every whenIdle() resolve now (the book is destroyed). */
+  releaseWaiters() {
+    for (const resolve of this._idleWaiters.splice(0)) resolve();
   }
 
   /** Records and returns the pages wanted now ({ onScreen, first, last, loadWindow, pageCount }). */

@@ -75,11 +75,8 @@ export class StaticBook extends EventTarget {
     super();
     this._settings = settings;
     this._pages = pageEntries(settings.pages);
-    this._state = this._pages.map(() => 'idle');  // idle | loading | loaded | failed
     this._images = new Map();       // page -> { image, owned } while kept
-    this._cache = new PageCache(settings.loadWindow);  // which page images to keep
-    this._loadsInFlight = 0;
-    this._idleWaiters = [];
+    this._cache = new PageCache(settings.loadWindow, this._pages.length);  // loads, and which images to keep
     this._abort = new AbortController();
     this._destroyed = false;
     this._shell = createShell(container, { label: settings.label, direction: settings.direction });
@@ -153,7 +150,7 @@ export class StaticBook extends EventTarget {
     for (const index of [...this._images.keys()]) this._drop(index);
     this._links.remove();
     this._shell.remove();
-    for (const resolve of this._idleWaiters.splice(0)) resolve();
+    this._cache.releaseWaiters();
   }
 
   /** Where the open pages lie on the canvas, in CSS pixels (both places of a spread in double). */
@@ -179,7 +176,7 @@ export class StaticBook extends EventTarget {
     this._shell.showOpenPages(this._openPages(), this.pageCount, this._openPages().map((i) => this._pages[i].alt));
     this._updateResidency();
     this._draw();
-    await new Promise((resolve) => (this._loadsInFlight === 0 ? resolve() : this._idleWaiters.push(resolve)));
+    await this._cache.whenIdle();
     this._emit('ready', { page: this.page });
   }
 
@@ -294,7 +291,7 @@ export class StaticBook extends EventTarget {
       loadWindow: this._settings.loadWindow,
       pageCount: this.pageCount,
     });
-    for (const page of wanted) if (this._state[page] === 'idle') this._load(page);
+    for (const page of wanted) if (this._cache.stateOf(page) === 'idle') this._load(page);
     for (const page of this._cache.release([...this._images.keys()])) this._drop(page);
   }
 
@@ -302,7 +299,7 @@ export class StaticBook extends EventTarget {
     const kept = this._images.get(index);
     if (kept?.owned && typeof kept.image.close === 'function') kept.image.close();  // an ImageBitmap made here
     this._images.delete(index);
-    this._state[index] = 'idle';
+    this._cache.setState(index, 'idle');
   }
 
   _pageSize() {
@@ -312,29 +309,24 @@ export class StaticBook extends EventTarget {
   }
 
   async _load(index) {
-    this._state[index] = 'loading';
-    this._loadsInFlight++;
+    this._cache.startLoad(index);
     try {
       const loaded = await loadPage(this._pages[index].src, { index, size: this._pageSize(), signal: this._abort.signal });
-      if (this._destroyed || this._state[index] !== 'loading') {
+      if (this._destroyed || this._cache.stateOf(index) !== 'loading') {
         if (loaded.owned) loaded.image.close?.();
         return;
       }
       this._images.set(index, loaded);
-      this._state[index] = 'loaded';
+      this._cache.setState(index, 'loaded');
       if (this._slots().some((slot) => slot.page === index)) this._draw();
     } catch (error) {
       if (this._destroyed) return;
-      this._state[index] = 'failed';
+      this._cache.setState(index, 'failed');
       const reason = error && error.reason ? error.reason : 'decode';
       this._emit('pageerror', { index, error: error instanceof Error ? error : new Error(String(error)), reason });
     } finally {
-      this._loadsInFlight--;
-      if (!this._destroyed) {
-        const loaded = this._state.filter((s) => s === 'loaded' || s === 'failed').length;
-        this._emit('progress', { loaded, total: this.pageCount, pending: this._loadsInFlight });
-      }
-      if (this._loadsInFlight === 0) for (const resolve of this._idleWaiters.splice(0)) resolve();
+      const progress = this._cache.endLoad();
+      if (!this._destroyed) this._emit('progress', progress);
     }
   }
 
