@@ -48,6 +48,12 @@ export class BookView {
   pageImageSize(page: number): { width: number; height: number } | null;
   /** The resting pages' rectangle on the canvas in CSS px from its top-left (a whole spread in double). */
   restingRect(): { x: number; y: number; width: number; height: number };
+  /** The drawing-buffer pixel under a viewport point, and the buffer size (the engine's camera works in these). */
+  bufferPixel(clientX: number, clientY: number): { x: number; y: number; width: number; height: number };
+  /** Magnifies the view to `scale` (1..4) about a viewport point, which keeps its table point. */
+  zoomAbout(scale: number, clientX: number, clientY: number): void;
+  /** Moves the zoomed view by CSS pixels, as far as the pages still fill it. */
+  panBy(dxCss: number, dyCss: number): void;
   /** Turns asked for that wait for a leaf still in flight. */
   readonly queuedTurns: number;
   /** The WebGL context is lost and not yet restored: turns in flight and a held leaf are paused. */

@@ -153,6 +153,36 @@ export class BookView {
     return { x: r.x * toCss, y: r.y * toCss, width: r.width * toCss, height: r.height * toCss };
   }
 
+  /**
+   * The drawing-buffer pixel under a viewport point, and the buffer's size: the engine's camera (drag
+   * solve, zoom) works in these, the DOM in CSS pixels.
+   */
+  bufferPixel(clientX, clientY) {
+    const box = this.canvas.getBoundingClientRect();
+    const { width, height } = this.fitCanvas();
+    return {
+      x: ((clientX - box.left) * width) / Math.max(1, box.width),
+      y: ((clientY - box.top) * height) / Math.max(1, box.height),
+      width,
+      height,
+    };
+  }
+
+  /** Magnifies the view to `scale` keeping the table point under the viewport point where it is. */
+  zoomAbout(scale, clientX, clientY) {
+    const p = this.bufferPixel(clientX, clientY);
+    this.book.zoomAbout(scale, p.x, p.y, p.width, p.height);
+    this.requestRender();
+  }
+
+  /** Moves the zoomed view by CSS pixels, as far as the pages still fill it. */
+  panBy(dxCss, dyCss) {
+    const origin = this.bufferPixel(0, 0);
+    const moved = this.bufferPixel(dxCss, dyCss);
+    this.book.panBy(moved.x - origin.x, moved.y - origin.y, origin.width, origin.height);
+    this.requestRender();
+  }
+
   setOptions(options) {
     this.renderer.setOptions(options);
     this.requestRender();

@@ -716,26 +716,18 @@ export class Flipbook extends EventTarget {
   _zoomAbout(scale, clientX, clientY) {
     if (this._destroyed) return;
     const before = this.zoom;
-    const box = this._canvas.getBoundingClientRect();
-    const { width, height } = this._view.fitCanvas();
-    const clamped = Math.min(MAX_ZOOM, Math.max(1, scale));
-    this._view.book.zoomAbout(clamped, ((clientX - box.left) * width) / Math.max(1, box.width),
-      ((clientY - box.top) * height) / Math.max(1, box.height), width, height);
+    this._view.zoomAbout(Math.min(MAX_ZOOM, Math.max(1, scale)), clientX, clientY);
     this._afterZoom(before);
   }
 
   /** Moves the zoomed view by CSS pixels (a pan), as far as the pages still fill it. */
   _panBy(dxCss, dyCss) {
-    const box = this._canvas.getBoundingClientRect();
-    const { width, height } = this._view.fitCanvas();
-    this._view.book.panBy((dxCss * width) / Math.max(1, box.width), (dyCss * height) / Math.max(1, box.height), width, height);
-    this._view.requestRender();
+    this._view.panBy(dxCss, dyCss);
     this._layoutLinks();
   }
 
   _afterZoom(before) {
     const scale = this.zoom;
-    this._view.requestRender();
     this._layoutLinks();
     // Zoomed in, a finger pans the view; at 1x the browser may scroll the page across the turn again.
     this._canvas.style.touchAction = scale > 1.001 ? 'none' : this._restingTouchAction;

@@ -57,16 +57,7 @@ export class PointerDrag {
   _enabled() { return this.view.renderer && (this._hooks.enabled ? this._hooks.enabled() : true); }
 
   /** Drawing-buffer pixel of a pointer event, and the buffer size (the engine's camera works in these). */
-  _pixel(event) {
-    const rect = this.canvas.getBoundingClientRect();
-    const { width, height } = this.view.fitCanvas();
-    return {
-      x: ((event.clientX - rect.left) * width) / Math.max(1, rect.width),
-      y: ((event.clientY - rect.top) * height) / Math.max(1, rect.height),
-      width,
-      height,
-    };
-  }
+  _pixel(event) { return this.view.bufferPixel(event.clientX, event.clientY); }
 
   _onDown(event) {
     if (!this._enabled() || !event.isPrimary || event.button !== 0 || this._drag) return;
