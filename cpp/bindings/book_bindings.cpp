@@ -10,7 +10,6 @@
 #include "book.hpp"
 #include "book_camera.hpp"
 #include "js_values.hpp"
-#include "leaf_placement.hpp"
 #include "page_drag.hpp"
 
 namespace {
@@ -164,19 +163,14 @@ val gripPixelNow(const Book& book, val grip, double width, double height) {
     return out;
 }
 
-// Where the resting pages lie on the canvas, in drawing-buffer pixels: the view frame's corners
-// projected by the camera the renderer draws with.
-val restingRect(const Book& book, double width, double height) {
-    const BookCamera camera = cameraOf(book, width, height);
-    const BookConfig& c = book.config();
-    const ViewFrame frame = viewFrameFor(c.display, c.binding, c.pageWidth, c.pageHeight);
-    const glm::dvec2 low = worldToPixel(camera, {frame.center - frame.halfExtent, 0.0});
-    const glm::dvec2 high = worldToPixel(camera, {frame.center + frame.halfExtent, 0.0});
+// Where the resting pages lie on the canvas, in drawing-buffer pixels (book_camera.hpp).
+val restingRectOf(const Book& book, double width, double height) {
+    const PixelRect r = restingRect(cameraOf(book, width, height), book.config());
     val out = val::object();
-    out.set("x", std::min(low.x, high.x));
-    out.set("y", std::min(low.y, high.y));
-    out.set("width", std::abs(high.x - low.x));
-    out.set("height", std::abs(high.y - low.y));
+    out.set("x", r.x);
+    out.set("y", r.y);
+    out.set("width", r.width);
+    out.set("height", r.height);
     return out;
 }
 
@@ -190,12 +184,8 @@ double zoomAboutPixel(Book& book, val scale, double x, double y, double width, d
 
 // Moves the zoomed picture by (dx, dy) canvas pixels, as far as the pages still fill the view.
 void panByPixels(Book& book, double dx, double dy, double width, double height) {
-    cameraOf(book, width, height);
-    const glm::dvec2 d = pixelOf(dx, dy);
-    ViewZoom z = book.zoom();
-    z.offsetX += 2.0 * d.x / width;
-    z.offsetY -= 2.0 * d.y / height;
-    book.setZoom(z);
+    cameraOf(book, width, height);  // checks the size
+    book.setZoom(panBy(book.zoom(), pixelOf(dx, dy), static_cast<int>(width), static_cast<int>(height)));
 }
 
 val viewProjection(const Book& book, double width, double height) {
@@ -254,7 +244,7 @@ EMSCRIPTEN_BINDINGS(conecurl_book) {
         .function("hintHeldTurn", &hintHeld)
         .function("gripPixel", &gripPixelNow)
         .function("viewProjection", &viewProjection)
-        .function("restingRect", &restingRect)
+        .function("restingRect", &restingRectOf)
         .function("zoomAbout", &zoomAboutPixel)
         .function("panBy", &panByPixels)
         .function("zoom", optional_override([](const Book& b) {

@@ -235,13 +235,14 @@ CurlParams Book::poseOf(const Turn& turn) const {
     return sanitize(pose);
 }
 
-void Book::setZoom(const ViewZoom& zoom) {
+ViewZoom clampZoom(const ViewZoom& zoom) {
     const double scale = std::clamp(std::isfinite(zoom.scale) ? zoom.scale : 1.0, 1.0, kMaxZoom);
     const double reach = scale - 1.0;
-    zoom_.scale = scale;
-    zoom_.offsetX = std::clamp(std::isfinite(zoom.offsetX) ? zoom.offsetX : 0.0, -reach, reach);
-    zoom_.offsetY = std::clamp(std::isfinite(zoom.offsetY) ? zoom.offsetY : 0.0, -reach, reach);
+    return ViewZoom{scale, std::clamp(std::isfinite(zoom.offsetX) ? zoom.offsetX : 0.0, -reach, reach),
+                    std::clamp(std::isfinite(zoom.offsetY) ? zoom.offsetY : 0.0, -reach, reach)};
 }
+
+void Book::setZoom(const ViewZoom& zoom) { zoom_ = clampZoom(zoom); }
 
 void Book::jumpTo(int position) {
     turnCount_ = 0;

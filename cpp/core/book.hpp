@@ -27,6 +27,10 @@ struct ViewZoom {
     double offsetY = 0.0;
 };
 
+// `zoom` kept so the pages still fill the view: scale in [1, kMaxZoom], offset no more than
+// scale - 1 either way; NaN scale counts as 1, NaN offset as 0.
+ViewZoom clampZoom(const ViewZoom& zoom);
+
 struct BookConfig {
     int pageCount = 0;
     Display display = Display::Double;

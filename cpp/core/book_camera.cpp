@@ -46,12 +46,23 @@ BookCamera bookCamera(const BookConfig& c, int width, int height, const ViewZoom
 ViewZoom zoomAbout(const ViewZoom& zoom, double scale, glm::dvec2 pixel, int width, int height) {
     const double ndcX = 2.0 * pixel.x / std::max(1, width) - 1.0;
     const double ndcY = 1.0 - 2.0 * pixel.y / std::max(1, height);
-    const double s = std::clamp(std::isfinite(scale) ? scale : 1.0, 1.0, kMaxZoom);
+    const double s = clampZoom(ViewZoom{scale}).scale;
     // The unzoomed picture point under the pixel, then the offset that puts it back there.
     const double px = (ndcX - zoom.offsetX) / zoom.scale;
     const double py = (ndcY - zoom.offsetY) / zoom.scale;
-    const double reach = s - 1.0;
-    return ViewZoom{s, std::clamp(ndcX - s * px, -reach, reach), std::clamp(ndcY - s * py, -reach, reach)};
+    return clampZoom(ViewZoom{s, ndcX - s * px, ndcY - s * py});
+}
+
+ViewZoom panBy(const ViewZoom& zoom, glm::dvec2 pixels, int width, int height) {
+    return clampZoom(ViewZoom{zoom.scale, zoom.offsetX + 2.0 * pixels.x / std::max(1, width),
+                              zoom.offsetY - 2.0 * pixels.y / std::max(1, height)});
+}
+
+PixelRect restingRect(const BookCamera& camera, const BookConfig& config) {
+    const ViewFrame frame = viewFrameFor(config.display, config.binding, config.pageWidth, config.pageHeight);
+    const glm::dvec2 low = worldToPixel(camera, {frame.center - frame.halfExtent, 0.0});
+    const glm::dvec2 high = worldToPixel(camera, {frame.center + frame.halfExtent, 0.0});
+    return PixelRect{std::min(low.x, high.x), std::min(low.y, high.y), std::abs(high.x - low.x), std::abs(high.y - low.y)};
 }
 
 glm::dvec2 worldToPixel(const BookCamera& camera, glm::dvec3 world) {

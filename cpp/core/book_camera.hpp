@@ -24,8 +24,19 @@ struct BookCamera {
 BookCamera bookCamera(const BookConfig& config, int width, int height, const ViewZoom& zoom = {});
 
 // `zoom` changed to `scale` so that the table point under `pixel` stays under it (zooming about the
-// pointer), kept inside the limits of Book::setZoom.
+// pointer), kept inside clampZoom's limits.
 ViewZoom zoomAbout(const ViewZoom& zoom, double scale, glm::dvec2 pixel, int width, int height);
+
+// `zoom` moved by (dx, dy) canvas pixels (a pan), kept inside clampZoom's limits: the pages still
+// fill the view.
+ViewZoom panBy(const ViewZoom& zoom, glm::dvec2 pixels, int width, int height);
+
+// Where the resting pages lie on the canvas (the view frame's corners projected by `camera`), in
+// pixels: both page places of a spread in double display, the one page in single.
+struct PixelRect {
+    double x = 0.0, y = 0.0, width = 0.0, height = 0.0;
+};
+PixelRect restingRect(const BookCamera& camera, const BookConfig& config);
 
 // Canvas pixel (x right, y down, origin at the top-left corner) of a world point.
 glm::dvec2 worldToPixel(const BookCamera& camera, glm::dvec3 world);

@@ -383,4 +383,38 @@ TEST(BookCameraNative, ZoomingAboutAPixelKeepsTheTablePointUnderItAndStaysWithin
     EXPECT_NEAR(grip->pagePoint.x, kW * 0.95, 1e-9);
 }
 
+TEST(BookCameraNative, PanningMovesTheZoomedPictureWithThePointerAndStopsWhereThePagesEnd) {
+    Book book = makeBook(Binding::Left, Display::Double);
+    const ViewZoom zoomed = zoomAbout(ViewZoom{}, 2.0, {kCanvasW / 2.0, kCanvasH / 2.0}, kCanvasW, kCanvasH);
+    const dvec2 pixel(600.0, 400.0);
+    const dvec3 table = pixelToTable(bookCamera(book.config(), kCanvasW, kCanvasH, zoomed), pixel);
+    const ViewZoom panned = panBy(zoomed, {30.0, -20.0}, kCanvasW, kCanvasH);
+    const dvec2 moved = worldToPixel(bookCamera(book.config(), kCanvasW, kCanvasH, panned), table);
+    EXPECT_NEAR(moved.x, pixel.x + 30.0, 1e-6);
+    EXPECT_NEAR(moved.y, pixel.y - 20.0, 1e-6);
+    EXPECT_EQ(panned.scale, zoomed.scale);
+    // A pan past the pages' frame stops at it; at 1x nothing moves; a NaN pan leaves no NaN in the view.
+    EXPECT_EQ(panBy(zoomed, {1e6, -1e6}, kCanvasW, kCanvasH).offsetX, zoomed.scale - 1.0);
+    EXPECT_EQ(panBy(zoomed, {1e6, -1e6}, kCanvasW, kCanvasH).offsetY, zoomed.scale - 1.0);
+    EXPECT_EQ(panBy(ViewZoom{}, {50.0, 50.0}, kCanvasW, kCanvasH).offsetX, 0.0);
+    EXPECT_TRUE(std::isfinite(panBy(zoomed, {std::nan(""), 0.0}, kCanvasW, kCanvasH).offsetX));
+}
+
+TEST(BookCameraNative, TheRestingRectangleIsTheProjectedViewFrameCenteredWithRoomAround) {
+    for (Display display : {Display::Double, Display::Single}) {
+        Book book = makeBook(Binding::Left, display);
+        const BookCamera camera = bookCamera(book.config(), kCanvasW, kCanvasH);
+        const PixelRect r = restingRect(camera, book.config());
+        EXPECT_NEAR(r.x + r.width / 2.0, kCanvasW / 2.0, 1e-6);
+        EXPECT_NEAR(r.y + r.height / 2.0, kCanvasH / 2.0, 1e-6);
+        EXPECT_LT(r.width, kCanvasW);
+        EXPECT_LT(r.height, kCanvasH);
+        // The open page's corners lie on its edges.
+        const dvec2 corner = restingPixel(book, camera, false, {kW, kH});
+        EXPECT_TRUE(std::abs(corner.x - (r.x + r.width)) < 1e-6 || std::abs(corner.x - r.x) < 1e-6) << corner.x;
+        const double aspect = display == Display::Double ? 2.0 * kW / kH : kW / kH;
+        EXPECT_NEAR(r.width / r.height, aspect, 1e-6);
+    }
+}
+
 }  // namespace
