@@ -61,3 +61,22 @@ test('browser: two animated flips at once end at the later one\'s page and the b
   expect(result.animating).toBe(false);
   expect(result.landed).toBeLessThan(12);
 });
+
+test('browser: a jump by flip() while a page is dragged ends the drag; the pointer moving on and letting go throws nothing (dragHeldTurn threw "no held turn")', async ({ page }) => {
+  const problems = await openReady(page, FIXTURE);
+  await page.evaluate(() => window.openBook({ pages: 8, startPage: 2, display: 'double', duration: 100 }));
+  const at = (fx, fy) => page.evaluate(([fx, fy]) => window.halfPoint(fx, fy), [fx, fy]);
+  const corner = await at(0.995, 0.99);
+  const middle = await at(0.7, 0.9);
+  await page.mouse.move(corner.x, corner.y);
+  await page.mouse.down();
+  await page.mouse.move(middle.x, middle.y, { steps: 4 });
+  expect(await page.evaluate(() => window.book._view.book.holding())).toBe(true);
+  await page.evaluate(() => window.book.flip(0, { animate: false }));
+  await page.mouse.move(middle.x - 40, middle.y, { steps: 3 });
+  await page.mouse.up();
+  await page.evaluate(() => window.settle());
+  expect(problems).toEqual([]);
+  expect(await page.evaluate(() => ({ page: window.book.page, holding: window.book._view.book.holding() })))
+    .toEqual({ page: 0, holding: false });
+});

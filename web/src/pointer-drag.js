@@ -105,6 +105,12 @@ export class PointerDrag {
   }
 
   _follow(event) {
+    // The held turn can end without the pointer (flip() jumping, a display rebuild): the drag ends
+    // with it, and the pointer's later moves and release do nothing.
+    if (!this.view.book.holding()) {
+      this._drag = null;
+      return;
+    }
     const p = this._pixel(event);
     const now = event.timeStamp || performance.now();
     const samples = this._drag.samples;
