@@ -1,6 +1,7 @@
 // Browser tests run in Debian's Chromium (never a downloaded one) with WebGL2 on SwiftShader, so they
 // behave the same on any machine without a GPU. The repository is served by scripts/serve.mjs.
 import { defineConfig } from '@playwright/test';
+import { chromiumLaunchOptions } from './scripts/chromium.mjs';
 
 // CONECURL_TEST_PORT lets several checkouts run their browser tests side by side.
 const port = Number(process.env.CONECURL_TEST_PORT) || 8089;
@@ -17,13 +18,7 @@ export default defineConfig({
     baseURL: `http://127.0.0.1:${port}`,
     viewport: { width: 800, height: 600 },
     deviceScaleFactor: 1,
-    launchOptions: {
-      executablePath: process.env.CHROMIUM_PATH || '/usr/bin/chromium',
-      args: [
-        '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-background-networking',
-        '--disable-component-update', '--disable-sync', '--no-first-run',
-      ],
-    },
+    launchOptions: chromiumLaunchOptions(),
   },
   webServer: {
     command: `node scripts/serve.mjs --port ${port}`,

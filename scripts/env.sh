@@ -3,4 +3,3 @@
 if [ -d /usr/share/nodejs ] && [ -z "${NODE_PATH:-}" ]; then
   export NODE_PATH=/usr/share/nodejs
 fi
-export CHROMIUM_PATH="${CHROMIUM_PATH:-$(command -v chromium || echo /usr/bin/chromium)}"

@@ -5,11 +5,8 @@ import { chromium } from '@playwright/test';
 import {
   busiestRenderer, cpuDelta, heapAfterGc, mainThread, processCpu, pssBytes, rendererAndGpu,
 } from './metrics.mjs';
+import { chromiumLaunchOptions } from '../chromium.mjs';
 
-export const CHROMIUM_ARGS = [
-  '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-background-networking',
-  '--disable-component-update', '--disable-sync', '--no-first-run',
-];
 
 const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
 
@@ -22,10 +19,7 @@ const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
  * @param {number} o.idleMs       how long idle CPU is sampled
  */
 export async function measureOnce({ url, viewport, turns, turnTimeoutMs, idleMs }) {
-  const browser = await chromium.launch({
-    executablePath: process.env.CHROMIUM_PATH || '/usr/bin/chromium',
-    args: CHROMIUM_ARGS,
-  });
+  const browser = await chromium.launch(chromiumLaunchOptions());
   const errors = [];
   try {
     const context = await browser.newContext({ viewport, deviceScaleFactor: 1 });

@@ -9,7 +9,7 @@ import { spawn } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import { chromium } from '@playwright/test';
-import { CHROMIUM_ARGS } from './measure.mjs';
+import { chromiumLaunchOptions } from '../chromium.mjs';
 import { cpuDelta, processCpu, summarize } from './metrics.mjs';
 
 const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
@@ -46,7 +46,7 @@ const variants = chosen ? chosen.split(',').map((i) => {
 
 const server = spawn(process.execPath, [path.join(root, 'scripts/serve.mjs'), '--port', String(port)], { stdio: 'ignore' });
 await new Promise((resolve) => setTimeout(resolve, 500));
-const browser = await chromium.launch({ executablePath: process.env.CHROMIUM_PATH || '/usr/bin/chromium', args: CHROMIUM_ARGS });
+const browser = await chromium.launch(chromiumLaunchOptions());
 try {
   const viewport = display === 'double' ? { width: 1600, height: 1100 } : { width: 800, height: 1100 };
   const page = await browser.newPage({ viewport, deviceScaleFactor: 1 });

@@ -10,7 +10,8 @@ import os from 'node:os';
 import path from 'node:path';
 import { chromium } from '@playwright/test';
 import { bundleLibraries, LIBRARIES } from './bundle.mjs';
-import { CHROMIUM_ARGS, measureOnce } from './measure.mjs';
+import { measureOnce } from './measure.mjs';
+import { chromiumLaunchOptions } from '../chromium.mjs';
 import { summarize } from './metrics.mjs';
 import { writePageImages } from './page-images.mjs';
 import { frameChart, markdown, readmeTables, summarizeRuns } from './report.mjs';
@@ -76,7 +77,7 @@ async function startServer(port) {
 }
 
 async function chromiumVersion() {
-  const browser = await chromium.launch({ executablePath: process.env.CHROMIUM_PATH || '/usr/bin/chromium', args: CHROMIUM_ARGS });
+  const browser = await chromium.launch(chromiumLaunchOptions());
   const version = browser.version();
   await browser.close();
   return `Chromium ${version}`;
