@@ -17,8 +17,7 @@ function allowedFiles() {
   const sources = fs.readdirSync(path.join(repositoryRoot, 'web/src'))
     .filter((name) => name.endsWith('.js') || name.endsWith('.d.ts'))
     .map((name) => `web/src/${name}`);
-  const docs = ['README.md', 'LICENSE'].filter((name) => fs.existsSync(path.join(repositoryRoot, name)));
-  return ['package.json', ...docs, 'dist/conecurl-engine.mjs', 'dist/conecurl-engine.wasm', ...sources].sort();
+  return ['package.json', 'README.md', 'LICENSE', 'dist/conecurl-engine.mjs', 'dist/conecurl-engine.wasm', ...sources].sort();
 }
 
 /** Every string an exports entry points at, with the condition path that leads to it. */
@@ -27,7 +26,7 @@ function exportTargets(entry, where) {
   return Object.entries(entry).flatMap(([condition, value]) => exportTargets(value, `${where} ${condition}`));
 }
 
-test('node: npm pack holds exactly the engine, the web/src modules and typings, README and package.json (needs the wasm built)', () => {
+test('node: npm pack holds exactly the engine, the web/src modules and typings, README, LICENSE and package.json (needs the wasm built)', () => {
   const files = packed().files.map((file) => file.path).sort();
   assert.deepEqual(files, allowedFiles());
   for (const file of files) assert.doesNotMatch(file, /(^|\/)(tests?|demo|cpp|shaders|scripts)\//);
