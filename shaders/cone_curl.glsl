@@ -33,11 +33,11 @@ float oneMinusCos(float b) {
     return 2.0 * s * s;
 }
 
-// curl = (theta, apexY, rho). Returns the point on the cone before the spine rotation; beta out.
-vec3 deformOntoCone(vec2 q, vec3 curl, out float beta) {
-    float sinT = preciseSin(curl.x);
-    float cosT = preciseCos(curl.x);
-    float apexY = curl.y;
+// The cone's apex height and (sin theta, cos theta), which are the same for every vertex and so come
+// from C++. Returns the point on the cone before the spine rotation; beta out.
+vec3 deformOntoCone(vec2 q, float apexY, vec2 sinCosTheta, out float beta) {
+    float sinT = sinCosTheta.x;
+    float cosT = sinCosTheta.y;
     float R = length(vec2(q.x, q.y - apexY));
     // asin(x / R) as atan(x, y - Ay): the same angle with the apex below the page, and exact near x = R.
     beta = clamp(preciseAtan(q.x, q.y - apexY) / sinT, -kPi, kPi);
@@ -48,24 +48,26 @@ vec3 deformOntoCone(vec2 q, vec3 curl, out float beta) {
     return vec3(r * preciseSin(beta), heightAboveApexMinusAy - r * omc * sinT, r * omc * cosT);
 }
 
-vec3 rotateAboutSpine(vec3 v, float rho) {
-    float c = preciseCos(rho);
-    float s = preciseSin(rho);
+// sinCosRho = (sin rho, cos rho).
+vec3 rotateAboutSpine(vec3 v, vec2 sinCosRho) {
+    float s = sinCosRho.x;
+    float c = sinCosRho.y;
     return vec3(v.x * c - v.z * s, v.y, v.x * s + v.z * c);
 }
 
-vec3 curlPoint(vec2 q, vec3 curl) {
+// trig = (sin theta, cos theta, sin rho, cos rho) of the leaf's curl.
+vec3 curlPoint(vec2 q, float apexY, vec4 trig) {
     float beta;
-    return rotateAboutSpine(deformOntoCone(q, curl, beta), curl.z);
+    return rotateAboutSpine(deformOntoCone(q, apexY, trig.xy, beta), trig.zw);
 }
 
 // Closed-form front normal (see ../shared/docs/cone-curl-math.md, "Normals").
-vec3 curlNormalAnalytic(vec2 q, vec3 curl) {
+vec3 curlNormalAnalytic(vec2 q, float apexY, vec4 trig) {
     float beta;
-    deformOntoCone(q, curl, beta);
-    float sinT = preciseSin(curl.x);
-    float cosT = preciseCos(curl.x);
+    deformOntoCone(q, apexY, trig.xy, beta);
+    float sinT = trig.x;
+    float cosT = trig.y;
     float omc = oneMinusCos(beta);
     vec3 n = vec3(-cosT * preciseSin(beta), sinT * cosT * omc, 1.0 - cosT * cosT * omc);
-    return rotateAboutSpine(n, curl.z);
+    return rotateAboutSpine(n, trig.zw);
 }

@@ -49,23 +49,22 @@ void setOptions(BookRenderer& r, val options) {
     r.setOptions(next);
 }
 
-// `pixels` is any array-like of width * height * 4 bytes (Uint8Array, Uint8ClampedArray).
-void setPageImage(BookRenderer& r, val pageValue, val widthValue, val heightValue, val pixels) {
+// `source` is a browser image (ImageBitmap, canvas, <img>, ImageData, video) `width` x `height`
+// pixels big, uploaded by the browser straight into the page's texture (no copy through the heap).
+// A source the page may not read throws a SecurityError DOMException, as WebGL itself would.
+void setPageImage(BookRenderer& r, val pageValue, val source, val widthValue, val heightValue) {
     const int page = js::wholeNumber(pageValue, "page", 0, 1e6);
     const int width = js::wholeNumber(widthValue, "image width", 1, 65536);
     const int height = js::wholeNumber(heightValue, "image height", 1, 65536);
-    const double expected = static_cast<double>(width) * height * 4.0;
-    const bool arrayLike = pixels.typeOf().as<std::string>() == "object" && !pixels.isNull() && pixels["length"].isNumber();
-    if (!arrayLike || pixels["length"].as<double>() != expected) {
-        js::throwError("TypeError", "page image pixels must be an array of width * height * 4 RGBA bytes (" +
-                                        js::digits(static_cast<long long>(expected)) + " for " + js::digits(width) +
-                                        "x" + js::digits(height) + ")");
+    if (source.isNull() || source.typeOf().as<std::string>() != "object") {
+        js::throwError("TypeError", "page image must be an ImageBitmap, canvas, image, ImageData or video");
     }
-    std::string problem;
-    {
-        std::vector<std::uint8_t> bytes(static_cast<size_t>(expected));
-        val(emscripten::typed_memory_view(bytes.size(), bytes.data())).call<void>("set", pixels);
-        problem = r.setPageImage(page, width, height, bytes.data());
+    const std::string problem = r.setPageImage(page, width, height, source.as_handle());
+    if (problem == BookRenderer::kTaintedSource) {
+        val::global("DOMException")
+            .new_(val("conecurl: page image is cross-origin without CORS, so its pixels cannot be read"),
+                  val("SecurityError"))
+            .throw_();
     }
     if (!problem.empty()) js::throwError("Error", problem);
 }
@@ -99,7 +98,7 @@ EMSCRIPTEN_BINDINGS(conecurl_renderer) {
                       return r.hasPageImage(js::wholeNumber(page, "page", 0, 1e6));
                   }))
         .function("residentPageImages", &BookRenderer::residentPageImages)
-        .function("draw", &BookRenderer::draw)
+        .function("draw", select_overload<void(const Book&)>(&BookRenderer::draw))
         .function("framesDrawn", &BookRenderer::framesDrawn)
         .function("readPixels", &readPixels)
         .function("captureLeaf", optional_override([](BookRenderer& r, const Book& book, val index) {

@@ -1,6 +1,9 @@
-// WebGL2 drawing of a book frame. Per frame only uniforms change; the page grid is a static buffer
+// WebGL2 drawing of a book frame. Per frame only uniforms change, and only those whose value did;
+// constant uniforms and samplers are set once after linking. The page grid is a static buffer
 // rebuilt only when the canvas size calls for a different resolution.
 #include "book_renderer.hpp"
+
+#include <emscripten/em_js.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +21,18 @@
 // WebGL2's getBufferSubData, which Emscripten's GL library implements but GLES3 headers omit (GLES
 // has glMapBufferRange instead, which WebGL lacks). Needed to read transform feedback back.
 extern "C" void glGetBufferSubData(GLenum target, GLintptr offset, GLsizeiptr size, void* data);
+
+// texImage2D from a browser image into the texture bound to TEXTURE_2D: the browser copies the
+// pixels to the GPU without passing them through the wasm heap. 0: done; 1: the page may not read
+// the image (SecurityError: cross-origin without CORS); 2: any other refusal.
+EM_JS(int, conecurl_tex_image_from_source, (void* source), {
+    try {
+        GLctx.texImage2D(0x0DE1, 0, 0x8058, 0x1908, 0x1401, Emval.toValue(source));  // TEXTURE_2D, RGBA8, RGBA, UNSIGNED_BYTE
+        return 0;
+    } catch (error) {
+        return error && error.name === 'SecurityError' ? 1 : 2;
+    }
+});
 
 namespace conecurl {
 namespace {
@@ -70,30 +85,48 @@ bool BookRenderer::makeCurrent() {
     return context_ && emscripten_webgl_make_context_current(context_) == EMSCRIPTEN_RESULT_SUCCESS;
 }
 
-BookRenderer::Uniforms BookRenderer::locate(GLuint program) {
-    Uniforms u;
-    auto at = [program](const char* name) { return glGetUniformLocation(program, name); };
-    u.curl = at("uCurl");
-    u.normalStep = at("uNormalStep");
-    u.pageToWorld = at("uPageToWorld");
-    u.viewProjection = at("uViewProjection");
-    u.lightDirection = at("uLightDirection");
-    u.facingTexture = at("uFacingTexture");
-    u.awayTexture = at("uAwayTexture");
-    u.facingUv = at("uFacingUv");
-    u.awayUv = at("uAwayUv");
-    u.pageSize = at("uPageSize");
-    u.eye = at("uEye");
-    u.lighting = at("uLighting");
-    u.gutter = at("uGutter");
-    u.shadow = at("uShadow");
-    u.shadowMask = at("uShadowMask");
-    u.shadowTexel = at("uShadowTexel");
-    u.viewportInverse = at("uViewportInverse");
-    u.paper = at("uPaper");
-    u.shadowStrength = at("uShadowStrength");
-    u.pageWidth = at("uPageWidth");
-    return u;
+void BookRenderer::locate(Program& program) {
+    static constexpr const char* kNames[kUniformCount] = {
+        "uCurl", "uCurlTrig", "uNormalStep", "uPageToWorld", "uViewProjection", "uLightDirection",
+        "uFacingTexture", "uAwayTexture", "uFacingUv", "uAwayUv", "uPageSize", "uEye", "uLighting", "uGutter",
+        "uShadow", "uShadowMask", "uShadowTexel", "uViewportInverse", "uPaper", "uShadowStrength", "uPageWidth"};
+    for (int u = 0; u < kUniformCount; ++u) program.location[u] = glGetUniformLocation(program.id, kNames[u]);
+    program.known.fill(false);
+}
+
+void BookRenderer::useProgram(Program& program) {
+    if (programInUse_ == program.id) return;
+    glUseProgram(program.id);
+    programInUse_ = program.id;
+}
+
+void BookRenderer::setUniform(Program& program, Uniform u, const float* values, int count) {
+    const GLint at = program.location[u];
+    if (at < 0) return;
+    std::array<float, 16>& last = program.value[u];
+    const size_t bytes = static_cast<size_t>(count) * sizeof(float);
+    if (program.known[u] && std::memcmp(last.data(), values, bytes) == 0) return;
+    std::memcpy(last.data(), values, bytes);
+    program.known[u] = true;
+    switch (count) {
+        case 1: glUniform1f(at, values[0]); break;
+        case 2: glUniform2fv(at, 1, values); break;
+        case 3: glUniform3fv(at, 1, values); break;
+        case 4: glUniform4fv(at, 1, values); break;
+        case 9: glUniformMatrix3fv(at, 1, GL_FALSE, values); break;
+        default: glUniformMatrix4fv(at, 1, GL_FALSE, values); break;
+    }
+}
+
+void BookRenderer::bindTexture(int unit, GLuint texture) {
+    // Leaves `unit` active, so texture calls that follow (uploads, parameters) act on `texture`.
+    if (activeUnit_ != unit) {
+        glActiveTexture(GL_TEXTURE0 + unit);
+        activeUnit_ = unit;
+    }
+    if (boundTextures_[unit] == texture) return;
+    glBindTexture(GL_TEXTURE_2D, texture);
+    boundTextures_[unit] = texture;
 }
 
 void BookRenderer::createGpuObjects() {
@@ -112,15 +145,32 @@ void BookRenderer::createGpuObjects() {
     leaf.fragment = std::string(kShaderPrelude) + shaders::page_frag;
     // The drawing program itself is captured, so the readback test checks the very shader that draws.
     leaf.transformFeedbackVaryings = {"vWorldPosition", "vNormal"};
-    leafProgram_ = buildProgram(leaf, error_);
-    if (!leafProgram_) return;
+    leafProgram_.id = buildProgram(leaf, error_);
+    if (!leafProgram_.id) return;
     ProgramSource shadow;
     shadow.vertex = std::string(kShaderPrelude) + "#define SHADOW_PASS 1\n" + vertex;
     shadow.fragment = std::string(kShaderPrelude) + shaders::shadow_frag;
-    shadowProgram_ = buildProgram(shadow, error_);
-    if (!shadowProgram_) return;
-    leafUniforms_ = locate(leafProgram_);
-    shadowUniforms_ = locate(shadowProgram_);
+    shadowProgram_.id = buildProgram(shadow, error_);
+    if (!shadowProgram_.id) return;
+    locate(leafProgram_);
+    locate(shadowProgram_);
+    // What never changes is set once, here: samplers, the light, the paper colour, the shadow's strength.
+    const float light[3] = {kLightDirection.x, kLightDirection.y, kLightDirection.z};
+    const float paper[3] = {kPaper[0] / 255.0f, kPaper[1] / 255.0f, kPaper[2] / 255.0f};
+    glUseProgram(leafProgram_.id);
+    glUniform1i(leafProgram_.location[uFacingTexture], 0);
+    glUniform1i(leafProgram_.location[uAwayTexture], 1);
+    glUniform1i(leafProgram_.location[uShadowMask], 2);
+    setUniform(leafProgram_, uLightDirection, light, 3);
+    setUniform(leafProgram_, uPaper, paper, 3);
+    glUseProgram(shadowProgram_.id);
+    setUniform(shadowProgram_, uLightDirection, light, 3);
+    setUniform(shadowProgram_, uShadowStrength, kShadowStrength);
+    programInUse_ = shadowProgram_.id;
+    // Both passes clear to transparent, and the only blending is the shadow mask's darkest-wins.
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glBlendEquation(GL_MAX);
+    glDisable(GL_CULL_FACE);  // one mesh, two sides
 
     glGenVertexArrays(1, &vertexArray_);
     glGenBuffers(1, &vertexBuffer_);
@@ -129,7 +179,9 @@ void BookRenderer::createGpuObjects() {
     uploadGrid();
 
     glGenTextures(1, &paperTexture_);
-    glBindTexture(GL_TEXTURE_2D, paperTexture_);
+    boundTextures_.fill(0);
+    activeUnit_ = -1;
+    bindTexture(0, paperTexture_);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, kPaper);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
 
@@ -139,8 +191,8 @@ void BookRenderer::createGpuObjects() {
 }
 
 void BookRenderer::destroyGpuObjects() {
-    glDeleteProgram(leafProgram_);
-    glDeleteProgram(shadowProgram_);
+    glDeleteProgram(leafProgram_.id);
+    glDeleteProgram(shadowProgram_.id);
     glDeleteVertexArrays(1, &vertexArray_);
     glDeleteBuffers(1, &vertexBuffer_);
     glDeleteBuffers(1, &indexBuffer_);
@@ -149,19 +201,24 @@ void BookRenderer::destroyGpuObjects() {
     glDeleteFramebuffers(1, &shadowFramebuffer_);
     glDeleteTextures(1, &shadowTexture_);
     for (const auto& [page, texture] : pageTextures_) glDeleteTextures(1, &texture);
+    forgetGpuObjects();
+}
+
+void BookRenderer::forgetGpuObjects() {
     pageTextures_.clear();
     gridKey_ = GridKey{};  // the grid buffer is gone too
-    leafProgram_ = shadowProgram_ = vertexArray_ = vertexBuffer_ = indexBuffer_ = captureBuffer_ = 0;
+    leafProgram_ = Program{};
+    shadowProgram_ = Program{};
+    programInUse_ = 0;
+    boundTextures_.fill(0);
+    activeUnit_ = -1;
+    vertexArray_ = vertexBuffer_ = indexBuffer_ = captureBuffer_ = 0;
     paperTexture_ = shadowFramebuffer_ = shadowTexture_ = 0;
 }
 
 void BookRenderer::recreateGpuObjects() {
     error_.clear();
-    // The old names died with the lost context; forget them without deleting.
-    pageTextures_.clear();
-    gridKey_ = GridKey{};  // the grid buffer is gone too
-    leafProgram_ = shadowProgram_ = vertexArray_ = vertexBuffer_ = indexBuffer_ = captureBuffer_ = 0;
-    paperTexture_ = shadowFramebuffer_ = shadowTexture_ = 0;
+    forgetGpuObjects();  // the old names died with the lost context: forget them without deleting
     createGpuObjects();
 }
 
@@ -205,19 +262,27 @@ void BookRenderer::updateGrid(const Book& book, const Camera& camera, int width,
     uploadGrid();
 }
 
-std::string BookRenderer::setPageImage(int page, int width, int height, const std::uint8_t* rgba) {
+std::string BookRenderer::setPageImage(int page, int width, int height, JsHandle source) {
     if (page < 0) return "page index must not be negative";
-    if (width <= 0 || height <= 0 || !rgba) return "page image must have a positive size";
+    if (width <= 0 || height <= 0 || !source) return "page image must have a positive size";
     if (width > maxTextureSize_ || height > maxTextureSize_) {
         return "page image " + decimal(width) + "x" + decimal(height) + " exceeds MAX_TEXTURE_SIZE " +
                decimal(maxTextureSize_);
     }
     if (!makeCurrent()) return "the WebGL2 context is not available";
-    GLuint& texture = pageTextures_[page];
+    auto found = findTexture(page);
+    GLuint texture = found == pageTextures_.end() ? 0 : found->second;
     if (!texture) glGenTextures(1, &texture);
-    glBindTexture(GL_TEXTURE_2D, texture);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    bindTexture(0, texture);
+    const int uploaded = conecurl_tex_image_from_source(static_cast<void*>(source));
+    if (uploaded != 0) {
+        if (found == pageTextures_.end()) {
+            bindTexture(0, paperTexture_);
+            glDeleteTextures(1, &texture);
+        }
+        return uploaded == 1 ? kTaintedSource : "the browser refused to upload the page image";
+    }
+    if (found == pageTextures_.end()) pageTextures_.emplace_back(page, texture);
     glGenerateMipmap(GL_TEXTURE_2D);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -229,14 +294,23 @@ std::string BookRenderer::setPageImage(int page, int width, int height, const st
 }
 
 void BookRenderer::releasePageImage(int page) {
-    auto found = pageTextures_.find(page);
+    auto found = findTexture(page);
     if (found == pageTextures_.end()) return;
-    if (makeCurrent()) glDeleteTextures(1, &found->second);
+    if (makeCurrent()) {
+        for (GLuint& bound : boundTextures_) {
+            if (bound == found->second) bound = 0;  // a deleted name may come back for another texture
+        }
+        glDeleteTextures(1, &found->second);
+    }
     pageTextures_.erase(found);
 }
 
+BookRenderer::PageTextures::const_iterator BookRenderer::findTexture(int page) const {
+    return std::find_if(pageTextures_.begin(), pageTextures_.end(), [page](const auto& entry) { return entry.first == page; });
+}
+
 GLuint BookRenderer::textureFor(int page) const {
-    auto found = pageTextures_.find(page);
+    auto found = findTexture(page);
     return found == pageTextures_.end() ? paperTexture_ : found->second;
 }
 
@@ -253,7 +327,7 @@ void BookRenderer::ensureShadowTarget(int width, int height) {
     if (w == shadowWidth_ && h == shadowHeight_) return;
     shadowWidth_ = w;
     shadowHeight_ = h;
-    glBindTexture(GL_TEXTURE_2D, shadowTexture_);
+    bindTexture(2, shadowTexture_);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -264,51 +338,50 @@ void BookRenderer::ensureShadowTarget(int width, int height) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-LeafPlacement BookRenderer::setPlacementUniforms(const Uniforms& u, const Book& book, const LeafDraw& leaf,
+LeafPlacement BookRenderer::setPlacementUniforms(Program& program, const Book& book, const LeafDraw& leaf,
                                                  const Camera& camera) {
     const BookConfig& c = book.config();
     const LeafPlacement placement = placeLeaf(c.binding, leaf.mirrored, c.pageHeight, leaf.flippedY);
     const glm::mat4 pageToWorld(placement.pageToWorld);
-    glUniform3f(u.curl, static_cast<float>(leaf.curl.theta), static_cast<float>(leaf.curl.apexY),
-                static_cast<float>(leaf.curl.rho));
-    glUniform1f(u.normalStep, static_cast<float>(kNormalStepOfHeight * c.pageHeight));
-    glUniformMatrix4fv(u.pageToWorld, 1, GL_FALSE, glm::value_ptr(pageToWorld));
-    glUniformMatrix4fv(u.viewProjection, 1, GL_FALSE, glm::value_ptr(camera.viewProjection));
-    glUniform3f(u.lightDirection, kLightDirection.x, kLightDirection.y, kLightDirection.z);
+    const CurlParams& curl = leaf.curl;
+    // The trigonometry of theta and rho is the same for every vertex: once per leaf, here, in double.
+    const float curlValues[3] = {static_cast<float>(curl.theta), static_cast<float>(curl.apexY), static_cast<float>(curl.rho)};
+    const float trig[4] = {static_cast<float>(std::sin(curl.theta)), static_cast<float>(std::cos(curl.theta)),
+                           static_cast<float>(std::sin(curl.rho)), static_cast<float>(std::cos(curl.rho))};
+    setUniform(program, uCurl, curlValues, 3);
+    setUniform(program, uCurlTrig, trig, 4);
+    setUniform(program, uNormalStep, static_cast<float>(kNormalStepOfHeight * c.pageHeight));
+    setUniform(program, uPageToWorld, glm::value_ptr(pageToWorld), 16);
+    setUniform(program, uViewProjection, glm::value_ptr(camera.viewProjection), 16);
     return placement;
 }
 
 void BookRenderer::setSurfaceUniforms(const Book& book, const LeafDraw& leaf, const LeafPlacement& placement,
                                       const Camera& camera) {
-    const Uniforms& u = leafUniforms_;
+    Program& p = leafProgram_;
     const BookConfig& c = book.config();
     const glm::mat3 facingUv(placement.facingUv);
     const glm::mat3 awayUv(placement.awayUv);
-    glUniformMatrix3fv(u.facingUv, 1, GL_FALSE, glm::value_ptr(facingUv));
-    glUniformMatrix3fv(u.awayUv, 1, GL_FALSE, glm::value_ptr(awayUv));
-    glUniform2f(u.pageSize, static_cast<float>(c.pageWidth), static_cast<float>(c.pageHeight));
-    glUniform3f(u.eye, camera.eye.x, camera.eye.y, camera.eye.z);
-    glUniform1f(u.lighting, options_.lighting ? 1.0f : 0.0f);
-    glUniform1f(u.gutter, options_.gutter ? 1.0f : 0.0f);
-    glUniform3f(u.paper, kPaper[0] / 255.0f, kPaper[1] / 255.0f, kPaper[2] / 255.0f);
+    const float pageSize[2] = {static_cast<float>(c.pageWidth), static_cast<float>(c.pageHeight)};
+    setUniform(p, uFacingUv, glm::value_ptr(facingUv), 9);
+    setUniform(p, uAwayUv, glm::value_ptr(awayUv), 9);
+    setUniform(p, uPageSize, pageSize, 2);
+    setUniform(p, uEye, glm::value_ptr(camera.eye), 3);
+    setUniform(p, uLighting, options_.lighting ? 1.0f : 0.0f);
+    setUniform(p, uGutter, options_.gutter ? 1.0f : 0.0f);
     const int facingPage = placement.facingIsBackPage ? leaf.backPage : leaf.frontPage;
     const int awayPage = placement.facingIsBackPage ? leaf.frontPage : leaf.backPage;
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, textureFor(facingPage));
-    glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D, textureFor(awayPage));
-    glUniform1i(u.facingTexture, 0);
-    glUniform1i(u.awayTexture, 1);
-    glUniform1i(u.shadowMask, 2);
+    bindTexture(0, textureFor(facingPage));
+    bindTexture(1, textureFor(awayPage));
 }
 
 void BookRenderer::drawLeaf(const Book& book, const LeafDraw& leaf, const Camera& camera, bool receiveShadow) {
-    setSurfaceUniforms(book, leaf, setPlacementUniforms(leafUniforms_, book, leaf, camera), camera);
-    glUniform1f(leafUniforms_.shadow, receiveShadow ? 1.0f : 0.0f);
+    setSurfaceUniforms(book, leaf, setPlacementUniforms(leafProgram_, book, leaf, camera), camera);
+    setUniform(leafProgram_, uShadow, receiveShadow ? 1.0f : 0.0f);
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(grid_.indices.size()), GL_UNSIGNED_INT, nullptr);
 }
 
-void BookRenderer::draw(const Book& book) {
+void BookRenderer::draw(const Book& book, const BookFrame& frame) {
     if (!ok() || !makeCurrent()) return;
     int width = 0;
     int height = 0;
@@ -318,46 +391,48 @@ void BookRenderer::draw(const Book& book) {
     drawingHeight_ = height;
     const Camera camera = cameraFor(book, width, height);
     updateGrid(book, camera, width, height);
-    const BookFrame frame = book.frame();
     ++framesDrawn_;
 
     bool anyLifted = false;
     for (int i = 0; i < frame.count; ++i) anyLifted |= !frame.leaves[i].resting;
     const bool shadows = options_.shadows && anyLifted;
+    const GLsizei indexCount = static_cast<GLsizei>(grid_.indices.size());
 
     glBindVertexArray(vertexArray_);
-    glDisable(GL_CULL_FACE);  // one mesh, two sides
     if (shadows) {
         // Shadow mask: every lifted leaf flattened along the light, the darkest wins where they overlap.
         ensureShadowTarget(width, height);
         glBindFramebuffer(GL_FRAMEBUFFER, shadowFramebuffer_);
         glViewport(0, 0, shadowWidth_, shadowHeight_);
-        glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
         glClear(GL_COLOR_BUFFER_BIT);
         glDisable(GL_DEPTH_TEST);
         glEnable(GL_BLEND);
-        glBlendEquation(GL_MAX);
-        glUseProgram(shadowProgram_);
-        glUniform1f(shadowUniforms_.shadowStrength, kShadowStrength);
-        glUniform1f(shadowUniforms_.pageWidth, static_cast<float>(book.config().pageWidth));
+        useProgram(shadowProgram_);
+        setUniform(shadowProgram_, uPageWidth, static_cast<float>(book.config().pageWidth));
         for (int i = 0; i < frame.count; ++i) {
             if (frame.leaves[i].resting) continue;
-            setPlacementUniforms(shadowUniforms_, book, frame.leaves[i], camera);
-            glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(grid_.indices.size()), GL_UNSIGNED_INT, nullptr);
+            setPlacementUniforms(shadowProgram_, book, frame.leaves[i], camera);
+            glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
         }
         glDisable(GL_BLEND);
-        glBlendEquation(GL_FUNC_ADD);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
 
     glViewport(0, 0, width, height);
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glUseProgram(leafProgram_);
-    glActiveTexture(GL_TEXTURE2);
-    glBindTexture(GL_TEXTURE_2D, shadows ? shadowTexture_ : paperTexture_);
-    glUniform2f(leafUniforms_.shadowTexel, 1.0f / std::max(1, shadowWidth_), 1.0f / std::max(1, shadowHeight_));
-    glUniform2f(leafUniforms_.viewportInverse, 1.0f / width, 1.0f / height);
+    if (anyLifted) {
+        glDepthMask(GL_TRUE);  // a depth clear obeys the mask, which the resting pages leave off
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    } else {
+        glClear(GL_COLOR_BUFFER_BIT);  // nothing is depth-tested in a frame of resting pages
+    }
+    useProgram(leafProgram_);
+    if (shadows) {
+        bindTexture(2, shadowTexture_);
+        const float texel[2] = {1.0f / static_cast<float>(shadowWidth_), 1.0f / static_cast<float>(shadowHeight_)};
+        const float viewportInverse[2] = {1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)};
+        setUniform(leafProgram_, uShadowTexel, texel, 2);
+        setUniform(leafProgram_, uViewportInverse, viewportInverse, 2);
+    }
     // Resting pages lie flat under everything that moves: drawn first, writing no depth, so a leaf
     // settling onto them never fights them for the same depth.
     glDisable(GL_DEPTH_TEST);
@@ -365,11 +440,13 @@ void BookRenderer::draw(const Book& book) {
     for (int i = 0; i < frame.count; ++i) {
         if (frame.leaves[i].resting) drawLeaf(book, frame.leaves[i], camera, shadows);
     }
-    // Leaves in flight: the depth buffer sorts them against each other and against their own curl.
-    glEnable(GL_DEPTH_TEST);
-    glDepthMask(GL_TRUE);
-    for (int i = 0; i < frame.count; ++i) {
-        if (!frame.leaves[i].resting) drawLeaf(book, frame.leaves[i], camera, false);
+    if (anyLifted) {
+        // Leaves in flight: the depth buffer sorts them against each other and against their own curl.
+        glEnable(GL_DEPTH_TEST);
+        glDepthMask(GL_TRUE);
+        for (int i = 0; i < frame.count; ++i) {
+            if (!frame.leaves[i].resting) drawLeaf(book, frame.leaves[i], camera, false);
+        }
     }
     glBindVertexArray(0);
 }
@@ -405,9 +482,9 @@ std::vector<float> BookRenderer::captureLeaf(const Book& book, int drawIndex) {
     glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, bytes, nullptr, GL_STREAM_READ);
     glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, 0);
 
-    glUseProgram(leafProgram_);
+    useProgram(leafProgram_);
     Camera camera = cameraFor(book, std::max(1, drawingWidth_), std::max(1, drawingHeight_));
-    setPlacementUniforms(leafUniforms_, book, frame.leaves[drawIndex], camera);  // positions and normals only
+    setPlacementUniforms(leafProgram_, book, frame.leaves[drawIndex], camera);  // positions and normals only
     glBindVertexArray(vertexArray_);
     glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, captureBuffer_);
     glEnable(GL_RASTERIZER_DISCARD);

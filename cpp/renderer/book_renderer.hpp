@@ -4,10 +4,12 @@
 
 #include <GLES3/gl3.h>
 #include <emscripten/html5_webgl.h>
+#include <emscripten/val.h>
 
+#include <array>
 #include <cstdint>
 #include <string>
-#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -25,6 +27,9 @@ struct RgbaImage {
     int height = 0;
     std::vector<std::uint8_t> pixels;  // rows top to bottom, as ImageData holds them
 };
+
+// A JS value held by Embind (emscripten::val::as_handle()), e.g. the image a page is uploaded from.
+using JsHandle = decltype(std::declval<emscripten::val>().as_handle());
 
 struct RenderOptions {
     bool lighting = true;
@@ -50,15 +55,21 @@ public:
     void setOptions(const RenderOptions& options) { options_ = options; }
     const RenderOptions& options() const { return options_; }
 
-    // RGBA8 pixels of page `page`, rows top to bottom, width * height * 4 bytes. Returns an empty
-    // string, or why the image was refused; the renderer keeps working either way.
-    std::string setPageImage(int page, int width, int height, const std::uint8_t* rgba);
+    // Uploads page `page` straight from a browser image (an ImageBitmap, canvas, <img>, ImageData,
+    // video frame: anything WebGL's texImage2D takes) of `width` x `height` pixels, with no copy
+    // through the wasm heap. Returns an empty string, or why the image was refused; a source whose
+    // pixels the page may not read (cross-origin without CORS) is refused with kTaintedSource. The
+    // renderer keeps working either way.
+    static constexpr const char* kTaintedSource = "tainted";
+    std::string setPageImage(int page, int width, int height, JsHandle source);
     void releasePageImage(int page);
-    bool hasPageImage(int page) const { return pageTextures_.count(page) != 0; }
+    bool hasPageImage(int page) const { return findTexture(page) != pageTextures_.end(); }
     int residentPageImages() const { return static_cast<int>(pageTextures_.size()); }
 
     // Draws one frame of the book into the canvas's drawing buffer.
-    void draw(const Book& book);
+    void draw(const Book& book) { draw(book, book.frame()); }
+    // The same, with the frame the caller composed already (the frame loop composes it once).
+    void draw(const Book& book, const BookFrame& frame);
     int framesDrawn() const { return framesDrawn_; }
 
     // The pixels of the last drawn frame, rows top to bottom (call in the same task as draw()).
@@ -87,6 +98,27 @@ private:
         float magnification;  // worst case for a leaf lifted towards the eye
     };
 
+    // Uniforms by name, in both programs; a program lacks some (location -1).
+    enum Uniform : int {
+        uCurl, uCurlTrig, uNormalStep, uPageToWorld, uViewProjection, uLightDirection, uFacingTexture,
+        uAwayTexture, uFacingUv, uAwayUv, uPageSize, uEye, uLighting, uGutter, uShadow, uShadowMask,
+        uShadowTexel, uViewportInverse, uPaper, uShadowStrength, uPageWidth, kUniformCount
+    };
+    // A linked program, its uniform locations (looked up once: the per-frame path makes no string
+    // lookups) and the value each uniform was last given, so an unchanged value costs no GL call.
+    struct Program {
+        GLuint id = 0;
+        std::array<GLint, kUniformCount> location{};
+        std::array<std::array<float, 16>, kUniformCount> value{};
+        std::array<bool, kUniformCount> known{};
+    };
+    void locate(Program& program);
+    // Sets `count` floats of uniform `u` of the program in use (1-4: a vector, 9 or 16: a matrix).
+    void setUniform(Program& program, Uniform u, const float* values, int count);
+    void setUniform(Program& program, Uniform u, float x) { setUniform(program, u, &x, 1); }
+    void useProgram(Program& program);
+    void bindTexture(int unit, GLuint texture);
+
     bool makeCurrent();
     void createGpuObjects();
     void destroyGpuObjects();
@@ -95,7 +127,10 @@ private:
     Camera cameraFor(const Book& book, int width, int height) const;
     void ensureShadowTarget(int width, int height);
     void drawLeaf(const Book& book, const LeafDraw& leaf, const Camera& camera, bool receiveShadow);
+    using PageTextures = std::vector<std::pair<int, GLuint>>;  // a few dozen at most: a list beats a hash map
+    PageTextures::const_iterator findTexture(int page) const;
     GLuint textureFor(int page) const;
+    void forgetGpuObjects();
 
     std::string error_;
     EMSCRIPTEN_WEBGL_CONTEXT_HANDLE context_ = 0;
@@ -121,22 +156,15 @@ private:
     int drawingWidth_ = 0;
     int drawingHeight_ = 0;
 
-    // Uniform locations, looked up once per program: the per-frame path makes no string lookups.
-    struct Uniforms {
-        GLint curl = -1, normalStep = -1, pageToWorld = -1, viewProjection = -1;
-        GLint lightDirection = -1, facingTexture = -1, awayTexture = -1, facingUv = -1, awayUv = -1;
-        GLint pageSize = -1, eye = -1, lighting = -1, gutter = -1, shadow = -1, shadowMask = -1;
-        GLint shadowTexel = -1, viewportInverse = -1, paper = -1, shadowStrength = -1, pageWidth = -1;
-    };
-    static Uniforms locate(GLuint program);
     // Where the leaf is (both programs); then how its surface looks (the leaf program only).
-    LeafPlacement setPlacementUniforms(const Uniforms& u, const Book& book, const LeafDraw& leaf, const Camera& camera);
+    LeafPlacement setPlacementUniforms(Program& program, const Book& book, const LeafDraw& leaf, const Camera& camera);
     void setSurfaceUniforms(const Book& book, const LeafDraw& leaf, const LeafPlacement& placement, const Camera& camera);
 
-    GLuint leafProgram_ = 0;
-    GLuint shadowProgram_ = 0;
-    Uniforms leafUniforms_;
-    Uniforms shadowUniforms_;
+    Program leafProgram_;
+    Program shadowProgram_;
+    GLuint programInUse_ = 0;
+    std::array<GLuint, 3> boundTextures_{};  // per texture unit, as last bound here
+    int activeUnit_ = -1;
     GLuint vertexArray_ = 0;
     GLuint vertexBuffer_ = 0;
     GLuint indexBuffer_ = 0;
@@ -146,7 +174,7 @@ private:
     GLuint shadowTexture_ = 0;
     int shadowWidth_ = 0;
     int shadowHeight_ = 0;
-    std::unordered_map<int, GLuint> pageTextures_;
+    PageTextures pageTextures_;
 };
 
 }  // namespace conecurl

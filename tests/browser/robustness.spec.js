@@ -841,24 +841,24 @@ test('browser: strings from options, alt text, URLs and error messages are never
   expect(panel).toMatchObject({ elements: 0, pwned: 0 });
 });
 
-test('browser: the renderer refuses bad arguments at the Embind boundary (page index, image size and bytes, grid rows, leaf index) with a RangeError or TypeError, and still draws after', async ({ page }) => {
+test('browser: the renderer refuses bad arguments at the Embind boundary (page index, image size and source, grid rows, leaf index) with a RangeError or TypeError, and still draws after', async ({ page }) => {
   await openReady(page, FIXTURE);
   await openBook(page, { pages: 4, display: 'double', startPage: 1 });
   const refusals = await page.evaluate(() => {
     const view = window.book._view;
     const renderer = view.renderer;
-    const four = new Uint8Array(4);
+    const pixel = new ImageData(1, 1);
     const attempt = (call) => { try { call(); return 'no error'; } catch (error) { return `${error.name}: ${error.message}`; } };
     return {
-      pageNegative: attempt(() => renderer.setPageImage(-1, 1, 1, four)),
-      pageFraction: attempt(() => renderer.setPageImage(1.5, 1, 1, four)),
-      pageString: attempt(() => renderer.setPageImage('2', 1, 1, four)),
-      widthNaN: attempt(() => renderer.setPageImage(0, NaN, 1, four)),
-      heightZero: attempt(() => renderer.setPageImage(0, 1, 0, four)),
-      wrongLength: attempt(() => renderer.setPageImage(0, 2, 2, four)),
-      noPixels: attempt(() => renderer.setPageImage(0, 1, 1, null)),
-      stringPixels: attempt(() => renderer.setPageImage(0, 1, 1, 'abcd')),
-      tooLarge: attempt(() => renderer.setPageImage(0, renderer.maxTextureSize() + 1, 1, new Uint8Array((renderer.maxTextureSize() + 1) * 4))),
+      pageNegative: attempt(() => renderer.setPageImage(-1, pixel, 1, 1)),
+      pageFraction: attempt(() => renderer.setPageImage(1.5, pixel, 1, 1)),
+      pageString: attempt(() => renderer.setPageImage('2', pixel, 1, 1)),
+      widthNaN: attempt(() => renderer.setPageImage(0, pixel, NaN, 1)),
+      heightZero: attempt(() => renderer.setPageImage(0, pixel, 1, 0)),
+      notAnImage: attempt(() => renderer.setPageImage(0, { width: 1, height: 1 }, 1, 1)),
+      noSource: attempt(() => renderer.setPageImage(0, null, 1, 1)),
+      stringSource: attempt(() => renderer.setPageImage(0, 'abcd', 1, 1)),
+      tooLarge: attempt(() => renderer.setPageImage(0, pixel, renderer.maxTextureSize() + 1, 1)),
       releaseNaN: attempt(() => renderer.releasePageImage(NaN)),
       hasNegative: attempt(() => renderer.hasPageImage(-3)),
       rowsNegative: attempt(() => renderer.setGridRows(-1)),
@@ -879,9 +879,9 @@ test('browser: the renderer refuses bad arguments at the Embind boundary (page i
     widthNaN: 'RangeError: conecurl: image width must be a whole number from 1 to 65536',
     heightZero: 'RangeError: conecurl: image height must be a whole number from 1 to 65536',
     antialiasString: 'TypeError: conecurl: antialias must be true or false',
-    wrongLength: 'TypeError: conecurl: page image pixels must be an array of width * height * 4 RGBA bytes (16 for 2x2)',
-    noPixels: 'TypeError: conecurl: page image pixels must be an array of width * height * 4 RGBA bytes (4 for 1x1)',
-    stringPixels: 'TypeError: conecurl: page image pixels must be an array of width * height * 4 RGBA bytes (4 for 1x1)',
+    notAnImage: 'Error: conecurl: the browser refused to upload the page image',
+    noSource: 'TypeError: conecurl: page image must be an ImageBitmap, canvas, image, ImageData or video',
+    stringSource: 'TypeError: conecurl: page image must be an ImageBitmap, canvas, image, ImageData or video',
     tooLarge: expect.stringMatching(/^Error: conecurl: page image \d+x1 exceeds MAX_TEXTURE_SIZE \d+$/),
     releaseNaN: 'RangeError: conecurl: page must be a whole number from 0 to 1000000',
     hasNegative: 'RangeError: conecurl: page must be a whole number from 0 to 1000000',

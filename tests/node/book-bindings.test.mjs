@@ -26,6 +26,24 @@ test('node: a book turns forward and back through the bindings and lands', () =>
   }
 });
 
+test('node: pagesOnScreen (wasm) shows a resting left page\'s back, a resting right page\'s front, both sides of a turning leaf, no blanks', () => {
+  const book = engine.Book.create({ pageCount: 9 });
+  try {
+    book.jumpTo(2);
+    assert.deepEqual(engine.pagesOnScreen(book), [3, 4]);
+    assert.equal(book.startTurn('forward'), true);  // leaf 2 (pages 4, 5) lifts off page 6
+    assert.deepEqual(engine.pagesOnScreen(book).toSorted((a, b) => a - b), [3, 4, 5, 6]);
+    book.jumpTo(0);
+    assert.deepEqual(engine.pagesOnScreen(book), [0]);
+    book.jumpTo(book.lastPosition());  // the last leaf lies turned over, showing only its blank back
+    assert.deepEqual(engine.pagesOnScreen(book), []);
+    book.jumpTo(book.lastPosition() - 1);
+    assert.deepEqual(engine.pagesOnScreen(book), [7, 8]);
+  } finally {
+    book.delete();
+  }
+});
+
 test('node: bad book options throw a TypeError naming the option', () => {
   const cases = [
     [{}, /pageCount/],

@@ -1,24 +1,16 @@
-// Node tests of the page cache policy (web/src/page-residency.js): which pages a frame shows, which
+// Node tests of the page cache policy (web/src/page-residency.js): which pages
 // are wanted in what order, the capacity, and which resident pages go first.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import {
-  MAX_TURNS_IN_FLIGHT, PageCache, pagesInFrame, pagesToRelease, textureCapacity, wantedPages,
+  MAX_TURNS_IN_FLIGHT, PageCache, pagesToRelease, textureCapacity, wantedPages,
 } from '../../web/src/page-residency.js';
 
-const resting = (frontPage, backPage, turnedOver) => ({ frontPage, backPage, resting: true, curl: { rho: turnedOver ? Math.PI : 0 } });
-const turning = (frontPage, backPage) => ({ frontPage, backPage, resting: false, curl: { rho: 1.2 } });
 
 test('node: textureCapacity holds the load window both ways plus four, and never less than a full screen of leaves', () => {
   assert.equal(textureCapacity(1), 2 + 2 * MAX_TURNS_IN_FLIGHT);
   assert.equal(textureCapacity(4), 14);
   assert.equal(textureCapacity(10), 24);
-});
-
-test('node: pagesInFrame shows a resting left page\'s back, a resting right page\'s front, both sides of a turning leaf, no blanks', () => {
-  assert.deepEqual(pagesInFrame([resting(2, 3, true), resting(6, 7, false), turning(4, 5)]), [3, 6, 4, 5]);
-  assert.deepEqual(pagesInFrame([resting(0, 1, false)]), [0]);
-  assert.deepEqual(pagesInFrame([resting(8, -1, true), turning(10, -1)]), [10]);
 });
 
 test('node: wantedPages puts pages on screen first, then neighbours outward (next before previous), within capacity', () => {

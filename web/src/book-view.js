@@ -1,11 +1,11 @@
-// One book on a canvas: JS ergonomics over the wasm Book (state, animation) and BookRenderer (GL):
-// canvas sizing, image decoding, and a render loop that runs only while something moves.
+// One book on a canvas: JS ergonomics over the wasm Book (state, animation), BookRenderer (GL) and
+// FrameLoop (the clock): canvas sizing, page uploads, and a render loop that runs only while something
+// moves and costs one call into the engine per frame.
 import { loadEngine } from './engine.js';
+import { PageLoadError } from './page-loader.js';
 
 const BINDING_OF_DIRECTION = { ltr: 'left', rtl: 'right', vertical: 'top' };
-// A frame advances the clock by the time since the last one, up to this much: turns keep their duration
-// down to 4 frames a second (a slow machine, software WebGL), and a stall (a hidden tab) does not jump.
-const MAX_FRAME_SECONDS = 0.25;
+const TURN_REFUSED = 2;  // FrameLoop.requestTurn: 0 started, 1 queued, 2 refused
 let nextTargetId = 1;
 
 function naturalSize(source) {
@@ -29,22 +29,33 @@ export function uploadSizeFor(width, height, { cover, maxTextureSize }) {
   return { width: fit(width), height: fit(height) };
 }
 
-/** Reads any image source into RGBA pixels (rows top to bottom) of the given size. */
-function toPixels(source, { width, height }) {
-  if (source instanceof ImageData && source.width === width && source.height === height) return source;
-  const makeCanvas = (w, h) => (typeof OffscreenCanvas === 'function'
-    ? new OffscreenCanvas(w, h)
-    : Object.assign(document.createElement('canvas'), { width: w, height: h }));
+let scratch = null;  // one canvas for every book's scaling: texImage2D copies it before it is reused
+
+/**
+ * What the texture is uploaded from: the source itself when it already has the size wanted, else the
+ * source drawn at that size on a scratch canvas. The pixels never pass through getImageData or the
+ * wasm heap: the browser copies them from there into the texture.
+ */
+function atSize(source, natural, { width, height }) {
+  if (natural.width === width && natural.height === height) return source;
   let drawable = source;
-  if (source instanceof ImageData) {  // drawImage cannot scale ImageData: stage it on a canvas
+  if (source instanceof ImageData) {  // drawImage cannot scale ImageData: stage it as a bitmap-sized canvas
     drawable = makeCanvas(source.width, source.height);
     drawable.getContext('2d').putImageData(source, 0, 0);
   }
-  const canvas = makeCanvas(width, height);
-  const context = canvas.getContext('2d', { willReadFrequently: true });
+  scratch ??= makeCanvas(width, height);
+  if (scratch.width !== width || scratch.height !== height) Object.assign(scratch, { width, height });
+  const context = scratch.getContext('2d');
   context.imageSmoothingQuality = 'high';  // a big reduction stays legible, not aliased
+  context.clearRect(0, 0, width, height);
   context.drawImage(drawable, 0, 0, width, height);
-  return context.getImageData(0, 0, width, height);
+  return scratch;
+}
+
+function makeCanvas(width, height) {
+  return typeof OffscreenCanvas === 'function'
+    ? new OffscreenCanvas(width, height)
+    : Object.assign(document.createElement('canvas'), { width, height });
 }
 
 export class BookView {
@@ -86,20 +97,22 @@ export class BookView {
     this.renderer.setOptions({
       lighting: options.lighting ?? true, shadows: options.shadows ?? true, gutter: options.gutter ?? true,
     });
+    this._loop = new engine.FrameLoop(this.book, this.renderer);
+    this._ticks = { moving: engine.TICK_MOVING, settled: engine.TICK_SETTLED, pagesChanged: engine.TICK_PAGES_CHANGED };
+    /** Called after a frame whose pages on screen changed (a leaf lifted or landed): residency follows. */
+    this.onPagesChanged = null;
     this._sources = new Map();   // page -> { source, cover }, to upload again after a context loss
     this._uploaded = new Map();  // page -> { width, height } of its texture
     this._frame = 0;
-    this._lastTime = 0;
-    this._clockRunning = false;  // false while an exact pose is shown
     this._poseFrom = null;
     this._settled = [];
-    this._pending = [];          // turns asked for while the leaf they need was still in flight
     this._lost = false;          // the GL context is lost: the clock and drawing wait for its restore
+    this._sizeStale = true;      // the canvas's CSS size or pixel ratio changed since the buffer was sized
     this._onLost = (event) => this._loseContext(event);
     this._onRestored = () => this._restore();
     canvas.addEventListener('webglcontextlost', this._onLost);
     canvas.addEventListener('webglcontextrestored', this._onRestored);
-    this._resizeObserver = typeof ResizeObserver === 'function' ? new ResizeObserver(() => this.requestRender()) : null;
+    this._resizeObserver = typeof ResizeObserver === 'function' ? new ResizeObserver(() => this.sizeChanged()) : null;
     this._resizeObserver?.observe(canvas);
     this.requestRender();
   }
@@ -111,7 +124,7 @@ export class BookView {
   /** Frames drawn so far (the book draws only while something moves). */
   get framesDrawn() { return this.renderer.framesDrawn(); }
   /** Turns asked for that wait for a leaf still in flight. */
-  get queuedTurns() { return this._pending.length; }
+  get queuedTurns() { return this._loop.queuedTurns(); }
   /** The WebGL context is lost and not yet restored: turns in flight are paused. */
   get contextLost() { return this._lost; }
 
@@ -122,8 +135,14 @@ export class BookView {
   setPageImage(page, source, { cover } = {}) {
     const natural = source instanceof ImageData ? source : naturalSize(source);
     const size = uploadSizeFor(natural.width, natural.height, { cover, maxTextureSize: this.renderer.maxTextureSize() });
-    const image = toPixels(source, size);
-    this.renderer.setPageImage(page, image.width, image.height, image.data);
+    try {
+      this.renderer.setPageImage(page, atSize(source, natural, size), size.width, size.height);
+    } catch (error) {
+      if (error?.name !== 'SecurityError') throw error;
+      throw new PageLoadError(`conecurl: page ${page}: its image is cross-origin without CORS, so its pixels cannot `
+        + 'be read (load it with crossorigin="anonymous" from a server that sends Access-Control-Allow-Origin)',
+      { reason: 'cors', cause: error });
+    }
     this._sources.set(page, { source, cover });
     this._uploaded.set(page, size);
     this.requestRender();
@@ -197,7 +216,7 @@ export class BookView {
 
   jumpTo(position) {
     this._poseFrom = null;
-    this._pending.length = 0;
+    this._loop.clearQueue();
     this.book.jumpTo(position);
     this.requestRender();
   }
@@ -208,7 +227,7 @@ export class BookView {
    */
   showTurn(direction, t) {
     if (this._poseFrom === null) this._poseFrom = this.book.position();
-    this._clockRunning = false;
+    this._loop.stop();
     this.book.jumpTo(this._poseFrom);
     const started = this.book.startTurn(direction);
     if (started) this.book.setLatestTurnProgress(t);
@@ -222,7 +241,7 @@ export class BookView {
     return new Promise((resolve) => this._settled.push(resolve));
   }
 
-  /** Draws the current state at once (same task), e.g. before readPixels(). */
+  /** Draws the current state at once (same task), e.g. before readPixels(); sizes the canvas first. */
   drawNow() {
     this.fitCanvas();
     this.renderer.draw(this.book);
@@ -253,6 +272,8 @@ export class BookView {
     this.canvas.removeEventListener('webglcontextrestored', this._onRestored);
     // The canvas has its WebGL2 context already: getContext hands back that one, it makes no new one.
     const gl = releaseContext ? this.canvas.getContext('webgl2') : null;
+    this.onPagesChanged = null;
+    this._loop.delete();  // it points at the book and the renderer: it goes first
     this.renderer.delete();
     this.book.delete();
     gl?.getExtension('WEBGL_lose_context')?.loseContext();
@@ -265,46 +286,42 @@ export class BookView {
 
   _turn(direction) {
     this._poseFrom = null;
-    const started = this._pending.length === 0 && this.book.startTurn(direction);
-    if (!started) {
-      if (!this.book.animating()) return Promise.resolve(false);
-      this._pending.push(direction);
-    }
-    this._clockRunning = true;
+    if (this._loop.requestTurn(direction) === TURN_REFUSED) return Promise.resolve(false);
     this.requestRender();
     return new Promise((resolve) => this._settled.push(() => resolve(true)));
   }
 
+  // One animation frame: a single call into the engine advances, starts queued turns and draws.
   _tick(now) {
     this._frame = 0;
     if (!this.renderer || (this._lost && !this._parked)) return;
-    if (this._clockRunning && this.book.moving()) {
-      const seconds = this._lastTime ? Math.min(MAX_FRAME_SECONDS, (now - this._lastTime) / 1000) : 0;
-      this.book.advance(seconds);
-      while (this._pending.length > 0 && this.book.startTurn(this._pending[0])) this._pending.shift();
-    }
-    if (!this._lost) this.drawNow();
-    if (this._clockRunning && this.book.moving()) {
-      this._lastTime = now;
-      this._frame = requestAnimationFrame((t) => this._tick(t));
-      return;
-    }
-    this._lastTime = 0;
-    if (this.book.holding()) return;  // a held leaf lying still: the next pointer move wakes us
-    this._clockRunning = false;
-    this._pending.length = 0;  // what is left could never start (the end of the book)
-    for (const resolve of this._settled.splice(0)) resolve();
+    if (!this._lost) this._fitIfStale();
+    const flags = this._loop.tick(now, !this._lost);
+    if (flags & this._ticks.moving) this._frame = requestAnimationFrame((t) => this._tick(t));
+    if (flags & this._ticks.pagesChanged) this.onPagesChanged?.();
+    if (flags & this._ticks.settled) for (const resolve of this._settled.splice(0)) resolve();
   }
 
   /** After the held leaf's pose changed (dragged, hinted, released): draw and run the clock until it rests. */
   heldChanged() {
     this._poseFrom = null;
-    this._clockRunning = true;
+    this._loop.run();
     this.requestRender();
+  }
+
+  /** The canvas's CSS size or the device pixel ratio changed: the next frame sizes the buffer anew. */
+  sizeChanged() {
+    this._sizeStale = true;
+    this.requestRender();
+  }
+
+  _fitIfStale() {
+    if (this._sizeStale) this.fitCanvas();
   }
 
   /** Sizes the drawing buffer to the canvas's CSS size x devicePixelRatio; returns that size. */
   fitCanvas() {
+    this._sizeStale = false;
     const ratio = window.devicePixelRatio || 1;
     const width = Math.max(1, Math.round(this.canvas.clientWidth * ratio));
     const height = Math.max(1, Math.round(this.canvas.clientHeight * ratio));
@@ -323,7 +340,7 @@ export class BookView {
     this._lost = true;
     cancelAnimationFrame(this._frame);
     this._frame = 0;
-    this._lastTime = 0;  // the first frame after the restore advances nothing
+    this._loop.forgetLastTick();  // the first frame after the restore advances nothing
   }
 
   _restore() {

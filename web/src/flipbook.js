@@ -13,7 +13,7 @@ import { listenForZoom } from './zoom-input.js';
 import { createLinkLayer } from './link-layer.js';
 import { contextBudget } from './context-budget.js';
 import { softwareWebGL } from './software-gl.js';
-import { PageCache, pagesInFrame } from './page-residency.js';
+import { PageCache } from './page-residency.js';
 
 // Failures after which a book can still be shown, as still pages: Flipbook.create falls back on these.
 const FALLBACK_CODES = ['webgl2-unavailable', 'engine-unavailable'];
@@ -207,7 +207,6 @@ export class Flipbook extends EventTarget {
     this._resizeObserver?.disconnect();
     this._stopWatchingPixelRatio?.();
     clearTimeout(this._refitTimer);
-    cancelAnimationFrame(this._followFrame);
     this._view?.destroy({ releaseContext: true });  // the canvas goes: give its WebGL context up now
     this._view = null;
     this._contextLease.dispose();
@@ -249,6 +248,8 @@ export class Flipbook extends EventTarget {
       gutter: this._settings.gutter,
     });
     this._contextLease.attach(view);
+    // While leaves move, the pages they show change (turns that waited start late): the engine says when.
+    view.onPagesChanged = () => { if (!this._destroyed) this._updateResidency(); };
     return view;
   }
 
@@ -260,7 +261,6 @@ export class Flipbook extends EventTarget {
       onTurnStart: (direction) => {
         this._links.hide();
         this._emit('turnstart', { direction, page: this.page, drag: true });
-        this._followTurns();
         this._updateResidency();
       },
       onTurnEnd: (completed) => {
@@ -417,7 +417,6 @@ export class Flipbook extends EventTarget {
     if (this._view.animating) {
       this._links.hide();
       this._emit('turnstart', { direction, page: this.page });
-      this._followTurns();
     }
     this._updateResidency();
     const turned = await turning;
@@ -437,18 +436,6 @@ export class Flipbook extends EventTarget {
     this._updateResidency();
     this._landed();
     return true;
-  }
-
-  // While leaves move, the pages they show change every frame (turns that waited start late).
-  _followTurns() {
-    if (this._followFrame) return;
-    const step = () => {
-      this._followFrame = 0;
-      if (this._destroyed || !this._view.animating) return;
-      this._updateResidency();
-      this._followFrame = requestAnimationFrame(step);
-    };
-    this._followFrame = requestAnimationFrame(step);
   }
 
   _landed() {
@@ -476,7 +463,7 @@ export class Flipbook extends EventTarget {
   _updateResidency() {
     const open = this._openPages();
     const wanted = this._cache.want({
-      onScreen: pagesInFrame(this._view.book.frame()),
+      onScreen: this._engine.pagesOnScreen(this._view.book),
       first: open[0],
       last: open[open.length - 1],
       loadWindow: this._settings.loadWindow,
@@ -595,7 +582,7 @@ export class Flipbook extends EventTarget {
   _relayout() {
     const display = this._displayFor(this._layoutSize);
     if (display !== this.display) this._rebuildView(display);
-    this._view.requestRender();
+    this._view.sizeChanged();
     clearTimeout(this._refitTimer);
     this._refitTimer = setTimeout(() => this._refitTextures(), REFIT_DELAY_MS);
     this._layoutLinks();

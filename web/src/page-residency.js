@@ -14,20 +14,6 @@ export function textureCapacity(loadWindow) {
 }
 
 /**
- * Pages shown by a frame of the book (Book.frame()): the resting left page's back, the resting right
- * page's front, and both sides of each leaf in flight. -1 (no page) is left out.
- */
-export function pagesInFrame(leafDraws) {
-  const pages = [];
-  for (const draw of leafDraws) {
-    const turnedOver = draw.resting && draw.curl.rho > Math.PI / 2;
-    if (!draw.resting || !turnedOver) pages.push(draw.frontPage);
-    if (!draw.resting || turnedOver) pages.push(draw.backPage);
-  }
-  return pages.filter((page) => page >= 0);
-}
-
-/**
  * Pages wanted now, most wanted first: those on screen, then the open spread's neighbours outward
  * (the next page before the previous one at each distance), up to `capacity` pages; the pages on
  * screen are always all in. `first`/`last` are the open spread's pages at the settled position.

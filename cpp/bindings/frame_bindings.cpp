@@ -1,0 +1,74 @@
+// Embind exposure of a book's frame loop: one JS->wasm call per animation frame advances the book,
+// starts queued turns, composes the frame and draws it, and returns TickFlags. Thin: the clock is
+// cpp/core/book_clock, the drawing cpp/renderer/book_renderer.
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <string>
+
+#include "book_clock.hpp"
+#include "book_renderer.hpp"
+#include "js_values.hpp"
+
+namespace {
+
+using namespace conecurl;
+using emscripten::val;
+
+// The Book and renderer it drives belong to the JS side, which deletes this first.
+struct FrameLoop {
+    FrameLoop(Book* b, BookRenderer* r) : book(b), renderer(r) {}
+    Book* book;
+    BookRenderer* renderer;
+    BookClock clock;
+};
+
+TurnDirection directionOf(const val& value) {
+    const std::string direction = value.isString() ? value.as<std::string>() : "";
+    if (direction != "forward" && direction != "backward") {
+        js::throwError("TypeError", "direction must be 'forward' or 'backward', got '" + direction + "'");
+    }
+    return direction == "forward" ? TurnDirection::Forward : TurnDirection::Backward;
+}
+
+// tick(nowMs, draw): nowMs is the animation frame's timestamp; draw false advances without drawing
+// (a context handed back or lost). Plain numbers: JS passes requestAnimationFrame's own arguments.
+int tick(FrameLoop& loop, double nowMs, bool draw) {
+    int flags = loop.clock.tick(*loop.book, nowMs / 1000.0);
+    if (draw) {
+        loop.renderer->draw(*loop.book, loop.clock.frame());
+        flags |= kTickDrew;
+    }
+    return flags;
+}
+
+val pagesOnScreenOf(const Book& book) {
+    const PagesOnScreen pages = pagesOnScreen(book.frame());
+    val out = val::array();
+    for (int i = 0; i < pages.count; ++i) out.call<void>("push", pages.pages[i]);
+    return out;
+}
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(conecurl_frame) {
+    using namespace emscripten;
+    constant("TICK_MOVING", static_cast<int>(kTickMoving));
+    constant("TICK_SETTLED", static_cast<int>(kTickSettled));
+    constant("TICK_PAGES_CHANGED", static_cast<int>(kTickPagesChanged));
+    constant("TICK_DREW", static_cast<int>(kTickDrew));
+    class_<FrameLoop>("FrameLoop")
+        .constructor<Book*, BookRenderer*>(allow_raw_pointers())
+        .function("tick", &tick)
+        // 0: started, 1: waits behind a leaf in flight, 2: refused (end of the book, queue full).
+        .function("requestTurn", optional_override([](FrameLoop& l, val direction) {
+                      return static_cast<int>(l.clock.requestTurn(*l.book, directionOf(direction)));
+                  }))
+        .function("queuedTurns", optional_override([](const FrameLoop& l) { return l.clock.queuedTurns(); }))
+        .function("clearQueue", optional_override([](FrameLoop& l) { l.clock.clearQueue(); }))
+        .function("run", optional_override([](FrameLoop& l) { l.clock.run(); }))
+        .function("stop", optional_override([](FrameLoop& l) { l.clock.stop(); }))
+        .function("running", optional_override([](const FrameLoop& l) { return l.clock.running(); }))
+        .function("forgetLastTick", optional_override([](FrameLoop& l) { l.clock.forgetLastTick(); }));
+    function("pagesOnScreen", &pagesOnScreenOf);
+}
