@@ -223,6 +223,7 @@ void BookRenderer::recreateGpuObjects() {
 }
 
 void BookRenderer::uploadGrid() {
+    // The renderer's one vertex array stays bound from here on: draws and captures need no bind.
     glBindVertexArray(vertexArray_);
     glBindBuffer(GL_ARRAY_BUFFER, vertexBuffer_);
     glBufferData(GL_ARRAY_BUFFER, grid_.points.size() * sizeof(float), grid_.points.data(), GL_STATIC_DRAW);
@@ -232,7 +233,6 @@ void BookRenderer::uploadGrid() {
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indexBuffer_);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, grid_.indices.size() * sizeof(std::uint32_t), grid_.indices.data(),
                  GL_STATIC_DRAW);
-    glBindVertexArray(0);
 }
 
 void BookRenderer::updateGrid(const Book& book, const Camera& camera, int width, int height) {
@@ -398,7 +398,6 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
     const bool shadows = options_.shadows && anyLifted;
     const GLsizei indexCount = static_cast<GLsizei>(grid_.indices.size());
 
-    glBindVertexArray(vertexArray_);
     if (shadows) {
         // Shadow mask: every lifted leaf flattened along the light, the darkest wins where they overlap.
         ensureShadowTarget(width, height);
@@ -448,7 +447,6 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
             if (!frame.leaves[i].resting) drawLeaf(book, frame.leaves[i], camera, false);
         }
     }
-    glBindVertexArray(0);
 }
 
 RgbaImage BookRenderer::readPixels() {
@@ -485,7 +483,6 @@ std::vector<float> BookRenderer::captureLeaf(const Book& book, int drawIndex) {
     useProgram(leafProgram_);
     Camera camera = cameraFor(book, std::max(1, drawingWidth_), std::max(1, drawingHeight_));
     setPlacementUniforms(leafProgram_, book, frame.leaves[drawIndex], camera);  // positions and normals only
-    glBindVertexArray(vertexArray_);
     glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, captureBuffer_);
     glEnable(GL_RASTERIZER_DISCARD);
     glBeginTransformFeedback(GL_POINTS);
@@ -493,7 +490,6 @@ std::vector<float> BookRenderer::captureLeaf(const Book& book, int drawIndex) {
     glEndTransformFeedback();
     glDisable(GL_RASTERIZER_DISCARD);
     glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, 0);
-    glBindVertexArray(0);
     glBindBuffer(GL_COPY_READ_BUFFER, captureBuffer_);
     glGetBufferSubData(GL_COPY_READ_BUFFER, 0, bytes, out.data());
     glBindBuffer(GL_COPY_READ_BUFFER, 0);

@@ -1,0 +1,138 @@
+// Browser: what a frame and a page upload cost, as counts that do not flake: calls from JS into the
+// wasm engine and WebGL calls per turning frame, and page pixels that never pass through the wasm
+// heap. Counted by wrapping WebGL2's methods and the engine's wasm functions before the page loads.
+import { test, expect } from '@playwright/test';
+import { openReady } from './helpers.js';
+
+const FIXTURE = '/tests/browser/fixtures/flipbook-fixture.html';
+
+// WebGL calls in one turning frame of a double-page book with shadows: two resting pages and one
+// lifted leaf (BookRenderer::draw). Shadow pass: framebuffer, viewport, clear, depth test off, blend
+// on, program, curl and its trig, draw, blend off, framebuffer back (11). Main pass: viewport, depth
+// mask, clear, program, depth test off, depth mask off, then per resting leaf curl, trig, shadow
+// flag and 2 textures with their unit switches and a draw (up to 8 each), depth test on, depth mask
+// on, and the lifted leaf the same (8): 43. Matrices, sizes, the eye and the options are set only
+// when they change, samplers and constants never after linking (97 calls a frame before that).
+const MAX_GL_CALLS_PER_TURNING_FRAME = 43;
+
+/** Counts every WebGL2 call and every call from JS into a wasm function, on window.__counts. */
+function countCalls() {
+  const counts = { gl: 0, wasm: 0, glByName: {}, texImageFromBytes: 0, texImageFromImage: 0 };
+  window.__counts = counts;
+  const proto = WebGL2RenderingContext.prototype;
+  for (const name of Object.getOwnPropertyNames(proto)) {
+    const descriptor = Object.getOwnPropertyDescriptor(proto, name);
+    if (name === 'constructor' || typeof descriptor.value !== 'function') continue;
+    const original = descriptor.value;
+    proto[name] = function counted(...args) {
+      counts.gl++;
+      counts.glByName[name] = (counts.glByName[name] || 0) + 1;
+      if (name === 'texImage2D') {
+        // (target, level, format, width, height, border, format, type, bytes[, offset]): pixels from
+        // memory, the wasm heap's for the engine; only the 1x1 paper texel may come that way.
+        if (args.some((arg) => ArrayBuffer.isView(arg)) && !(args[3] === 1 && args[4] === 1)) counts.texImageFromBytes++;
+        // (target, level, internalformat, format, type, source): straight from a browser image.
+        else if (args.length === 6 && args[5] && typeof args[5] === 'object') counts.texImageFromImage++;
+      }
+      return original.apply(this, args);
+    };
+  }
+  const wrap = (fn) => function countedWasm(...args) { counts.wasm++; return fn.apply(this, args); };
+  // Embind calls wasm through the function table; the glue calls the exports.
+  const wrappedEntries = new WeakMap();
+  const tableGet = WebAssembly.Table.prototype.get;
+  WebAssembly.Table.prototype.get = function get(index) {
+    const entry = tableGet.call(this, index);
+    if (typeof entry !== 'function') return entry;
+    if (!wrappedEntries.has(entry)) wrappedEntries.set(entry, wrap(entry));
+    return wrappedEntries.get(entry);
+  };
+  const withCountedExports = (result) => {
+    const instance = result.instance ?? result;
+    const exports = {};
+    for (const [key, value] of Object.entries(instance.exports)) exports[key] = typeof value === 'function' ? wrap(value) : value;
+    const counted = { exports };
+    return result.instance ? { module: result.module, instance: counted } : counted;
+  };
+  for (const name of ['instantiate', 'instantiateStreaming']) {
+    const original = WebAssembly[name];
+    WebAssembly[name] = (...args) => original.apply(WebAssembly, args).then(withCountedExports);
+  }
+}
+
+/** Per-frame deltas of the counters over `frames` animation frames taken in the middle of a turn. */
+async function countTurningFrames(page, options, frames = 6) {
+  return page.evaluate(async ({ options, frames }) => {
+    await window.openBook(options);
+    await window.settle();
+    const book = window.book;
+    const nextFrame = () => new Promise((resolve) => requestAnimationFrame(resolve));
+    const turning = book.next();
+    for (let i = 0; i < 4; i++) await nextFrame();  // past the turn's first frames (residency, events)
+    const samples = [];
+    for (let i = 0; i <= frames; i++) {
+      await nextFrame();
+      samples.push({ ...window.__counts, glByName: { ...window.__counts.glByName } });
+    }
+    const deltas = samples.slice(1).map((s, i) => ({
+      wasm: s.wasm - samples[i].wasm,
+      gl: s.gl - samples[i].gl,
+      glByName: Object.fromEntries(Object.entries(s.glByName)
+        .map(([name, n]) => [name, n - (samples[i].glByName[name] || 0)]).filter(([, n]) => n > 0)),
+    }));
+    await turning;
+    return deltas;
+  }, { options, frames });
+}
+
+test.beforeEach(async ({ page }) => { await page.addInitScript(countCalls); });
+
+test('browser: a turning frame costs one call into the wasm engine and a bounded number of WebGL calls (double and single, counts)', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  for (const display of ['double', 'single']) {
+    const frames = await countTurningFrames(page, { pages: 8, display, duration: 3000, loadWindow: 8, startPage: 1 });
+    const worst = frames.reduce((a, b) => (b.gl > a.gl ? b : a));
+    console.log(`frame cost, ${display}: JS->wasm calls per frame ${frames.map((f) => f.wasm).join(' ')}; `
+      + `WebGL calls per frame ${frames.map((f) => f.gl).join(' ')}; worst frame ${JSON.stringify(worst.glByName)}`);
+    for (const frame of frames) {
+      expect(frame.wasm, `${display}: JS->wasm calls in a turning frame`).toBe(1);
+      expect(frame.gl, `${display}: a turning frame drew nothing`).toBeGreaterThan(0);
+      expect(frame.gl, `${display}: WebGL calls in a turning frame: ${JSON.stringify(frame.glByName)}`).toBeLessThanOrEqual(MAX_GL_CALLS_PER_TURNING_FRAME);
+      // Samplers and constant uniforms are set after linking, never per frame.
+      expect(frame.glByName.uniform1i ?? 0).toBe(0);
+      expect(frame.glByName.getUniformLocation ?? 0).toBe(0);
+    }
+  }
+});
+
+test('browser: page pixels never pass through the wasm heap: reading a 1000-page book through leaves wasm memory flat, and every page texture comes from a browser image', async ({ page }) => {
+  test.setTimeout(180_000);
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    const pages = Array.from({ length: 1000 }, (_, i) => `/tests/browser/references/curl-t0-00.png?page=${i}`);
+    await window.openBook({ pages, display: 'double', duration: 150, loadWindow: 2 });
+    await window.settle();
+    const { loadEngine } = await import('/web/src/engine.js');
+    const engine = await loadEngine();  // the module the book uses: its heap and its memory
+    const memory = Object.values(engine.asm).find((value) => value instanceof WebAssembly.Memory);
+    const before = { inUse: engine.heapBytesInUse(), memory: memory.buffer.byteLength, images: window.__counts.texImageFromImage };
+    // Through the book in jumps of 20 pages, with a turn at each stop: every stop loads new pages.
+    for (let target = 20; target < 1000; target += 20) {
+      await window.book.flip(target, { animate: false });
+      await window.book.next();
+      await window.settle();
+    }
+    return {
+      before,
+      after: { inUse: engine.heapBytesInUse(), memory: memory.buffer.byteLength },
+      uploads: window.__counts.texImageFromImage - before.images,
+      fromBytes: window.__counts.texImageFromBytes,
+    };
+  });
+  console.log(`1000-page book: ${result.uploads} page uploads; wasm bytes in use ${result.before.inUse} -> ${result.after.inUse}; `
+    + `wasm memory ${result.before.memory} -> ${result.after.memory}; uploads from byte arrays ${result.fromBytes}`);
+  expect(result.uploads).toBeGreaterThan(200);
+  expect(result.fromBytes).toBe(0);
+  expect(result.after.memory).toBe(result.before.memory);
+  expect(result.after.inUse - result.before.inUse).toBeLessThanOrEqual(1024);
+});
