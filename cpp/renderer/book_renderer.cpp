@@ -170,6 +170,7 @@ void BookRenderer::createGpuObjects() {
     // Both passes clear to transparent, and the only blending is the shadow mask's darkest-wins.
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glBlendEquation(GL_MAX);
+    glPolygonOffset(1.0f, 4.0f);  // resting pages drawn after the leaves in flight lose depth ties to them
     glDisable(GL_CULL_FACE);  // one mesh, two sides
 
     glGenVertexArrays(1, &vertexArray_);
@@ -432,21 +433,25 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
         setUniform(leafProgram_, uShadowTexel, texel, 2);
         setUniform(leafProgram_, uViewportInverse, viewportInverse, 2);
     }
-    // Resting pages lie flat under everything that moves: drawn first, writing no depth, so a leaf
-    // settling onto them never fights them for the same depth.
-    glDisable(GL_DEPTH_TEST);
+    if (!anyLifted) {
+        glDisable(GL_DEPTH_TEST);
+        for (int i = 0; i < frame.count; ++i) drawLeaf(book, frame.leaves[i], camera, false);
+        return;
+    }
+    // Leaves in flight first: the depth buffer sorts them against each other and against their own curl.
+    glEnable(GL_DEPTH_TEST);
+    for (int i = 0; i < frame.count; ++i) {
+        if (!frame.leaves[i].resting) drawLeaf(book, frame.leaves[i], camera, false);
+    }
+    // Then the resting pages, flat under everything that moves: depth-tested, so the pixels a leaf
+    // hides are never shaded, and pushed back by the polygon offset, so where a leaf touches them (at
+    // the spine, as it lands) the leaf wins as if it were drawn on top. They write no depth.
     glDepthMask(GL_FALSE);
+    glEnable(GL_POLYGON_OFFSET_FILL);
     for (int i = 0; i < frame.count; ++i) {
         if (frame.leaves[i].resting) drawLeaf(book, frame.leaves[i], camera, shadows);
     }
-    if (anyLifted) {
-        // Leaves in flight: the depth buffer sorts them against each other and against their own curl.
-        glEnable(GL_DEPTH_TEST);
-        glDepthMask(GL_TRUE);
-        for (int i = 0; i < frame.count; ++i) {
-            if (!frame.leaves[i].resting) drawLeaf(book, frame.leaves[i], camera, false);
-        }
-    }
+    glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
 RgbaImage BookRenderer::readPixels() {
