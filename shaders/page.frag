@@ -12,7 +12,7 @@ uniform vec3 uEye;
 uniform vec3 uLightDirection;      // unit, towards the light
 uniform float uLighting;           // 0 or 1
 uniform float uGutter;             // 0 or 1
-uniform float uShadow;             // 0 or 1: this leaf receives the shadow mask
+uniform vec2 uLeaf;                // x: page.vert's (a flat resting leaf); y: 1 where it receives the shadow mask
 uniform sampler2D uShadowMask;     // alpha of the lifted leaves' shadow, in screen space
 uniform vec2 uShadowTexel;         // 1 / mask size
 uniform vec2 uViewportInverse;     // 1 / drawing buffer size: gl_FragCoord to mask coordinates
@@ -49,7 +49,7 @@ void main() {
     // (beyond a quarter of the width the term is below 1/1000 and is skipped).
     if (uGutter > 0.0 && st.x < 0.25) light *= 1.0 - 0.22 * exp(-st.x / 0.045);
 
-    if (uShadow > 0.0) {
+    if (uLeaf.y > 0.0) {
         // Four bilinear taps a texel and a half off each way: a tent blur about 5 mask texels wide
         // (10 screen pixels) that softens the projected edge for the price of four samples.
         vec2 at = gl_FragCoord.xy * uViewportInverse;

@@ -6,6 +6,7 @@
 
 uniform vec3 uCurl;            // theta, apexY, rho (sanitized in C++)
 uniform vec4 uCurlTrig;        // sin theta, cos theta, sin rho, cos rho: the same for every vertex, so from C++
+uniform vec2 uLeaf;            // x: 1 for a resting leaf, flat (theta 90 deg): no cone to evaluate; y: page.frag's
 uniform float uNormalStep;     // finite-difference step, ~1e-3 of the page height
 uniform mat4 uPageToWorld;     // rigid placement of the leaf (may mirror)
 uniform mat4 uViewProjection;
@@ -20,17 +21,23 @@ out vec3 vNormal;              // world normal of the +z side; also captured
 out vec2 vPagePoint;
 
 void main() {
-    vec3 p = curlPoint(aPagePoint, uCurl.y, uCurlTrig);
-#ifdef SHADOW_PASS
-    vNormal = vec3(0.0, 0.0, 1.0);  // the shadow mask needs no normal: no neighbours to curl
-#else
-    // Samuel, eqs. (1)-(3): project two neighbours a small step away and cross the differences.
-    vec3 ps = curlPoint(aPagePoint + vec2(uNormalStep, 0.0), uCurl.y, uCurlTrig);
-    vec3 pt = curlPoint(aPagePoint + vec2(0.0, uNormalStep), uCurl.y, uCurlTrig);
-    vec3 n = normalize(cross(ps - p, pt - p));
+    vec3 p;
+    vec3 n = vec3(0.0, 0.0, 1.0);  // the shadow mask needs no normal: no neighbours to curl
+    if (uLeaf.x > 0.5) {
+        // A flat page is its own cone at theta = 90 deg: only the turn about the spine is left.
+        p = rotateAboutSpine(vec3(aPagePoint, 0.0), uCurlTrig.zw);
+        n = rotateAboutSpine(n, uCurlTrig.zw);
+    } else {
+        p = curlPoint(aPagePoint, uCurl.y, uCurlTrig);
+#ifndef SHADOW_PASS
+        // Samuel, eqs. (1)-(3): project two neighbours a small step away and cross the differences.
+        vec3 ps = curlPoint(aPagePoint + vec2(uNormalStep, 0.0), uCurl.y, uCurlTrig);
+        vec3 pt = curlPoint(aPagePoint + vec2(0.0, uNormalStep), uCurl.y, uCurlTrig);
+        n = normalize(cross(ps - p, pt - p));
+#endif
+    }
     // n is the normal of the +z side, found before any mirroring: placing it keeps it on that side.
     vNormal = mat3(uPageToWorld) * n;
-#endif
     vec4 world = uPageToWorld * vec4(p, 1.0);
     vWorldPosition = world.xyz;
     vPagePoint = aPagePoint;

@@ -89,7 +89,7 @@ void BookRenderer::locate(Program& program) {
     static constexpr const char* kNames[kUniformCount] = {
         "uCurl", "uCurlTrig", "uNormalStep", "uPageToWorld", "uViewProjection", "uLightDirection",
         "uFacingTexture", "uAwayTexture", "uFacingUv", "uAwayUv", "uPageSize", "uEye", "uLighting", "uGutter",
-        "uShadow", "uShadowMask", "uShadowTexel", "uViewportInverse", "uPaper", "uShadowStrength", "uPageWidth"};
+        "uLeaf", "uShadowMask", "uShadowTexel", "uViewportInverse", "uPaper", "uShadowStrength", "uPageWidth"};
     for (int u = 0; u < kUniformCount; ++u) program.location[u] = glGetUniformLocation(program.id, kNames[u]);
     program.known.fill(false);
 }
@@ -340,7 +340,7 @@ void BookRenderer::ensureShadowTarget(int width, int height) {
 }
 
 LeafPlacement BookRenderer::setPlacementUniforms(Program& program, const Book& book, const LeafDraw& leaf,
-                                                 const Camera& camera) {
+                                                 const Camera& camera, bool receiveShadow) {
     const BookConfig& c = book.config();
     const LeafPlacement placement = placeLeaf(c.binding, leaf.mirrored, c.pageHeight, leaf.flippedY);
     const glm::mat4 pageToWorld(placement.pageToWorld);
@@ -349,6 +349,9 @@ LeafPlacement BookRenderer::setPlacementUniforms(Program& program, const Book& b
     const float curlValues[3] = {static_cast<float>(curl.theta), static_cast<float>(curl.apexY), static_cast<float>(curl.rho)};
     const float trig[4] = {static_cast<float>(std::sin(curl.theta)), static_cast<float>(std::cos(curl.theta)),
                            static_cast<float>(std::sin(curl.rho)), static_cast<float>(std::cos(curl.rho))};
+    // A resting leaf lies flat: the shader skips the cone (the same points: theta is 90 degrees there).
+    const float flags[2] = {leaf.resting ? 1.0f : 0.0f, receiveShadow ? 1.0f : 0.0f};
+    setUniform(program, uLeaf, flags, 2);
     setUniform(program, uCurl, curlValues, 3);
     setUniform(program, uCurlTrig, trig, 4);
     setUniform(program, uNormalStep, static_cast<float>(kNormalStepOfHeight * c.pageHeight));
@@ -377,8 +380,8 @@ void BookRenderer::setSurfaceUniforms(const Book& book, const LeafDraw& leaf, co
 }
 
 void BookRenderer::drawLeaf(const Book& book, const LeafDraw& leaf, const Camera& camera, bool receiveShadow) {
-    setSurfaceUniforms(book, leaf, setPlacementUniforms(leafProgram_, book, leaf, camera), camera);
-    setUniform(leafProgram_, uShadow, receiveShadow ? 1.0f : 0.0f);
+    setSurfaceUniforms(book, leaf, setPlacementUniforms(leafProgram_, book, leaf, camera, receiveShadow), camera);
+
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(grid_.indices.size()), GL_UNSIGNED_INT, nullptr);
 }
 
@@ -411,7 +414,7 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
         setUniform(shadowProgram_, uPageWidth, static_cast<float>(book.config().pageWidth));
         for (int i = 0; i < frame.count; ++i) {
             if (frame.leaves[i].resting) continue;
-            setPlacementUniforms(shadowProgram_, book, frame.leaves[i], camera);
+            setPlacementUniforms(shadowProgram_, book, frame.leaves[i], camera, false);
             glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
         }
         glDisable(GL_BLEND);
@@ -487,7 +490,7 @@ std::vector<float> BookRenderer::captureLeaf(const Book& book, int drawIndex) {
 
     useProgram(leafProgram_);
     Camera camera = cameraFor(book, std::max(1, drawingWidth_), std::max(1, drawingHeight_));
-    setPlacementUniforms(leafProgram_, book, frame.leaves[drawIndex], camera);  // positions and normals only
+    setPlacementUniforms(leafProgram_, book, frame.leaves[drawIndex], camera, false);  // positions and normals only
     glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, captureBuffer_);
     glEnable(GL_RASTERIZER_DISCARD);
     glBeginTransformFeedback(GL_POINTS);

@@ -101,7 +101,7 @@ private:
     // Uniforms by name, in both programs; a program lacks some (location -1).
     enum Uniform : int {
         uCurl, uCurlTrig, uNormalStep, uPageToWorld, uViewProjection, uLightDirection, uFacingTexture,
-        uAwayTexture, uFacingUv, uAwayUv, uPageSize, uEye, uLighting, uGutter, uShadow, uShadowMask,
+        uAwayTexture, uFacingUv, uAwayUv, uPageSize, uEye, uLighting, uGutter, uLeaf, uShadowMask,
         uShadowTexel, uViewportInverse, uPaper, uShadowStrength, uPageWidth, kUniformCount
     };
     // A linked program, its uniform locations (looked up once: the per-frame path makes no string
@@ -156,8 +156,10 @@ private:
     int drawingWidth_ = 0;
     int drawingHeight_ = 0;
 
-    // Where the leaf is (both programs); then how its surface looks (the leaf program only).
-    LeafPlacement setPlacementUniforms(Program& program, const Book& book, const LeafDraw& leaf, const Camera& camera);
+    // Where the leaf is and whether it lies flat (both programs), and whether it receives the shadow
+    // mask; then how its surface looks (the leaf program only).
+    LeafPlacement setPlacementUniforms(Program& program, const Book& book, const LeafDraw& leaf, const Camera& camera,
+                                       bool receiveShadow);
     void setSurfaceUniforms(const Book& book, const LeafDraw& leaf, const LeafPlacement& placement, const Camera& camera);
 
     Program leafProgram_;

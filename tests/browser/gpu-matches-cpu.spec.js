@@ -8,8 +8,8 @@ import { openReady } from './helpers.js';
 const TIMES = [0, 0.05, 0.1, 0.15, 0.25, 0.3, 0.4, 0.5, 0.6, 0.75, 0.9, 1];
 
 // Runs in the page: poses a turn and compares the captured leaf with the C++ reference.
-async function measure(page, { direction, turn, times, pageCount = 6, start = 1, hardPages }) {
-  return page.evaluate(async ({ direction, turn, times, pageCount, start, hardPages }) => {
+async function measure(page, { direction, turn, times, pageCount = 6, start = 1, hardPages, resting = false }) {
+  return page.evaluate(async ({ direction, turn, times, pageCount, start, hardPages, resting }) => {
     const { engine } = window.fixture;
     const { BookView } = await import('/web/src/book-view.js');
     const canvas = document.createElement('canvas');
@@ -23,7 +23,7 @@ async function measure(page, { direction, turn, times, pageCount = 6, start = 1,
     for (const t of times) {
       view.showTurn(turn, t);
       const frame = view.book.frame();
-      const index = frame.findIndex((leaf) => !leaf.resting);
+      const index = frame.findIndex((leaf) => leaf.resting === resting);
       const draw = frame[index];
       const captured = view.renderer.captureLeaf(view.book, index);
       const points = view.renderer.gridPoints();
@@ -42,7 +42,7 @@ async function measure(page, { direction, turn, times, pageCount = 6, start = 1,
     view.destroy();
     canvas.remove();
     return results;
-  }, { direction, turn, times, pageCount, start, hardPages });
+  }, { direction, turn, times, pageCount, start, hardPages, resting });
 }
 
 for (const direction of ['ltr', 'rtl', 'vertical']) {
@@ -87,4 +87,19 @@ test('browser: the readback comparison would notice a wrong pose (t 0.31 against
     return maxError;
   });
   expect(error).toBeGreaterThan(1e-3);
+});
+
+test('browser: resting leaves, drawn by the shader\'s flat path, lie where C++ puts them, both stacks, every spine position', async ({ page }) => {
+  await openReady(page, '/tests/browser/fixtures/book-fixture.html?pages=2&sides=1&position=0');
+  for (const direction of ['ltr', 'rtl', 'vertical']) {
+    for (const turn of ['forward', 'backward']) {
+      // Mid-turn, so the frame holds a resting leaf under the lifted one on the side it is leaving.
+      const results = await measure(page, { direction, turn, times: [0.5], start: 2, resting: true });
+      for (const r of results) {
+        expect(r.captured, `${direction} ${turn}: every vertex captured`).toBe(r.vertices);
+        expect(r.maxError, `${direction} ${turn}: position error`).toBeLessThan(1e-4);
+        expect(r.maxNormalAngle, `${direction} ${turn}: normal angle`).toBeLessThan(1e-3);
+      }
+    }
+  }
 });
