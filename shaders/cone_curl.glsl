@@ -61,7 +61,7 @@ vec3 curlPoint(vec2 q, float apexY, vec4 trig) {
     return rotateAboutSpine(deformOntoCone(q, apexY, trig.xy, beta), trig.zw);
 }
 
-// Closed-form front normal (see ../shared/docs/cone-curl-math.md, "Normals").
+// Closed-form front normal (docs/cone-curl-math.md, "Normals").
 vec3 curlNormalAnalytic(vec2 q, float apexY, vec4 trig) {
     float beta;
     deformOntoCone(q, apexY, trig.xy, beta);

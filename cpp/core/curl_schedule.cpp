@@ -1,4 +1,4 @@
-// Evaluates the three-phase schedule; see ../../../shared/docs/cone-curl-math.md for the table.
+// Evaluates the three-phase schedule; docs/cone-curl-math.md ("The three-phase schedule") has the table.
 #include "curl_schedule.hpp"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // Native (GoogleTest via CTest) tests of the cone deformation: the eight invariants and the pitfall
-// guards of shared/docs/cone-curl-math.md, held over the whole schedule and a dense page grid.
+// guards of docs/cone-curl-math.md, held over the whole schedule and a dense page grid.
 #include "test_support.hpp"
 #include "cone_deform.hpp"
 

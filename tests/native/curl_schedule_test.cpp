@@ -1,5 +1,5 @@
 // Native (GoogleTest via CTest) tests of the three-phase cone schedule: they hold curlAt() to the
-// table in shared/docs/cone-curl-math.md over a dense grid of t, plus its clamping and easing rules.
+// table in docs/cone-curl-math.md over a dense grid of t, plus its clamping and easing rules.
 #include "curl_schedule.hpp"
 
 #include <gtest/gtest.h>

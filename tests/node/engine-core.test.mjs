@@ -1,5 +1,5 @@
 // Node tests of the wasm build's math bindings: the schedule table, continuity, and curlPoint held
-// against an independent JS transcription of ../shared/docs/cone-curl-math.md over dense grids.
+// against an independent JS transcription of docs/cone-curl-math.md over dense grids.
 import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
 import { loadEngineForNode } from './load-engine.mjs';
