@@ -586,7 +586,7 @@ export class Flipbook extends EventTarget {
   // size, and (once resizing rests) bring textures to the size now wanted.
   _relayout() {
     const display = this._displayFor(this._layoutSize);
-    if (display !== this.display) this._rebuildView(display);
+    if (display !== this.display) this._switchDisplay(display);
     this._view.sizeChanged();
     clearTimeout(this._refitTimer);
     this._refitTimer = setTimeout(() => this._refitTextures(), REFIT_DELAY_MS);
@@ -594,27 +594,9 @@ export class Flipbook extends EventTarget {
     this._emit('resize', { ...this._layoutSize, display: this.display });
   }
 
-  // The C++ Book takes its display at creation: a new BookView on the same canvas, at the same page,
-  // with the textures uploaded again from the images in the cache. Turns in flight land at once.
-  _rebuildView(display) {
-    // A canvas that handed its context back (out of view, see context-budget.js) cannot take a new
-    // renderer: switch once it has its context again.
-    if (this._contextLease.state !== 'live') {
-      if (!this._relayoutWhenLive) {
-        this._relayoutWhenLive = true;
-        this._contextLease.whenLive(() => {
-          this._relayoutWhenLive = false;
-          if (!this._destroyed) this._relayout();
-        });
-      }
-      return;
-    }
-    const page = this.page;
-    this._view.destroy();
-    this._view = this._makeView(display);
-    this._view.jumpTo(this._view.book.positionOfPage(page));
-    this._attachPointer();
-    for (const [index, image] of this._images) this._view.setPageImage(index, image, { cover: this._textureCover() });
+  // Single or double pages for 'auto': the same Book, renderer and textures, showing the same page.
+  _switchDisplay(display) {
+    this._view.setDisplay(display);
     this._updateResidency();
     this._showOpenPages();
   }
