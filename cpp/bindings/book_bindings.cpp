@@ -255,6 +255,11 @@ EMSCRIPTEN_BINDINGS(conecurl_book) {
                       return out;
                   }))
         .function("resetZoom", optional_override([](Book& b) { b.setZoom(ViewZoom{}); }))
+        .function("setDisplay", optional_override([](Book& b, val display) {
+                      const std::string name = display.isString() ? display.as<std::string>() : "";
+                      if (name != "single" && name != "double") js::throwError("TypeError", "display must be 'single' or 'double'");
+                      b.setDisplay(name == "single" ? Display::Single : Display::Double);
+                  }))
         .function("jumpTo", optional_override([](Book& b, val position) {
                       b.jumpTo(js::wholeNumber(position, "position", 0, b.lastPosition()));
                   }))

@@ -249,6 +249,13 @@ void Book::jumpTo(int position) {
     position_ = std::clamp(position, 0, lastPosition());
 }
 
+void Book::setDisplay(Display display) {
+    if (display == config_.display) return;
+    const int page = std::max(0, firstVisiblePage());
+    config_.display = display;
+    jumpTo(positionOfPage(page));
+}
+
 LeafDraw Book::restingLeaf(int leaf, bool turned) const {
     LeafDraw draw;
     draw.leaf = leaf;

@@ -87,6 +87,9 @@ public:
     bool moving() const;
     // Jumps to a position at once, dropping turns in flight.
     void jumpTo(int position);
+    // Shows one page or two from now on, keeping the first visible page in view; turns in flight land
+    // at once. Pages keep their indices, so whatever the renderer holds for them stays valid.
+    void setDisplay(Display display);
 
     // Held turns follow a pointer: the pose is set from outside (see page_drag.hpp) until the turn
     // is let go. At most one is held; starting one fails where startTurn would, or while one is held.

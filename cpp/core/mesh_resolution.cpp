@@ -126,6 +126,62 @@ MeshDeviation measureMeshDeviation(const PageGrid& grid, const CurlSchedule& sch
     return deviationOverTimes(grid, schedule, pageHeight, times, kInf);
 }
 
+namespace {
+
+// The closed form's choice: its worst coefficients over a dense sweep of the turn (cheap: one curlAt
+// per time), when they happen, and the smallest row count whose predicted sag is within `budget`.
+struct ClosedFormChoice {
+    SagCoefficients worst;
+    double worstAcrossT = 0.0;
+    double worstAlongT = 0.0;
+    int rows = 0;
+};
+
+ClosedFormChoice closedFormChoice(double pageWidth, double pageHeight, const CurlSchedule& schedule, double budget,
+                                  int minRows, int maxRows) {
+    constexpr int kSweep = 2000;
+    ClosedFormChoice choice;
+    std::vector<double> sweep;
+    sweep.reserve(kSweep + 3);
+    for (int i = 0; i <= kSweep; ++i) sweep.push_back(static_cast<double>(i) / kSweep);
+    sweep.push_back(schedule.phase1End);
+    sweep.push_back(schedule.phase2End);
+    for (double t : sweep) {
+        const SagCoefficients c = sagCoefficients(t, schedule, pageWidth, pageHeight);
+        if (c.across > choice.worst.across) choice.worst.across = c.across, choice.worstAcrossT = t;
+        if (c.along > choice.worst.along) choice.worst.along = c.along, choice.worstAlongT = t;
+    }
+    const double aspect = pageWidth / pageHeight;
+    choice.rows = maxRows;
+    for (int r = minRows; r <= maxRows; ++r) {
+        if (closedFormSag(choice.worst, pageWidth, pageHeight, columnsFor(r, aspect), r) <= budget) {
+            choice.rows = r;
+            break;
+        }
+    }
+    return choice;
+}
+
+}  // namespace
+
+GridResolution closedFormGridResolution(double pageWidth, double pageHeight, const CurlSchedule& schedule,
+                                        double pixelsPerUnit, double magnification, double maxErrorPixels,
+                                        int minRows, int maxRows) {
+    minRows = std::max(minRows, 1);
+    maxRows = std::max(maxRows, minRows);
+    if (!(pageWidth > 0.0 && pageHeight > 0.0 && std::isfinite(pageWidth) && std::isfinite(pageHeight))) {
+        return {minRows, 4, kNaN};
+    }
+    const double aspect = pageWidth / pageHeight;
+    if (!(magnification >= 1.0)) magnification = 1.0;
+    const double pixelsPerWorld = pixelsPerUnit * magnification;
+    if (!(pixelsPerWorld > 0.0)) return {minRows, columnsFor(minRows, aspect), 0.0};
+    const double budget = maxErrorPixels > 0.0 ? maxErrorPixels / pixelsPerWorld : -1.0;
+    const ClosedFormChoice choice = closedFormChoice(pageWidth, pageHeight, schedule, budget, minRows, maxRows);
+    const int columns = columnsFor(choice.rows, aspect);
+    return {choice.rows, columns, closedFormSag(choice.worst, pageWidth, pageHeight, columns, choice.rows) * pixelsPerWorld};
+}
+
 GridResolution chooseGridResolution(double pageWidth, double pageHeight, const CurlSchedule& schedule,
                                     double pixelsPerUnit, double magnification, double maxErrorPixels,
                                     int minRows, int maxRows) {
@@ -141,29 +197,11 @@ GridResolution chooseGridResolution(double pageWidth, double pageHeight, const C
     // The budget in world units; NaN or <= 0 pixels cannot be met, so no row count passes below maxRows.
     const double budget = maxErrorPixels > 0.0 ? maxErrorPixels / pixelsPerWorld : -1.0;
 
-    // Closed form over a dense sweep (cheap: one curlAt per time). Its worst moments lead the
-    // verification times, so a failing candidate is found out after measuring one time.
-    constexpr int kSweep = 2000;
-    SagCoefficients worst;
-    double worstAcrossT = 0.0, worstAlongT = 0.0;
-    std::vector<double> sweep;
-    sweep.reserve(kSweep + 3);
-    for (int i = 0; i <= kSweep; ++i) sweep.push_back(static_cast<double>(i) / kSweep);
-    sweep.push_back(schedule.phase1End);
-    sweep.push_back(schedule.phase2End);
-    for (double t : sweep) {
-        const SagCoefficients c = sagCoefficients(t, schedule, pageWidth, pageHeight);
-        if (c.across > worst.across) worst.across = c.across, worstAcrossT = t;
-        if (c.along > worst.along) worst.along = c.along, worstAlongT = t;
-    }
-
-    int rows = maxRows;
-    for (int r = minRows; r <= maxRows; ++r) {
-        if (closedFormSag(worst, pageWidth, pageHeight, columnsFor(r, aspect), r) <= budget) {
-            rows = r;
-            break;
-        }
-    }
+    // The closed form's candidate; its worst moments lead the verification times, so a failing
+    // candidate is found out after measuring one time.
+    const ClosedFormChoice choice = closedFormChoice(pageWidth, pageHeight, schedule, budget, minRows, maxRows);
+    const double worstAcrossT = choice.worstAcrossT, worstAlongT = choice.worstAlongT;
+    int rows = choice.rows;
 
     // Coarse verification times: the closed form's worst moments, the phase boundaries and every 0.2
     // of the turn from 0.1, ordered worst first by the closed form at the candidate's cell size.

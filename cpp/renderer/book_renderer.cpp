@@ -248,7 +248,7 @@ void BookRenderer::updateGrid(const Book& book, const Camera& camera, int width,
     int columns = 0;
     if (rows <= 0) {
         const float pixelsPerUnit = camera.pixelsPerUnit * static_cast<float>(zoomStep / book.zoom().scale);
-        const GridResolution chosen = chooseGridResolution(c.pageWidth, c.pageHeight, c.schedule,
+        const GridResolution chosen = closedFormGridResolution(c.pageWidth, c.pageHeight, c.schedule,
                                                            pixelsPerUnit, camera.magnification);
         rows = chosen.rows;
         columns = chosen.columns;

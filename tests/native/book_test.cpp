@@ -1107,3 +1107,31 @@ TEST(LeafPlacement, ViewFrameHoldsBothPagesInDoubleAndOnlyTheUnturnedOneInSingle
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Book, SetDisplayKeepsTheFirstVisiblePageInViewBothWaysAndLandsTurnsInFlight) {
+    BookConfig config;
+    config.pageCount = 9;
+    Book book(config);
+    book.jumpTo(3);  // pages 5 and 6 open
+    ASSERT_EQ(book.firstVisiblePage(), 5);
+    ASSERT_TRUE(book.startTurn(conecurl::TurnDirection::Forward));
+    book.setDisplay(Display::Single);
+    EXPECT_FALSE(book.animating());
+    EXPECT_EQ(book.config().display, Display::Single);
+    EXPECT_EQ(book.leafCount(), 9);
+    EXPECT_EQ(book.firstVisiblePage(), 7);  // the turn landed: the first page of where it settles (7, 8) stays
+    book.jumpTo(5);
+    book.setDisplay(Display::Single);       // the same display: nothing moves
+    EXPECT_EQ(book.firstVisiblePage(), 5);
+    book.jumpTo(8);
+    book.setDisplay(Display::Double);
+    EXPECT_EQ(book.position(), 4);          // pages 7 and 8
+    EXPECT_EQ(book.firstVisiblePage(), 7);
+    Book empty(BookConfig{});
+    empty.setDisplay(Display::Single);
+    EXPECT_EQ(empty.position(), 0);
+}
+
+}  // namespace

@@ -31,6 +31,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     label: 'a non-empty string',
     fallback: 'true or false',
     antialias: "'auto', true or false",
+    on: 'an object of listeners by event name (ready, progress, pageerror, turnstart, turned, turncancel, resize, zoom, sharpened, link, error)',
   };
   const bad = {
     display: [NaN, 'triple', 2, null, ['double']],
@@ -46,13 +47,14 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     label: ['', '   ', 42, null, NaN],
     fallback: ['no', 0, NaN],
     antialias: ['AUTO', 'on', 1, null, NaN],
+    on: [null, [], () => {}, { turnd: () => {} }, { turned: 'log' }, { ready: null }],
   };
   assert.deepEqual(Object.keys(bad).sort(), Object.keys(allowed).sort());
   for (const [option, values] of Object.entries(bad)) {
     for (const value of values) refuses({ pages, [option]: value }, `option '${option}' must be ${allowed[option]}, got ${describeValue(value)}`);
   }
   // Every option but `pages` has a default, so the table above covers them all.
-  assert.deepEqual(Object.keys(DEFAULTS).sort(), Object.keys(allowed).filter((k) => k !== 'wasmUrl').sort());
+  assert.deepEqual(Object.keys(DEFAULTS).sort(), Object.keys(allowed).filter((k) => k !== 'wasmUrl' && k !== 'on').sort());
 });
 
 test('node: pages must be a non-empty array of page sources; each entry is checked by index, src, alt, hard and key', () => {
@@ -91,7 +93,7 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses(null, 'options must be an object, got null');
   refuses('pages', 'options must be an object, got "pages"');
   refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, direction, startPage, duration, hardCovers, "
-    + 'lighting, shadows, gutter, loadWindow, wasmUrl, label, fallback, antialias)');
+    + 'lighting, shadows, gutter, loadWindow, wasmUrl, label, fallback, antialias, on)');
   refuses({ pages, antialias: 'yes' }, "option 'antialias' must be 'auto', true or false, got \"yes\"");
   refuses({ pages, startPage: 3 }, "option 'startPage' must be below the page count 3, got 3");
   // A value whose own toString throws or is huge is described, not called.

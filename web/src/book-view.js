@@ -214,6 +214,17 @@ export class BookView {
   next() { return this._turn('forward'); }
   prev() { return this._turn('backward'); }
 
+  /**
+   * Shows 'single' or 'double' pages from now on, keeping the first visible page in view; turns in
+   * flight land at once. The renderer, its shaders and the page textures stay as they are.
+   */
+  setDisplay(display) {
+    this._poseFrom = null;
+    this._loop.clearQueue();
+    this.book.setDisplay(display);
+    this.requestRender();
+  }
+
   jumpTo(position) {
     this._poseFrom = null;
     this._loop.clearQueue();

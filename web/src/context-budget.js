@@ -102,7 +102,6 @@ export class ContextLease {
     this._parkedAt = null;        // position and motion when parked: a change asks for the context back
     this._snapshotUrl = null;
     this._snapshotHolder = null;  // the element whose background shows the snapshot
-    this._whenLive = [];
     this._gl = null;
     this._loseContext = null;  // WEBGL_lose_context of the canvas's context
     this._onLost = () => {
@@ -116,8 +115,6 @@ export class ContextLease {
       if (this.state === 'restoring') {
         this.state = 'live';
         requestAnimationFrame(() => this._showLiveFrame());
-        // Out of the event's dispatch: a callback may replace the BookView listening to it.
-        for (const callback of this._whenLive.splice(0)) setTimeout(callback);
       } else if (this.state === 'parked') {
         setTimeout(() => this._reparkAfterRestore());  // restored by someone else while parked
       }
@@ -156,12 +153,6 @@ export class ContextLease {
     }
   }
 
-  /** Runs `callback` once the canvas has its context again (at once when it has). */
-  whenLive(callback) {
-    if (this.state === 'live' || this.state === 'new') callback();
-    else this._whenLive.push(callback);
-  }
-
   /**
    * BookView asks to draw. A live book counts as used; a parked one in view takes a context back when
    * its picture changed (a turn, a drag, a jump), not merely because a page image arrived.
@@ -186,7 +177,6 @@ export class ContextLease {
     this.canvas.removeEventListener('webglcontextrestored', this._onRestored);
     this._budget._forget(this);
     this._clearSnapshot();
-    this._whenLive.length = 0;
     if (this.view) this.view._contextLease = null;
     this.view = null;
     // A canvas's context otherwise lives until the canvas is garbage collected, and counts until then.

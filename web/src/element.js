@@ -1,6 +1,7 @@
 // <cone-flipbook>: the Flipbook as an HTML element, for pages without a build step. Attributes mirror
 // the options; child <img> elements can be the pages, and are what a browser without JavaScript shows.
 import { Flipbook } from './flipbook.js';
+import { BOOK_EVENTS } from './book-events.js';
 
 const TAG = 'cone-flipbook';
 
@@ -199,9 +200,9 @@ export class ConeFlipbookElement extends HTMLElement {
     // Flipbook fires ready and the first progress events inside create(): hear them from the start.
     class HostedFlipbook extends Flipbook {
       dispatchEvent(event) {
-        const result = super.dispatchEvent(event);
+        super.dispatchEvent(event);
         if (generation === host._generation) host._forward(this, event);
-        return result;
+        return !event.defaultPrevented;  // cancelled by the book's listeners or the element's
       }
     }
     try {
@@ -245,7 +246,9 @@ export class ConeFlipbookElement extends HTMLElement {
   _forward(book, event) {
     if (event.type === 'error' && !this._book) return;  // a failed build: _fail or _adoptFallback reports it
     if (event.type === 'ready') this._ready(book);
-    this.dispatchEvent(new CustomEvent(event.type, { detail: event.detail }));
+    // The element's listeners get a copy; cancelling the copy (a link) cancels the book's own event.
+    const copy = new CustomEvent(event.type, { detail: event.detail, cancelable: event.cancelable });
+    if (!this.dispatchEvent(copy)) event.preventDefault();
   }
 
   _ready(book) {
@@ -259,10 +262,9 @@ export class ConeFlipbookElement extends HTMLElement {
   // keys and clicks. The failure is still reported; then the fallback is the element's book.
   _adoptFallback(fallback, error) {
     this._report(error);
-    for (const type of ['progress', 'pageerror', 'turnstart', 'turned', 'resize']) {
-      fallback.addEventListener(type, (event) => {
-        if (this._book === fallback) this.dispatchEvent(new CustomEvent(type, { detail: event.detail }));
-      });
+    for (const type of BOOK_EVENTS) {
+      if (type === 'ready' || type === 'error') continue;  // the element reports these itself, here
+      fallback.addEventListener(type, (event) => { if (this._book === fallback) this._forward(fallback, event); });
     }
     this._ready(fallback);
     this.dispatchEvent(new CustomEvent('ready', { detail: { page: fallback.page } }));

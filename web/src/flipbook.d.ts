@@ -75,6 +75,19 @@ export interface FlipbookOptions {
    * it costs about a third of each frame's time.
    */
   antialias?: 'auto' | boolean;
+  /**
+   * Listeners by event name, registered before anything happens. Without them, events of the first
+   * view (its page errors, progress, ready) are still heard: what happens while create() runs is
+   * delivered just after it resolves, to listeners added right after `await Flipbook.create(...)`.
+   */
+  on?: { [K in keyof FlipbookEventMap]?: (event: FlipbookEventMap[K]) => void };
+}
+
+/** Where a page stands: not wanted yet ('idle'), loading, loaded, or failed (with why, as `pageerror` said). */
+export interface PageState {
+  state: 'idle' | 'loading' | 'loaded' | 'failed';
+  reason?: PageErrorReason;
+  error?: Error;
 }
 
 /** Why a page could not be shown (`pageerror`'s `reason`). */
@@ -129,6 +142,8 @@ export class Flipbook extends EventTarget {
    */
   static create(container: HTMLElement, options: FlipbookOptions): Promise<Flipbook>;
   readonly pageCount: number;
+  /** Where page `index` stands now (RangeError for an index outside the book). */
+  pageState(index: number): PageState;
   /** First visible page at the settled position; after destroy(), the page the book was left at. */
   readonly page: number;
   /** Follows the container's aspect when the option is 'auto'; after destroy(), as it was last. */

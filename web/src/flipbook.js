@@ -6,7 +6,7 @@ import { loadEngine } from './engine.js';
 import { BookView, uploadSizeFor } from './book-view.js';
 import { actionForKey, createShell } from './book-shell.js';
 import { checkFlipOptions, checkLiveOptions, describeValue, pageEntries, validateOptions } from './options.js';
-import { loadPage } from './page-loader.js';
+import { loadPage, pageFailure } from './page-loader.js';
 import { PointerDrag } from './pointer-drag.js';
 import { listenForTapsAndSwipes, swipeDirection } from './tap-swipe.js';
 import { listenForZoom } from './zoom-input.js';
@@ -14,6 +14,7 @@ import { createLinkLayer } from './link-layer.js';
 import { contextBudget } from './context-budget.js';
 import { softwareWebGL } from './software-gl.js';
 import { PageCache } from './page-residency.js';
+import { BookEvents } from './book-events.js';
 
 // Failures after which a book can still be shown, as still pages: Flipbook.create falls back on these.
 const FALLBACK_CODES = ['webgl2-unavailable', 'engine-unavailable'];
@@ -68,6 +69,7 @@ export class Flipbook extends EventTarget {
     } catch (error) {
       throw await book._fail(error);
     }
+    book._events.releaseSoon();  // what happened while loading the first view is heard from now on
     return book;
   }
 
@@ -106,6 +108,7 @@ export class Flipbook extends EventTarget {
     this._owned = new Set();        // images made here (ImageBitmaps from URLs and Blobs): closed when let go
     this._abort = new AbortController();  // page fetches still running when the book is destroyed stop
     this._destroyed = false;
+    this._events = new BookEvents(this, settings.on);  // `on` listeners first; events of create() held
     this._flips = 0;       // counts flip() calls: a later one stops an earlier one's leaf-by-leaf turning
     this._shell = createShell(container, { label: settings.label, direction: settings.direction });
     this._canvas = this._shell.canvas;
@@ -116,6 +119,8 @@ export class Flipbook extends EventTarget {
   }
 
   get pageCount() { return this._pages.length; }
+  /** Where page `index` stands: { state: 'idle' | 'loading' | 'loaded' | 'failed', reason?, error? }. */
+  pageState(index) { return this._cache.pageState(index); }
   /** The first visible page at the settled position (after destroy(), where the book was left). */
   get page() { return this._view ? this._view.book.firstVisiblePage() : (this._finalPage ?? 0); }
   get display() {
@@ -196,6 +201,7 @@ export class Flipbook extends EventTarget {
       this._finalDisplay = this.display;
     }
     this._destroyed = true;
+    this._events.drop();
     this._abort.abort();
     this._pointer?.destroy();
     this._pointer = null;
@@ -506,10 +512,9 @@ export class Flipbook extends EventTarget {
       if (this._destroyed) return;
       // The page keeps the plain paper placeholder; the book keeps working. `reason` says why:
       // 'http', 'network', 'cors' or 'decode' (PageLoadError), or 'upload' (the image would not upload).
-      this._cache.setState(index, 'failed');
-      this._emit('pageerror', {
-        index, error: error instanceof Error ? error : new Error(String(error)), reason: error?.reason || 'upload',
-      });
+      const failure = pageFailure(error);
+      this._cache.setState(index, 'failed', failure);
+      this._emit('pageerror', { index, ...failure });
     } finally {
       const progress = this._cache.endLoad();
       if (!this._destroyed) this._emit('progress', progress);
@@ -581,7 +586,7 @@ export class Flipbook extends EventTarget {
   // size, and (once resizing rests) bring textures to the size now wanted.
   _relayout() {
     const display = this._displayFor(this._layoutSize);
-    if (display !== this.display) this._rebuildView(display);
+    if (display !== this.display) this._switchDisplay(display);
     this._view.sizeChanged();
     clearTimeout(this._refitTimer);
     this._refitTimer = setTimeout(() => this._refitTextures(), REFIT_DELAY_MS);
@@ -589,27 +594,9 @@ export class Flipbook extends EventTarget {
     this._emit('resize', { ...this._layoutSize, display: this.display });
   }
 
-  // The C++ Book takes its display at creation: a new BookView on the same canvas, at the same page,
-  // with the textures uploaded again from the images in the cache. Turns in flight land at once.
-  _rebuildView(display) {
-    // A canvas that handed its context back (out of view, see context-budget.js) cannot take a new
-    // renderer: switch once it has its context again.
-    if (this._contextLease.state !== 'live') {
-      if (!this._relayoutWhenLive) {
-        this._relayoutWhenLive = true;
-        this._contextLease.whenLive(() => {
-          this._relayoutWhenLive = false;
-          if (!this._destroyed) this._relayout();
-        });
-      }
-      return;
-    }
-    const page = this.page;
-    this._view.destroy();
-    this._view = this._makeView(display);
-    this._view.jumpTo(this._view.book.positionOfPage(page));
-    this._attachPointer();
-    for (const [index, image] of this._images) this._view.setPageImage(index, image, { cover: this._textureCover() });
+  // Single or double pages for 'auto': the same Book, renderer and textures, showing the same page.
+  _switchDisplay(display) {
+    this._view.setDisplay(display);
     this._updateResidency();
     this._showOpenPages();
   }
@@ -653,7 +640,7 @@ export class Flipbook extends EventTarget {
       this._emit('sharpened', { index, width: this._view.pageImageSize(index).width });
     } catch (error) {
       if (!this._destroyed) {
-        this._emit('pageerror', { index, error: error instanceof Error ? error : new Error(String(error)), reason: error?.reason || 'upload' });
+        this._emit('pageerror', { index, ...pageFailure(error) });
       }
     } finally {
       this._sharpening.delete(index);
@@ -725,7 +712,7 @@ export class Flipbook extends EventTarget {
   }
 
   _emit(type, detail) {
-    if (!this._destroyed) this.dispatchEvent(new CustomEvent(type, { detail }));
+    if (!this._destroyed) this._events.dispatch(new CustomEvent(type, { detail }));
   }
 
   _alive() {

@@ -1,5 +1,6 @@
 // The options of a book (Flipbook and its static fallback) checked in one place: every bad value is
 // a TypeError that names the option and says what is allowed, before anything is built.
+import { BOOK_EVENTS } from './book-events.js';
 
 const BOOLEAN = (v) => typeof v === 'boolean' || 'true or false';
 export const MAX_PAGES = 1_000_000;  // the engine's Book refuses more (book_bindings.cpp)
@@ -20,6 +21,8 @@ const OPTION_CHECKS = {
   label: (v) => (typeof v === 'string' && v.trim() !== '') || 'a non-empty string',
   fallback: BOOLEAN,
   antialias: (v) => typeof v === 'boolean' || v === 'auto' || "'auto', true or false",
+  on: (v) => (isPlainEntry(v) && Object.entries(v).every(([type, f]) => BOOK_EVENTS.includes(type) && typeof f === 'function'))
+    || `an object of listeners by event name (${BOOK_EVENTS.join(', ')})`,
 };
 export const DEFAULTS = {
   display: 'auto', direction: 'ltr', startPage: 0, duration: 1000, hardCovers: false,

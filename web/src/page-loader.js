@@ -17,6 +17,14 @@ export class PageLoadError extends Error {
   }
 }
 
+/**
+ * A failed page as the `pageerror` event and pageState() report it: the error, and its reason. An
+ * error without one (not a PageLoadError) came from handing the image to the book: 'upload'.
+ */
+export function pageFailure(error) {
+  return { error: error instanceof Error ? error : new Error(String(error)), reason: error?.reason || 'upload' };
+}
+
 const makeCanvas = (width, height) => (typeof OffscreenCanvas === 'function'
   ? new OffscreenCanvas(width, height)
   : Object.assign(document.createElement('canvas'), { width, height }));

@@ -63,6 +63,7 @@ export class PageCache {
     this._lastWanted = new Map();  // page -> tick of the update that last wanted it
     this._clock = 0;
     this._states = new Array(pageCount).fill('idle');  // idle | loading | loaded | failed
+    this._failures = new Map();    // page -> { reason, error } while it stands failed
     this._settled = 0;             // pages loaded or failed
     this._idleWaiters = [];
   }
@@ -70,11 +71,21 @@ export class PageCache {
   /** 'idle', 'loading', 'loaded' or 'failed'. */
   stateOf(page) { return this._states[page]; }
 
-  /** Sets a page's state (a load started, landed, failed, or was let go: 'idle'). */
-  setState(page, state) {
+  /** Sets a page's state (a load started, landed, failed with `failure` { reason, error }, or was let go: 'idle'). */
+  setState(page, state, failure = null) {
     const settled = (s) => s === 'loaded' || s === 'failed';
     this._settled += (settled(state) ? 1 : 0) - (settled(this._states[page]) ? 1 : 0);
     this._states[page] = state;
+    if (state === 'failed') this._failures.set(page, failure ?? { reason: 'upload', error: new Error('page failed') });
+    else this._failures.delete(page);
+  }
+
+  /** Where a page stands, for the books' pageState(): its state, and why it failed. */
+  pageState(page) {
+    if (!Number.isInteger(page) || page < 0 || page >= this._states.length) {
+      throw new RangeError(`conecurl: page must be a page index from 0 to ${this._states.length - 1}, got ${String(page)}`);
+    }
+    return { state: this._states[page], ...this._failures.get(page) };
   }
 
   /** A load of `page` starts. */

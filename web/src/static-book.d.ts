@@ -1,5 +1,5 @@
 // Types of StaticBook, the book without WebGL2 (static-book.js). Kept beside static-book.js.
-import type { FlipbookEventMap, FlipbookOptions } from './flipbook.js';
+import type { FlipbookEventMap, FlipbookOptions, PageState } from './flipbook.js';
 
 /**
  * The open pages as still images on a 2D canvas: what Flipbook.create leaves in the container when
@@ -12,6 +12,8 @@ export class StaticBook extends EventTarget {
   /** Rejects with a TypeError naming a bad option; resolves once the open pages loaded or failed. */
   static create(container: HTMLElement, options: FlipbookOptions): Promise<StaticBook>;
   readonly pageCount: number;
+  /** Where page `index` stands now (RangeError for an index outside the book). */
+  pageState(index: number): PageState;
   readonly page: number;
   readonly display: 'single' | 'double';
   readonly element: HTMLElement;

@@ -4,7 +4,8 @@
 import { actionForKey, createShell } from './book-shell.js';
 import { createLinkLayer } from './link-layer.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries, validateOptions } from './options.js';
-import { loadPage } from './page-loader.js';
+import { loadPage, pageFailure } from './page-loader.js';
+import { BookEvents } from './book-events.js';
 import { PageCache } from './page-residency.js';
 import { listenForTapsAndSwipes, swipeDirection } from './tap-swipe.js';
 
@@ -68,12 +69,14 @@ export class StaticBook extends EventTarget {
       book.destroy();
       throw error;
     }
+    book._events.releaseSoon();  // what happened while loading the first view is heard from now on
     return book;
   }
 
   constructor(container, settings) {
     super();
     this._settings = settings;
+    this._events = new BookEvents(this, settings.on);  // `on` listeners first; events of create() held
     this._pages = pageEntries(settings.pages);
     this._images = new Map();       // page -> { image, owned } while kept
     this._cache = new PageCache(settings.loadWindow, this._pages.length);  // loads, and which images to keep
@@ -89,6 +92,8 @@ export class StaticBook extends EventTarget {
   }
 
   get pageCount() { return this._pages.length; }
+  /** Where page `index` stands: { state: 'idle' | 'loading' | 'loaded' | 'failed', reason?, error? }. */
+  pageState(index) { return this._cache.pageState(index); }
   /** The first visible page. */
   get page() { return firstVisiblePage(this._position, this.pageCount, this._display); }
   get display() { return this._display; }
@@ -142,6 +147,7 @@ export class StaticBook extends EventTarget {
   destroy() {
     if (this._destroyed) return;
     this._destroyed = true;
+    this._events.drop();
     this._abort.abort();
     this._stopInput?.();
     this._resizeObserver?.disconnect();
@@ -185,7 +191,7 @@ export class StaticBook extends EventTarget {
   }
 
   _emit(type, detail) {
-    if (!this._destroyed) this.dispatchEvent(new CustomEvent(type, { detail }));
+    if (!this._destroyed) this._events.dispatch(new CustomEvent(type, { detail }));
   }
 
   async _turn(direction) {
@@ -321,9 +327,9 @@ export class StaticBook extends EventTarget {
       if (this._slots().some((slot) => slot.page === index)) this._draw();
     } catch (error) {
       if (this._destroyed) return;
-      this._cache.setState(index, 'failed');
-      const reason = error && error.reason ? error.reason : 'decode';
-      this._emit('pageerror', { index, error: error instanceof Error ? error : new Error(String(error)), reason });
+      const failure = pageFailure(error);
+      this._cache.setState(index, 'failed', failure);
+      this._emit('pageerror', { index, ...failure });
     } finally {
       const progress = this._cache.endLoad();
       if (!this._destroyed) this._emit('progress', progress);

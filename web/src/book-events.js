@@ -1,0 +1,42 @@
+// Events a user can always hear, for Flipbook and its static fallback alike: what a book dispatches
+// while create() runs is held and delivered, in order, just after create() resolves (so a listener
+// added right after `await Flipbook.create(...)` hears the first view's page errors), and the `on`
+// option's listeners are registered before anything happens.
+
+/** Every event a book dispatches. */
+export const BOOK_EVENTS = ['ready', 'progress', 'pageerror', 'turnstart', 'turned', 'turncancel', 'resize',
+  'zoom', 'sharpened', 'link', 'error'];
+
+export class BookEvents {
+  /** @param {EventTarget} target the book @param {Record<string, Function>} [on] listeners by event type */
+  constructor(target, on = {}) {
+    this._target = target;
+    this._held = [];  // null once released: events then go out at once
+    for (const [type, listener] of Object.entries(on)) target.addEventListener(type, listener);
+  }
+
+  /** Dispatches `event` now, or holds it while create() runs. Returns dispatchEvent's answer (true when held). */
+  dispatch(event) {
+    if (this._held) {
+      this._held.push(event);
+      return true;
+    }
+    return this._target.dispatchEvent(event);
+  }
+
+  /** create() resolved: what was held goes out in the next task, after the caller's continuation. */
+  releaseSoon() {
+    setTimeout(() => this.releaseNow(), 0);
+  }
+
+  releaseNow() {
+    const held = this._held ?? [];
+    this._held = null;
+    for (const event of held) this._target.dispatchEvent(event);
+  }
+
+  /** The book is destroyed: what is held is dropped, nothing more goes out. */
+  drop() {
+    this._held = [];
+  }
+}
