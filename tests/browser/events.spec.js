@@ -2,7 +2,7 @@
 // errors; the `on` option registers listeners before anything happens; pageState() answers later;
 // <cone-flipbook> passes a cancelled link back to the book, with WebGL2 and in the static fallback.
 import { test, expect } from '@playwright/test';
-import { openReady } from './helpers.js';
+import { openReady, withoutWebGL2 } from './helpers.js';
 
 const FLIPBOOK_FIXTURE = '/tests/browser/fixtures/flipbook-fixture.html';
 const ELEMENT_FIXTURE = '/tests/browser/fixtures/element-fixture.html';
@@ -82,14 +82,7 @@ test('browser: <cone-flipbook> re-dispatches link as a cancelable copy, and prev
 });
 
 test.describe('without WebGL2', () => {
-  test.beforeEach(async ({ page }) => {
-    await page.addInitScript(() => {
-      const getContext = HTMLCanvasElement.prototype.getContext;
-      HTMLCanvasElement.prototype.getContext = function (type, ...rest) {
-        return type === 'webgl2' ? null : getContext.call(this, type, ...rest);
-      };
-    });
-  });
+  test.beforeEach(async ({ page }) => { await withoutWebGL2(page); });
 
   test('browser (no WebGL2): <cone-flipbook> forwards the static fallback\'s link, cancelable, and cancelling it cancels the fallback\'s', async ({ page }) => {
     await page.goto(ELEMENT_FIXTURE);

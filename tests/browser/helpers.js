@@ -12,3 +12,13 @@ export async function openReady(page, url) {
   expect(error, 'page reported an error').toBeNull();
   return problems;
 }
+
+/** As in a browser or GPU without WebGL2: from the next navigation on, every canvas refuses a 'webgl2' context. */
+export async function withoutWebGL2(page) {
+  await page.addInitScript(() => {
+    const getContext = HTMLCanvasElement.prototype.getContext;
+    HTMLCanvasElement.prototype.getContext = function (type, ...rest) {
+      return type === 'webgl2' ? null : getContext.call(this, type, ...rest);
+    };
+  });
+}

@@ -11,27 +11,35 @@ export class BookEvents {
   /** @param {EventTarget} target the book @param {Record<string, Function>} [on] listeners by event type */
   constructor(target, on = {}) {
     this._target = target;
-    this._held = [];  // null once released: events then go out at once
+    this._held = [];          // null once released: events then go out at once
+    this._resolved = false;   // create() has resolved: the caller can listen now
     for (const [type, listener] of Object.entries(on)) target.addEventListener(type, listener);
   }
 
-  /** Dispatches `event` now, or holds it while create() runs. Returns dispatchEvent's answer (true when held). */
+  /**
+   * Dispatches `event` now, or holds it while create() runs. An event of the book's life after
+   * create() resolved (a turn asked for at once) first lets out what was held, so the order stays and
+   * nothing waits. Returns dispatchEvent's answer (true when held).
+   */
   dispatch(event) {
-    if (this._held) {
+    if (this._held && !this._resolved) {
       this._held.push(event);
       return true;
     }
+    if (this._held) this.releaseNow();
     return this._target.dispatchEvent(event);
   }
 
   /** create() resolved: what was held goes out in the next task, after the caller's continuation. */
   releaseSoon() {
+    this._resolved = true;
     setTimeout(() => this.releaseNow(), 0);
   }
 
   releaseNow() {
     const held = this._held ?? [];
     this._held = null;
+    this._resolved = true;
     for (const event of held) this._target.dispatchEvent(event);
   }
 
