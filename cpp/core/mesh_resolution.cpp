@@ -164,38 +164,60 @@ ClosedFormChoice closedFormChoice(double pageWidth, double pageHeight, const Cur
 
 }  // namespace
 
+namespace {
+
+// The inputs both choices share, checked once: degenerate ones answer at once (`early`).
+struct GridBudget {
+    bool early = false;
+    GridResolution answer{};  // when early
+    double aspect = 1.0;
+    double pixelsPerWorld = 0.0;
+    double budget = -1.0;     // world units; NaN or <= 0 pixels cannot be met: no row count passes below maxRows
+    int minRows = 1;
+    int maxRows = 1;
+};
+
+GridBudget gridBudget(double pageWidth, double pageHeight, double pixelsPerUnit, double magnification,
+                      double maxErrorPixels, int minRows, int maxRows) {
+    GridBudget b;
+    b.minRows = std::max(minRows, 1);
+    b.maxRows = std::max(maxRows, b.minRows);
+    if (!(pageWidth > 0.0 && pageHeight > 0.0 && std::isfinite(pageWidth) && std::isfinite(pageHeight))) {
+        b.early = true;
+        b.answer = {b.minRows, 4, kNaN};
+        return b;
+    }
+    b.aspect = pageWidth / pageHeight;
+    b.pixelsPerWorld = pixelsPerUnit * (magnification >= 1.0 ? magnification : 1.0);
+    if (!(b.pixelsPerWorld > 0.0)) {
+        b.early = true;
+        b.answer = {b.minRows, columnsFor(b.minRows, b.aspect), 0.0};
+        return b;
+    }
+    b.budget = maxErrorPixels > 0.0 ? maxErrorPixels / b.pixelsPerWorld : -1.0;
+    return b;
+}
+
+}  // namespace
+
 GridResolution closedFormGridResolution(double pageWidth, double pageHeight, const CurlSchedule& schedule,
                                         double pixelsPerUnit, double magnification, double maxErrorPixels,
                                         int minRows, int maxRows) {
-    minRows = std::max(minRows, 1);
-    maxRows = std::max(maxRows, minRows);
-    if (!(pageWidth > 0.0 && pageHeight > 0.0 && std::isfinite(pageWidth) && std::isfinite(pageHeight))) {
-        return {minRows, 4, kNaN};
-    }
-    const double aspect = pageWidth / pageHeight;
-    if (!(magnification >= 1.0)) magnification = 1.0;
-    const double pixelsPerWorld = pixelsPerUnit * magnification;
-    if (!(pixelsPerWorld > 0.0)) return {minRows, columnsFor(minRows, aspect), 0.0};
-    const double budget = maxErrorPixels > 0.0 ? maxErrorPixels / pixelsPerWorld : -1.0;
-    const ClosedFormChoice choice = closedFormChoice(pageWidth, pageHeight, schedule, budget, minRows, maxRows);
-    const int columns = columnsFor(choice.rows, aspect);
-    return {choice.rows, columns, closedFormSag(choice.worst, pageWidth, pageHeight, columns, choice.rows) * pixelsPerWorld};
+    const GridBudget b = gridBudget(pageWidth, pageHeight, pixelsPerUnit, magnification, maxErrorPixels, minRows, maxRows);
+    if (b.early) return b.answer;
+    const ClosedFormChoice choice = closedFormChoice(pageWidth, pageHeight, schedule, b.budget, b.minRows, b.maxRows);
+    const int columns = columnsFor(choice.rows, b.aspect);
+    return {choice.rows, columns, closedFormSag(choice.worst, pageWidth, pageHeight, columns, choice.rows) * b.pixelsPerWorld};
 }
 
 GridResolution chooseGridResolution(double pageWidth, double pageHeight, const CurlSchedule& schedule,
                                     double pixelsPerUnit, double magnification, double maxErrorPixels,
                                     int minRows, int maxRows) {
-    minRows = std::max(minRows, 1);
-    maxRows = std::max(maxRows, minRows);
-    if (!(pageWidth > 0.0 && pageHeight > 0.0 && std::isfinite(pageWidth) && std::isfinite(pageHeight))) {
-        return {minRows, 4, kNaN};
-    }
-    const double aspect = pageWidth / pageHeight;
-    if (!(magnification >= 1.0)) magnification = 1.0;
-    const double pixelsPerWorld = pixelsPerUnit * magnification;
-    if (!(pixelsPerWorld > 0.0)) return {minRows, columnsFor(minRows, aspect), 0.0};
-    // The budget in world units; NaN or <= 0 pixels cannot be met, so no row count passes below maxRows.
-    const double budget = maxErrorPixels > 0.0 ? maxErrorPixels / pixelsPerWorld : -1.0;
+    const GridBudget b = gridBudget(pageWidth, pageHeight, pixelsPerUnit, magnification, maxErrorPixels, minRows, maxRows);
+    if (b.early) return b.answer;
+    const double aspect = b.aspect, pixelsPerWorld = b.pixelsPerWorld, budget = b.budget;
+    minRows = b.minRows;
+    maxRows = b.maxRows;
 
     // The closed form's candidate; its worst moments lead the verification times, so a failing
     // candidate is found out after measuring one time.
