@@ -42,7 +42,7 @@ export class BookView {
    * Uploads a page image, scaled down (never up, aspect kept) to fit MAX_TEXTURE_SIZE and, with
    * `cover`, to the smallest size that still covers cover.width x cover.height pixels.
    */
-  setPageImage(page: number, source: CanvasImageSource | ImageData, options?: { cover?: { width: number; height: number } }): void;
+  setPageImage(page: number, source: TexImageSource, options?: { cover?: { width: number; height: number } }): void;
   releasePageImage(page: number): void;
   /** Pixel size of the page's texture as uploaded; null without one. */
   pageImageSize(page: number): { width: number; height: number } | null;
@@ -63,6 +63,12 @@ export class BookView {
   next(): Promise<boolean>;
   prev(): Promise<boolean>;
   jumpTo(position: number): void;
+  /** 'single' or 'double' from now on, keeping the first visible page; the renderer and page textures stay. */
+  setDisplay(display: 'single' | 'double'): void;
+  /** The canvas's CSS size or the pixel ratio changed: the next frame sizes the drawing buffer. */
+  sizeChanged(): void;
+  /** Called after a frame whose pages on screen changed (a leaf lifted or landed). */
+  onPagesChanged: (() => void) | null;
   /** Exact frame of a turn from the settled position at progress t, with no clock running. */
   showTurn(direction: 'forward' | 'backward', t: number): boolean;
   /** Draws at once (same task as a following readPixels()). */

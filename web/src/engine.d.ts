@@ -80,7 +80,31 @@ export interface Book {
   advance(seconds: number): boolean;
   animating(): boolean;
   jumpTo(position: number): void;
+  /** One page or two from now on, keeping the first visible page; turns in flight land. TypeError for other values. */
+  setDisplay(display: 'single' | 'double'): void;
   frame(): LeafDraw[];
+  delete(): void;
+}
+
+/**
+ * A book's frame loop: one call per animation frame advances the clock (capped at 0.25 s a frame),
+ * starts turns waiting for a leaf in flight, composes the frame and draws it. Delete it before the
+ * Book and BookRenderer it drives.
+ */
+export interface FrameLoop {
+  /** `nowMs`: the animation frame's timestamp; `draw` false advances without drawing. Returns TICK_* bits. */
+  tick(nowMs: number, draw: boolean): number;
+  /** 0: started; 1: waits behind a leaf in flight; 2: refused (end of the book, or 16 already waiting). */
+  requestTurn(direction: 'forward' | 'backward'): 0 | 1 | 2;
+  queuedTurns(): number;
+  clearQueue(): void;
+  /** The clock runs from the next tick (a held pose changed). */
+  run(): void;
+  /** An exact pose is shown: time stops changing the frame until run(). */
+  stop(): void;
+  running(): boolean;
+  /** The next tick advances nothing (after frames were paused). */
+  forgetLastTick(): void;
   delete(): void;
 }
 
@@ -94,11 +118,12 @@ export interface RenderOptions {
 export interface BookRenderer {
   setOptions(options: RenderOptions): void;
   /**
-   * pixels: width * height * 4 RGBA bytes, rows top to bottom. RangeError for a page, width or height
-   * that is not a whole number in range, TypeError for pixels of the wrong kind or length, Error if
-   * too large for the GPU.
+   * Uploads `source` (width x height pixels) straight into the page's texture: the browser copies it,
+   * nothing passes through the wasm heap. RangeError for a page, width or height that is not a whole
+   * number in range, TypeError for a source that is not an object, Error if too large for the GPU or
+   * not an image the browser can upload, a SecurityError DOMException for a cross-origin image without CORS.
    */
-  setPageImage(page: number, width: number, height: number, pixels: ArrayLike<number>): void;
+  setPageImage(page: number, source: TexImageSource, width: number, height: number): void;
   releasePageImage(page: number): void;
   hasPageImage(page: number): boolean;
   residentPageImages(): number;
@@ -138,6 +163,14 @@ export interface ConeCurlEngine {
   leafPointToWorld(draw: LeafDraw, binding: 'left' | 'right' | 'top', pageHeight: number, x: number, y: number): Vec3;
   leafNormalToWorld(draw: LeafDraw, binding: 'left' | 'right' | 'top', pageHeight: number, x: number, y: number): Vec3;
   Book: { create(options: BookOptions): Book };
+  FrameLoop: new (book: Book, renderer: BookRenderer) => FrameLoop;
+  /** FrameLoop.tick bits: time still changes the frame; nothing moves and no leaf is held; the pages on screen changed; a frame was drawn. */
+  TICK_MOVING: number;
+  TICK_SETTLED: number;
+  TICK_PAGES_CHANGED: number;
+  TICK_DREW: number;
+  /** The pages the book's frame shows (resting sides facing up, both sides of leaves in flight), no blanks. */
+  pagesOnScreen(book: Book): number[];
   BookRenderer: {
     /**
      * Throws an Error ("conecurl: ...") if the renderer cannot be made: with `code`
