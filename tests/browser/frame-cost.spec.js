@@ -136,3 +136,37 @@ test('browser: page pixels never pass through the wasm heap: reading a 1000-page
   expect(result.after.memory).toBe(result.before.memory);
   expect(result.after.inUse - result.before.inUse).toBeLessThanOrEqual(1024);
 });
+
+test('browser: pages that arrive together mid-turn are uploaded one a frame, never several in one turning frame, and all of them by the end', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    // Pages from 3 on wait at a gate, opened mid-turn: several loads land in the same task.
+    let open;
+    const gate = new Promise((resolve) => { open = resolve; });
+    const pages = Array.from({ length: 12 }, (_, i) => async () => {
+      if (i >= 3) await gate;
+      return window.makeNumberedPage(i);
+    });
+    await window.openBook({ pages, display: 'double', duration: 3000, loadWindow: 2 });
+    const book = window.book;
+    const nextFrame = () => new Promise((resolve) => requestAnimationFrame(resolve));
+    const turning = book.next();
+    await nextFrame();
+    await nextFrame();
+    open();
+    const perFrame = [];
+    let last = window.__counts.texImageFromImage;
+    for (let i = 0; i < 20; i++) {
+      await nextFrame();
+      perFrame.push(window.__counts.texImageFromImage - last);
+      last = window.__counts.texImageFromImage;
+    }
+    await turning;
+    await window.settle();
+    return { perFrame, resident: [3, 4].map((p) => book.pageState(p).state) };
+  });
+  console.log(`uploads per turning frame after the gate opened: ${result.perFrame.join(' ')}`);
+  expect(Math.max(...result.perFrame)).toBe(1);
+  expect(result.perFrame.reduce((a, b) => a + b, 0)).toBeGreaterThanOrEqual(2);
+  expect(result.resident).toEqual(['loaded', 'loaded']);
+});

@@ -43,6 +43,11 @@ export class BookView {
    * `cover`, to the smallest size that still covers cover.width x cover.height pixels.
    */
   setPageImage(page: number, source: TexImageSource, options?: { cover?: { width: number; height: number } }): void;
+  /**
+   * setPageImage, but while leaves move the upload waits for a frame, at most one a frame, so pages
+   * arriving together mid-turn never stall it. Resolves once uploaded; rejects as setPageImage throws.
+   */
+  queuePageImage(page: number, source: TexImageSource, options?: { cover?: { width: number; height: number } }): Promise<void>;
   releasePageImage(page: number): void;
   /** Pixel size of the page's texture as uploaded; null without one. */
   pageImageSize(page: number): { width: number; height: number } | null;

@@ -101,6 +101,8 @@ export class BookView {
     this._ticks = { moving: engine.TICK_MOVING, settled: engine.TICK_SETTLED, pagesChanged: engine.TICK_PAGES_CHANGED };
     /** Called after a frame whose pages on screen changed (a leaf lifted or landed): residency follows. */
     this.onPagesChanged = null;
+    this._uploads = [];          // page images waiting for a frame while leaves move: one a frame
+    this._moving = false;        // the last frame still moved
     this._sources = new Map();   // page -> { source, cover }, to upload again after a context loss
     this._uploaded = new Map();  // page -> { width, height } of its texture
     this._frame = 0;
@@ -146,6 +148,36 @@ export class BookView {
     this._sources.set(page, { source, cover });
     this._uploaded.set(page, size);
     this.requestRender();
+  }
+
+  /**
+   * Like setPageImage, but while leaves move the upload waits for the next frame, at most one a frame,
+   * so pages that arrive together mid-turn never stall it. Resolves once uploaded; rejects with what
+   * setPageImage throws (or an Error if the view is destroyed first).
+   */
+  queuePageImage(page, source, options = {}) {
+    if (!this._moving) {
+      try {
+        this.setPageImage(page, source, options);
+        return Promise.resolve();
+      } catch (error) {
+        return Promise.reject(error);
+      }
+    }
+    return new Promise((resolve, reject) => {
+      this._uploads.push({ page, source, options, resolve, reject });
+      this.requestRender();
+    });
+  }
+
+  _uploadNext() {
+    const { page, source, options, resolve, reject } = this._uploads.shift();
+    try {
+      this.setPageImage(page, source, options);
+      resolve();
+    } catch (error) {
+      reject(error);
+    }
   }
 
   releasePageImage(page) {
@@ -292,6 +324,7 @@ export class BookView {
     delete this.engine.specialHTMLTargets[this._target];
     this._sources.clear();
     this._uploaded.clear();
+    for (const { reject } of this._uploads.splice(0)) reject(new Error('conecurl: the book view was destroyed'));
     for (const resolve of this._settled.splice(0)) resolve();
   }
 
@@ -308,7 +341,11 @@ export class BookView {
     if (!this.renderer || (this._lost && !this._parked)) return;
     if (!this._lost) this._fitIfStale();
     const flags = this._loop.tick(now, !this._lost);
-    if (flags & this._ticks.moving) this._frame = requestAnimationFrame((t) => this._tick(t));
+    this._moving = Boolean(flags & this._ticks.moving);
+    // Pages that arrived while leaves move: one a frame (shown from the next); all at once at rest.
+    if (this._uploads.length > 0) this._uploadNext();
+    while (!this._moving && this._uploads.length > 0) this._uploadNext();
+    if (this._moving) this._frame = requestAnimationFrame((t) => this._tick(t));
     if (flags & this._ticks.pagesChanged) this.onPagesChanged?.();
     if (flags & this._ticks.settled) for (const resolve of this._settled.splice(0)) resolve();
   }

@@ -503,7 +503,9 @@ export class Flipbook extends EventTarget {
         if (!this._destroyed && this._cache.stateOf(index) === 'loading') this._cache.setState(index, 'idle');
         return;
       }
-      this._upload(index, image);
+      await this._view.queuePageImage(index, image, { cover: this._textureCover() });  // mid-turn: one a frame
+      if (this._destroyed) return;
+      this._images.set(index, image);
       this._cache.setState(index, 'loaded');
       this._releaseExcess();
       // A source may have learned its page's text and links while making it (a PDF page).
@@ -523,11 +525,6 @@ export class Flipbook extends EventTarget {
 
   _closeIfOwned(image) {
     if (image && this._owned.delete(image)) image.close?.();
-  }
-
-  _upload(index, image) {
-    this._view.setPageImage(index, image, { cover: this._textureCover() });
-    this._images.set(index, image);
   }
 
   /** Texture pixels a page needs: its size on screen in device pixels, times TEXTURE_OVERSAMPLE. */
