@@ -60,13 +60,14 @@ EMSCRIPTEN_BINDINGS(conecurl_frame) {
     class_<FrameLoop>("FrameLoop")
         .constructor<Book*, BookRenderer*>(allow_raw_pointers())
         .function("tick", &tick)
-        // 0: started, 1: waits behind a leaf in flight, 2: refused (end of the book, queue full).
-        .function("requestTurn", optional_override([](FrameLoop& l, val direction) {
-                      return static_cast<int>(l.clock.requestTurn(*l.book, directionOf(direction)));
+        // requestTurn(direction, nowMs): 0 started, 1 waits behind a leaf in flight, 2 refused (end
+        // of the book, queue full). nowMs: performance.now() when asked, the frames' clock.
+        .function("requestTurn", optional_override([](FrameLoop& l, val direction, double nowMs) {
+                      return static_cast<int>(l.clock.requestTurn(*l.book, directionOf(direction), nowMs / 1000.0));
                   }))
         .function("queuedTurns", optional_override([](const FrameLoop& l) { return l.clock.queuedTurns(); }))
         .function("clearQueue", optional_override([](FrameLoop& l) { l.clock.clearQueue(); }))
-        .function("run", optional_override([](FrameLoop& l) { l.clock.run(); }))
+        .function("run", optional_override([](FrameLoop& l, double nowMs) { l.clock.run(nowMs / 1000.0); }))
         .function("stop", optional_override([](FrameLoop& l) { l.clock.stop(); }))
         .function("running", optional_override([](const FrameLoop& l) { return l.clock.running(); }))
         .function("forgetLastTick", optional_override([](FrameLoop& l) { l.clock.forgetLastTick(); }));

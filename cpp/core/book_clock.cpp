@@ -29,22 +29,22 @@ PagesOnScreen pagesOnScreen(const BookFrame& frame) {
     return out;
 }
 
-TurnRequest BookClock::requestTurn(Book& book, TurnDirection direction) {
+TurnRequest BookClock::requestTurn(Book& book, TurnDirection direction, double nowSeconds) {
     // Turns keep their order: one asked for behind a waiting one waits too.
     if (queued_ == 0 && book.startTurn(direction)) {
-        running_ = true;
+        run(nowSeconds);
         return TurnRequest::Started;
     }
     if (!book.animating() || queued_ >= kMaxQueuedTurns) return TurnRequest::Refused;
     queue_[queued_++] = direction;
-    running_ = true;
+    run(nowSeconds);
     return TurnRequest::Queued;
 }
 
 int BookClock::tick(Book& book, double nowSeconds) {
     int flags = 0;
     if (running_ && book.moving()) {
-        const double step = lastSeconds_ >= 0.0 && std::isfinite(nowSeconds)
+        const double step = lastSeconds_ >= 0.0 && std::isfinite(nowSeconds) && std::isfinite(lastSeconds_)
                                 ? std::clamp(nowSeconds - lastSeconds_, 0.0, kMaxStepSeconds)
                                 : 0.0;
         book.advance(step);

@@ -35,12 +35,19 @@ public:
     static constexpr double kMaxStepSeconds = 0.25;
     static constexpr int kMaxQueuedTurns = 16;
 
-    TurnRequest requestTurn(Book& book, TurnDirection direction);
+    // `nowSeconds` is when the turn was asked for, on the frames' clock: the first frame after it
+    // advances by the time since then, so a turn does not lose the frame it waited for.
+    TurnRequest requestTurn(Book& book, TurnDirection direction, double nowSeconds);
     int queuedTurns() const { return queued_; }
     void clearQueue() { queued_ = 0; }
 
-    // The clock runs from the next tick on (a turn started, a held pose changed).
+    // The clock runs from the next tick on (a turn started, a held pose changed); with `nowSeconds`
+    // that tick advances by the time since then.
     void run() { running_ = true; }
+    void run(double nowSeconds) {
+        if (!running_ || lastSeconds_ < 0.0) lastSeconds_ = nowSeconds;
+        running_ = true;
+    }
     // An exact pose is shown: time stops changing the frame until run() again.
     void stop() {
         running_ = false;

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 namespace {
@@ -20,14 +21,13 @@ Book bookOf(int pages, Display display = Display::Double, double turnSeconds = 1
 
 std::vector<int> pagesOf(const PagesOnScreen& p) { return {p.pages.begin(), p.pages.begin() + p.count}; }
 
-TEST(BookClock, FirstTickAdvancesNothingAndLaterTicksAdvanceByTheTimeBetweenThem) {
+TEST(BookClock, ATurnRunsFromWhenItWasAskedForAndTicksAdvanceByTheTimeBetweenThem) {
     Book book = bookOf(8);
     BookClock clock;
-    ASSERT_EQ(clock.requestTurn(book, TurnDirection::Forward), TurnRequest::Started);
-    EXPECT_TRUE(clock.tick(book, 10.0) & kTickMoving);
+    ASSERT_EQ(clock.requestTurn(book, TurnDirection::Forward, 10.0), TurnRequest::Started);
+    EXPECT_TRUE(clock.tick(book, 10.25) & kTickMoving);  // the frame it waited for counts
     EXPECT_EQ(book.position(), 1);
     EXPECT_TRUE(book.animating());
-    EXPECT_TRUE(clock.tick(book, 10.25) & kTickMoving);
     EXPECT_TRUE(clock.tick(book, 10.5) & kTickMoving);  // half of a one-second turn
     EXPECT_TRUE(clock.tick(book, 10.75) & kTickMoving);
     EXPECT_TRUE(book.animating());
@@ -41,7 +41,7 @@ TEST(BookClock, FirstTickAdvancesNothingAndLaterTicksAdvanceByTheTimeBetweenThem
 TEST(BookClock, AStepIsCappedSoAStalledTabDoesNotJumpAndTimeNeverRunsBackwards) {
     Book book = bookOf(8);
     BookClock clock;
-    clock.requestTurn(book, TurnDirection::Forward);
+    clock.requestTurn(book, TurnDirection::Forward, 0.0);
     clock.tick(book, 0.0);
     clock.tick(book, 100.0);  // a hidden tab: at most kMaxStepSeconds of the turn passes
     EXPECT_TRUE(book.animating());
@@ -56,10 +56,10 @@ TEST(BookClock, AStepIsCappedSoAStalledTabDoesNotJumpAndTimeNeverRunsBackwards) 
 TEST(BookClock, ATurnForALeafInFlightWaitsAndStartsInOrderWhenItCan) {
     Book book = bookOf(8);
     BookClock clock;
-    ASSERT_EQ(clock.requestTurn(book, TurnDirection::Forward), TurnRequest::Started);
+    ASSERT_EQ(clock.requestTurn(book, TurnDirection::Forward, 0.0), TurnRequest::Started);
     // Backward needs leaf 0, which is in flight: it waits; a forward asked after it waits behind it.
-    EXPECT_EQ(clock.requestTurn(book, TurnDirection::Backward), TurnRequest::Queued);
-    EXPECT_EQ(clock.requestTurn(book, TurnDirection::Forward), TurnRequest::Queued);
+    EXPECT_EQ(clock.requestTurn(book, TurnDirection::Backward, 0.0), TurnRequest::Queued);
+    EXPECT_EQ(clock.requestTurn(book, TurnDirection::Forward, 0.0), TurnRequest::Queued);
     EXPECT_EQ(clock.queuedTurns(), 2);
     clock.tick(book, 0.0);
     EXPECT_EQ(clock.queuedTurns(), 2);
@@ -75,9 +75,9 @@ TEST(BookClock, ATurnForALeafInFlightWaitsAndStartsInOrderWhenItCan) {
 TEST(BookClock, AtTheEndOfTheBookATurnIsRefusedAndLeftoverQueueIsDroppedWhenItSettles) {
     Book book = bookOf(2);  // one leaf: one forward turn is all there is
     BookClock clock;
-    EXPECT_EQ(clock.requestTurn(book, TurnDirection::Backward), TurnRequest::Refused);
-    ASSERT_EQ(clock.requestTurn(book, TurnDirection::Forward), TurnRequest::Started);
-    EXPECT_EQ(clock.requestTurn(book, TurnDirection::Forward), TurnRequest::Queued);  // may never start
+    EXPECT_EQ(clock.requestTurn(book, TurnDirection::Backward, 0.0), TurnRequest::Refused);
+    ASSERT_EQ(clock.requestTurn(book, TurnDirection::Forward, 0.0), TurnRequest::Started);
+    EXPECT_EQ(clock.requestTurn(book, TurnDirection::Forward, 0.0), TurnRequest::Queued);  // may never start
     for (double t = 0.0; t <= 1.01; t += 0.25) clock.tick(book, t);
     EXPECT_FALSE(book.animating());
     EXPECT_EQ(clock.queuedTurns(), 0);
@@ -86,11 +86,30 @@ TEST(BookClock, AtTheEndOfTheBookATurnIsRefusedAndLeftoverQueueIsDroppedWhenItSe
 TEST(BookClock, TheQueueIsBounded) {
     Book book = bookOf(400);
     BookClock clock;
-    clock.requestTurn(book, TurnDirection::Forward);
+    clock.requestTurn(book, TurnDirection::Forward, 0.0);
     for (int i = 0; i < BookClock::kMaxQueuedTurns; ++i) {
-        EXPECT_EQ(clock.requestTurn(book, TurnDirection::Backward), TurnRequest::Queued);
+        EXPECT_EQ(clock.requestTurn(book, TurnDirection::Backward, 0.0), TurnRequest::Queued);
     }
-    EXPECT_EQ(clock.requestTurn(book, TurnDirection::Backward), TurnRequest::Refused);
+    EXPECT_EQ(clock.requestTurn(book, TurnDirection::Backward, 0.0), TurnRequest::Refused);
+}
+
+TEST(BookClock, RunningAlreadyKeepsItsLastTickAndANonFiniteTimeAdvancesNothing) {
+    Book book = bookOf(8);
+    BookClock clock;
+    clock.requestTurn(book, TurnDirection::Forward, 0.0);
+    clock.tick(book, 0.25);
+    clock.run(0.4);  // asked to run mid-turn: the clock keeps counting from its last tick (0.25), not 0.4
+    clock.tick(book, 0.5);
+    clock.tick(book, 0.75);
+    EXPECT_TRUE(book.animating());
+    clock.tick(book, 1.0);
+    EXPECT_FALSE(book.animating());
+    BookClock other;
+    Book second = bookOf(8);
+    other.requestTurn(second, TurnDirection::Forward, std::nan(""));
+    other.tick(second, 5.0);
+    other.tick(second, 5.25);
+    EXPECT_TRUE(second.animating());  // 0.25 s of a 1 s turn
 }
 
 TEST(BookClock, AStoppedClockShowsAnExactPoseAndReportsSettledWithoutAdvancing) {
@@ -122,7 +141,7 @@ TEST(BookClock, PagesChangedIsReportedOnTheFirstTickAndWhenTheDrawnPagesChangeOn
     book.jumpTo(1);
     EXPECT_TRUE(clock.tick(book, 0.0) & kTickPagesChanged);
     EXPECT_FALSE(clock.tick(book, 0.1) & kTickPagesChanged);
-    clock.requestTurn(book, TurnDirection::Forward);
+    clock.requestTurn(book, TurnDirection::Forward, 0.15);
     EXPECT_TRUE(clock.tick(book, 0.2) & kTickPagesChanged);  // the turning leaf's back and the page under it
     EXPECT_FALSE(clock.tick(book, 0.3) & kTickPagesChanged);
 }

@@ -330,7 +330,8 @@ export class BookView {
 
   _turn(direction) {
     this._poseFrom = null;
-    if (this._loop.requestTurn(direction) === TURN_REFUSED) return Promise.resolve(false);
+    // performance.now() and animation frames share a clock: the turn runs from now, not from its first frame.
+    if (this._loop.requestTurn(direction, performance.now()) === TURN_REFUSED) return Promise.resolve(false);
     this.requestRender();
     return new Promise((resolve) => this._settled.push(() => resolve(true)));
   }
@@ -353,7 +354,7 @@ export class BookView {
   /** After the held leaf's pose changed (dragged, hinted, released): draw and run the clock until it rests. */
   heldChanged() {
     this._poseFrom = null;
-    this._loop.run();
+    this._loop.run(performance.now());
     this.requestRender();
   }
 

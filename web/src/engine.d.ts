@@ -94,12 +94,15 @@ export interface Book {
 export interface FrameLoop {
   /** `nowMs`: the animation frame's timestamp; `draw` false advances without drawing. Returns TICK_* bits. */
   tick(nowMs: number, draw: boolean): number;
-  /** 0: started; 1: waits behind a leaf in flight; 2: refused (end of the book, or 16 already waiting). */
-  requestTurn(direction: 'forward' | 'backward'): 0 | 1 | 2;
+  /**
+   * 0: started; 1: waits behind a leaf in flight; 2: refused (end of the book, or 16 already waiting).
+   * `nowMs`: performance.now() when asked; the first frame after it advances by the time since then.
+   */
+  requestTurn(direction: 'forward' | 'backward', nowMs: number): 0 | 1 | 2;
   queuedTurns(): number;
   clearQueue(): void;
-  /** The clock runs from the next tick (a held pose changed). */
-  run(): void;
+  /** The clock runs (a held pose changed), from `nowMs` unless it was running already. */
+  run(nowMs: number): void;
   /** An exact pose is shown: time stops changing the frame until run(). */
   stop(): void;
   running(): boolean;
