@@ -155,18 +155,25 @@ test('browser: pages that arrive together mid-turn are uploaded one a frame, nev
     await nextFrame();
     open();
     const perFrame = [];
+    const drawsPerFrame = [];
     let last = window.__counts.texImageFromImage;
+    let lastDraws = window.__counts.glByName.drawElements;
     for (let i = 0; i < 20; i++) {
       await nextFrame();
       perFrame.push(window.__counts.texImageFromImage - last);
+      drawsPerFrame.push(window.__counts.glByName.drawElements - lastDraws);
       last = window.__counts.texImageFromImage;
+      lastDraws = window.__counts.glByName.drawElements;
     }
     await turning;
     await window.settle();
-    return { perFrame, resident: [3, 4].map((p) => book.pageState(p).state) };
+    return { perFrame, drawsPerFrame, resident: [3, 4].map((p) => book.pageState(p).state) };
   });
-  console.log(`uploads per turning frame after the gate opened: ${result.perFrame.join(' ')}`);
+  console.log(`uploads per turning frame after the gate opened: ${result.perFrame.join(' ')}; draw calls per frame ${result.drawsPerFrame.join(' ')}`);
   expect(Math.max(...result.perFrame)).toBe(1);
+  // One frame drawn per animation frame (a shadow pass and three leaves at most): an upload must not
+  // start a second chain of frames.
+  expect(Math.max(...result.drawsPerFrame)).toBeLessThanOrEqual(4);
   expect(result.perFrame.reduce((a, b) => a + b, 0)).toBeGreaterThanOrEqual(2);
   expect(result.resident).toEqual(['loaded', 'loaded']);
 });

@@ -346,7 +346,8 @@ export class BookView {
     // Pages that arrived while leaves move: one a frame (shown from the next); all at once at rest.
     if (this._uploads.length > 0) this._uploadNext();
     while (!this._moving && this._uploads.length > 0) this._uploadNext();
-    if (this._moving) this._frame = requestAnimationFrame((t) => this._tick(t));
+    // One frame chain only: an upload or a resize above may have asked for the next frame already.
+    if (this._moving && !this._frame) this._frame = requestAnimationFrame((t) => this._tick(t));
     if (flags & this._ticks.pagesChanged) this.onPagesChanged?.();
     if (flags & this._ticks.settled) for (const resolve of this._settled.splice(0)) resolve();
   }
