@@ -9,7 +9,8 @@
 
 namespace conecurl {
 
-// Guards from the math doc's pitfalls, shared with the shader (see shaders/cone_curl.glsl).
+// Parameter guards (docs/cone-curl-math.md at the repository root, "Parameter guards"); the shader
+// (shaders/cone_curl.glsl) receives parameters already passed through them.
 inline constexpr double kThetaFloor = 0.001;       // radians; sin(theta) divides beta
 inline constexpr double kApexCeiling = -1.0e-4;    // apex stays strictly below the page (y >= 0)
 inline constexpr double kApexFloor = -1.0e6;       // farther is flat anyway; keeps R - Ay finite

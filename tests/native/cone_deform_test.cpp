@@ -1,4 +1,4 @@
-// Native (GoogleTest via CTest) tests of the cone deformation: the eight invariants and the pitfall
+// Native (GoogleTest via CTest) tests of the cone deformation: the eight invariants and the parameter
 // guards of docs/cone-curl-math.md, held over the whole schedule and a dense page grid.
 #include "test_support.hpp"
 #include "cone_deform.hpp"
@@ -189,7 +189,7 @@ TEST(ConeDeform, PositionsAreFiniteAndKeepTheirFlatDistanceFromTheApex) {
     acc.after.report("| |curlPoint - A| - R |");
     EXPECT_EQ(acc.bad.count, 0) << "first: " << acc.bad.first;
     // R <= hypot(0.8, 16) ~ 16, whose ulp is 3.6e-15; the map and the norm take a dozen roundings.
-    // 1e-13 is ~30 ulp of R and four orders below the doc's 1e-9.
+    // 1e-13 is ~30 ulp of R and four orders below 1e-9.
     EXPECT_LE(acc.before.value, 1e-13) << acc.before.where();
     EXPECT_LE(acc.after.value, 1e-13) << acc.after.where();
 }
@@ -354,7 +354,7 @@ TEST(ConeDeform, FlatConeIsTheIdentityBeforeRotation) {
 
     // With the apex at the guard ceiling (1e-4 below the bottom edge), x / R comes within ~1e-8 of 1
     // at the bottom corners, where asin has slope 1 / sqrt(1 - (x/R)^2) ~ 1e4: the rounding of x / R
-    // (1.1e-16) becomes ~1e-12 in beta and in the position. That is the conditioning of the doc's
+    // (1.1e-16) becomes ~1e-12 in beta and in the position. That is the conditioning of the paper's
     // asin(x / R) itself, not a defect of the code; 1e-11 bounds it with margin.
     Worst ceiling;
     const CurlParams p{kPi / 2.0, kApexCeiling, 0.0};
@@ -445,7 +445,7 @@ TEST(ConeDeform, ConeBetaStaysBelowPiAndPeaksAtPhase1EndAtBottomCorner) {
         for (dvec2 q : pagePoints()) {
             const double b = coneBeta(q, s.p);
             a.maxBeta.take(std::abs(b), s.t, q);
-            // beta as the doc writes it: no clamp may be active anywhere on the schedule.
+            // beta as the paper writes it, asin(x / R) / sin(theta): no clamp may be active anywhere on the schedule.
             a.formula.take(std::abs(b - std::asin(q.x / apexRadius(q, s.p.apexY)) / sinTheta), s.t, q);
         }
     });
@@ -487,7 +487,7 @@ TEST(ConeDeform, FrontNormalFacesViewerWhenFlatAndAwayAfterTheTurn) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Guards against the doc's pitfalls.
+// The parameter guards of the doc (sanitize) and the points where naive formulas fail.
 
 TEST(ConeDeformGuards, SanitizeMapsNaNParametersToFiniteValuesInDomain) {
     for (int mask = 1; mask < 8; ++mask) {
@@ -636,7 +636,7 @@ TEST(ConeDeformGuards, PointsAtTheApexRegionGiveFiniteOutput) {
 // A far apex (Ay = -1e6, R ~ 1e6): R + Ay computed naively loses ~1e-10 (ulp of 1e6); the
 // (R^2 - Ay^2) / (R - Ay) form must keep the page accurate far below that.
 long double referenceY(long double x, long double y, long double theta, long double apexY) {
-    // The doc's formula for v.y, literally, in extended precision (64-bit mantissa on x86-64:
+    // The paper's formula for v.y, literally, in extended precision (64-bit mantissa on x86-64:
     // rounding R + Ay costs ulp(1e6) / 2 = 3e-14; with 1 - cos(beta) scaled by R the reference is good
     // to ~1e-13, so 1e-12 is asserted, a hundred times below the naive form's 1e-10).
     const long double R = std::sqrt(x * x + (y - apexY) * (y - apexY));
