@@ -2,6 +2,8 @@
 // cache of page textures around the open spread (placeholder and `pageerror` for failures), turns
 // pages on clicks, taps, swipes and keys, speaks to screen readers, follows the container's size,
 // and turns the engine's state into events. Drawing and animation stay in BookView over the wasm.
+// Over 450 lines because it still holds input, loading, links and zoom as well: issue 13 splits it into
+// a book controller over surfaces, with input modules and overlay layers in files of their own.
 import { loadEngine } from './engine.js';
 import { BookView, uploadSizeFor } from './book-view.js';
 import { actionForKey, createShell } from './book-shell.js';
