@@ -55,7 +55,7 @@ test('browser: demo book turns when its corner is dragged across the spine', asy
   await openReady(page, '/web/demo/?page=9');
   await page.selectOption('#speed', '0.5');
   const box = await page.locator('#book canvas').boundingBox();
-  const rect = await page.evaluate(() => window.conecurlDemo.view.restingRect());
+  const rect = await page.evaluate(() => window.conecurlDemo.book.restingRect());
   const from = { x: box.x + rect.x + rect.width - 3, y: box.y + rect.y + rect.height - 3 };
   await page.mouse.move(from.x, from.y);
   await page.mouse.down();

@@ -108,3 +108,28 @@ test.describe('without WebGL2', () => {
     expect(result).toEqual({ heard: [[2, 'http']], state: ['failed', 'http'] });
   });
 });
+
+test('browser: the public read-only state (animating, residentPages, restingRect) says what the book is doing, with no private field read', async ({ page }) => {
+  await openReady(page, FLIPBOOK_FIXTURE);
+  const result = await page.evaluate(async () => {
+    const book = await window.Flipbook.create(document.getElementById('container'), {
+      pages: Array.from({ length: 30 }, (_, i) => window.makeNumberedPage(i)), display: 'double', duration: 300, loadWindow: 2, startPage: 9,
+    });
+    const atRest = book.animating;
+    const turning = book.next();
+    const during = book.animating;
+    await turning;
+    const resident = book.residentPages;
+    const loaded = resident.every((i) => book.pageState(i).state === 'loaded');
+    const rect = book.restingRect();
+    const canvasWidth = book.element.querySelector('canvas').clientWidth;
+    book.destroy();
+    return { atRest, during, after: book.animating, resident, loaded, rect, canvasWidth };
+  });
+  expect(result).toMatchObject({ atRest: false, during: true, after: false, loaded: true });
+  expect(result.resident).toEqual(expect.arrayContaining([11, 12]));
+  expect(result.resident.length).toBeLessThanOrEqual(14);
+  expect(result.resident).toEqual([...result.resident].sort((a, b) => a - b));
+  expect(result.rect.width).toBeGreaterThan(0);
+  expect(result.rect.x + result.rect.width).toBeLessThanOrEqual(result.canvasWidth + 0.5);
+});

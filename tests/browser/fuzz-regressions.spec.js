@@ -80,3 +80,30 @@ test('browser: a jump by flip() while a page is dragged ends the drag; the point
   expect(await page.evaluate(() => ({ page: window.book.page, holding: window.book._view.book.holding() })))
     .toEqual({ page: 0, holding: false });
 });
+
+test('browser: a page that loads while a hover hint lifts a corner does not leave the live region announcing the spread under the hint once it falls back (seed 99440867)', async ({ page }) => {
+  const problems = await openReady(page, FIXTURE);
+  await page.evaluate(async () => {
+    let open;
+    window.openGate = () => open();
+    const gate = new Promise((resolve) => { open = resolve; });
+    const pages = Array.from({ length: 12 }, (_, i) => async () => {
+      if (i <= 3) await gate;  // the pages under the left page arrive only when the test says
+      return window.makeNumberedPage(i);
+    });
+    await window.openBook({ pages, display: 'double', startPage: 5, loadWindow: 1, duration: 200 });
+  });
+  const said = () => page.evaluate(() => window.book.element.querySelector('[aria-live]').textContent);
+  const before = await said();
+  // The mouse hovers the left page's top outer corner: the hint lifts that leaf (a held backward turn).
+  const corner = await page.evaluate(() => window.halfPoint(0.003, 0.005));
+  await page.mouse.move(corner.x, corner.y);
+  await page.waitForFunction(() => window.book._view.book.holding());
+  await page.evaluate(() => window.openGate());
+  await page.waitForTimeout(400);  // the page under the lifted corner loads and uploads meanwhile
+  await page.mouse.move(corner.x + 300, corner.y + 300);  // off the corner: the hint falls back
+  await page.evaluate(() => window.settle());
+  expect(await page.evaluate(() => window.book.page)).toBe(5);
+  expect(await said()).toBe(before);
+  expect(problems).toEqual([]);
+});

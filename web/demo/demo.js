@@ -86,7 +86,7 @@ function buildBook(startPage) {
     for (const type of ['turned', 'turncancel']) {
       book.addEventListener(type, () => {
         showWhere();
-        if (!book._view.animating) document.body.dataset.state = 'open';
+        if (!book.animating) document.body.dataset.state = 'open';
       });
     }
     book.addEventListener('resize', showWhere);
@@ -119,7 +119,7 @@ async function main() {
     $(id).addEventListener('change', () => book.setOptions({ [id]: $(id).checked }));
   }
   // For the console and scripts/measure-turn.mjs (which times the engine's own BookView).
-  window.conecurlDemo = { engine, get book() { return book; }, get view() { return book._view; } };
+  window.conecurlDemo = { engine, get book() { return book; } };
   document.body.dataset.ready = 'true';
 }
 

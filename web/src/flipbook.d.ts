@@ -144,6 +144,12 @@ export class Flipbook extends EventTarget {
   readonly pageCount: number;
   /** Where page `index` stands now (RangeError for an index outside the book). */
   pageState(index: number): PageState;
+  /** A leaf is moving or waiting to (turns in flight, a held page); false after destroy(). */
+  readonly animating: boolean;
+  /** Pages whose images are loaded and kept (page textures), in page order; never more than the cache's capacity. */
+  readonly residentPages: number[];
+  /** Where the open pages lie on the canvas, in CSS pixels from its top-left (both places of a spread in double). */
+  restingRect(): { x: number; y: number; width: number; height: number };
   /** First visible page at the settled position; after destroy(), the page the book was left at. */
   readonly page: number;
   /** Follows the container's aspect when the option is 'auto'; after destroy(), as it was last. */

@@ -131,6 +131,12 @@ export class Flipbook extends EventTarget {
   }
   /** The focusable element the book made in its container (holds the canvas). */
   get element() { return this._shell.root; }
+  /** A leaf is moving or waiting to (turns in flight, a held page); false after destroy(). */
+  get animating() { return Boolean(this._view?.animating); }
+  /** Pages whose images are loaded and kept (textures on the GPU), in page order. */
+  get residentPages() { return [...this._images.keys()].sort((a, b) => a - b); }
+  /** Where the open pages lie on the canvas, in CSS pixels (both places of a spread in double). */
+  restingRect() { return this._view.restingRect(); }
 
   next() { return this._turn('forward'); }
   prev() { return this._turn('backward'); }
@@ -281,6 +287,8 @@ export class Flipbook extends EventTarget {
           this._emit('turncancel', { page: this.page });
         }
       },
+      // A corner lifted by hovering fell back: the open pages are those from before it again.
+      onHintEnd: () => { if (!this._destroyed) this._showOpenPages(); },
     });
   }
 
@@ -511,7 +519,9 @@ export class Flipbook extends EventTarget {
       this._cache.setState(index, 'loaded');
       this._releaseExcess();
       // A source may have learned its page's text and links while making it (a PDF page).
-      if (this._openPages().includes(index)) this._showOpenPages();
+      // (Not while a leaf moves or is lifted by a hover hint: the open pages are in flux, and the
+      // landing, or the hint's end, shows them again.)
+      if (!this._view.animating && this._openPages().includes(index)) this._showOpenPages();
     } catch (error) {
       if (this._destroyed) return;
       // The page keeps the plain paper placeholder; the book keeps working. `reason` says why:

@@ -11,6 +11,7 @@ export class PointerDrag {
    * @param {import('./book-view.js').BookView} view
    * @param {{ onTurnStart?: (direction: 'forward'|'backward') => void,
    *           onTurnEnd?: (completed: boolean) => Promise<void>|void,
+   *           onHintEnd?: () => void,   (a corner lifted by hovering fell back)
    *           enabled?: () => boolean }} [hooks]
    */
   constructor(view, hooks = {}) {
@@ -189,5 +190,6 @@ export class PointerDrag {
     this._hint = null;
     if (this.view.book.holding()) this.view.book.cancelHeldTurn();  // it falls back flat
     this.view.heldChanged();
+    this._hooks.onHintEnd?.();
   }
 }

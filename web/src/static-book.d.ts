@@ -14,6 +14,10 @@ export class StaticBook extends EventTarget {
   readonly pageCount: number;
   /** Where page `index` stands now (RangeError for an index outside the book). */
   pageState(index: number): PageState;
+  /** Always false: still pages never move. */
+  readonly animating: boolean;
+  /** Pages whose images are loaded and kept, in page order. */
+  readonly residentPages: number[];
   readonly page: number;
   readonly display: 'single' | 'double';
   readonly element: HTMLElement;

@@ -105,6 +105,10 @@ export class StaticBook extends EventTarget {
    * Setting it checks the value like Flipbook (RangeError outside 1..4) and changes nothing.
    */
   get zoom() { return 1; }
+  /** Still pages never move: always false (the same member as Flipbook's). */
+  get animating() { return false; }
+  /** Pages whose images are loaded and kept, in page order. */
+  get residentPages() { return [...this._images.keys()].sort((a, b) => a - b); }
   set zoom(scale) {
     this._alive();
     if (!(Number.isFinite(scale) && scale >= 1 && scale <= MAX_ZOOM)) {

@@ -1,9 +1,12 @@
 // Benchmark adapter for conecurl: mounts a Flipbook through its public API and turns with next().
 // Bundled (minified) by scripts/bench/bundle.mjs; the wasm is served next to the bundle.
 import { Flipbook } from '../../../web/src/flipbook.js';
+import { loadEngine } from '../../../web/src/engine.js';
 
 export async function mount(container, { urls, display, duration, extra = {} }) {
   const book = await Flipbook.create(container, { pages: urls, display, duration, ...extra });
+  const engine = await loadEngine();  // the module every book on the page shares: its memory
+  const memory = Object.values(engine.asm).find((value) => value instanceof WebAssembly.Memory);
   return {
     /** The BookView underneath (internal), for scripts/bench/profile-gpu.mjs. */
     view: () => book._view,
@@ -11,14 +14,7 @@ export async function mount(container, { urls, display, duration, extra = {} }) 
       if (!(await book.next())) throw new Error(`conecurl: could not turn forward from page ${book.page}`);
     },
     stats() {
-      // Internals read for the benchmark only (no public accessor yet): BookView's renderer and the
-      // Emscripten module's memory.
-      const view = book._view;
-      return {
-        wasmHeapBytes: view.engine.HEAP8.length,
-        pageTextures: view.renderer.residentPageImages(),
-        page: book.page,
-      };
+      return { wasmHeapBytes: memory.buffer.byteLength, pageTextures: book.residentPages.length, page: book.page };
     },
   };
 }
