@@ -60,14 +60,3 @@ vec3 curlPoint(vec2 q, float apexY, vec4 trig) {
     float beta;
     return rotateAboutSpine(deformOntoCone(q, apexY, trig.xy, beta), trig.zw);
 }
-
-// Closed-form front normal (docs/cone-curl-math.md, "Normals").
-vec3 curlNormalAnalytic(vec2 q, float apexY, vec4 trig) {
-    float beta;
-    deformOntoCone(q, apexY, trig.xy, beta);
-    float sinT = trig.x;
-    float cosT = trig.y;
-    float omc = oneMinusCos(beta);
-    vec3 n = vec3(-cosT * preciseSin(beta), sinT * cosT * omc, 1.0 - cosT * cosT * omc);
-    return rotateAboutSpine(n, trig.zw);
-}

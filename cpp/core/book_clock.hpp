@@ -41,9 +41,8 @@ public:
     int queuedTurns() const { return queued_; }
     void clearQueue() { queued_ = 0; }
 
-    // The clock runs from the next tick on (a turn started, a held pose changed); with `nowSeconds`
-    // that tick advances by the time since then.
-    void run() { running_ = true; }
+    // The clock runs from the next tick on (a turn started, a held pose changed), advancing by the
+    // time since `nowSeconds` unless it was running already.
     void run(double nowSeconds) {
         if (!running_ || lastSeconds_ < 0.0) lastSeconds_ = nowSeconds;
         running_ = true;

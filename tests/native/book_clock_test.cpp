@@ -129,7 +129,7 @@ TEST(BookClock, AHeldLeafLyingStillNeitherMovesNorSettles) {
     Book book = bookOf(8);
     BookClock clock;
     ASSERT_TRUE(book.startHeldTurn(TurnDirection::Forward, false));
-    clock.run();
+    clock.run(1.0);
     const int flags = clock.tick(book, 1.0);
     EXPECT_FALSE(flags & kTickMoving);
     EXPECT_FALSE(flags & kTickSettled);
