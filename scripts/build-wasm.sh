@@ -7,4 +7,4 @@ if [ ! -f build/wasm/CMakeCache.txt ]; then
   emcmake cmake -S . -B build/wasm -DCMAKE_BUILD_TYPE=MinSizeRel >/dev/null
 fi
 cmake --build build/wasm -j2
-test -f dist/conecurl-engine.wasm && test -f dist/conecurl-engine.mjs
+test -f dist/conecurl-engine.wasm && test -f dist/conecurl-engine.mjs && test -f dist/engine-constants.js

@@ -163,10 +163,8 @@ val gripPixelNow(const Book& book, val grip, double width, double height) {
     return out;
 }
 
-// Where the resting pages lie on the canvas, in drawing-buffer pixels (book_camera.hpp).
-val restingRectOf(const Book& book, double width, double height) {
-    const PixelRect r = restingRect(cameraOf(book, width, height), book.config());
-    val out = val::object();
+// Sets x, y, width and height of a canvas rectangle on `out` (a val is a handle: the caller's object).
+val withRect(val out, const PixelRect& r) {
     out.set("x", r.x);
     out.set("y", r.y);
     out.set("width", r.width);
@@ -174,8 +172,27 @@ val restingRectOf(const Book& book, double width, double height) {
     return out;
 }
 
+// Where the resting pages lie on the canvas, in drawing-buffer pixels (book_camera.hpp).
+val restingRectOf(const Book& book, double width, double height) {
+    return withRect(val::object(), restingRect(cameraOf(book, width, height), book.config()));
+}
+
+// The pages lying open and where, in drawing-buffer pixels under the zoom: [{ page, x, y, width, height }],
+// the turned side first, page -1 for a blank back (book_camera.hpp).
+val openPagePlacesOf(const Book& book, double width, double height) {
+    const OpenPages open = openPagePlaces(book, cameraOf(book, width, height));
+    val out = val::array();
+    for (int i = 0; i < open.count; ++i) {
+        val item = val::object();
+        item.set("page", open.places[i].page);
+        out.call<void>("push", withRect(item, open.places[i].rect));
+    }
+    return out;
+}
+
 // Zooms to `scale` keeping the table point under the pixel where it is; returns the scale kept.
 double zoomAboutPixel(Book& book, val scale, double x, double y, double width, double height) {
+    static_assert(kMaxZoom == 4.0, "the range in the message below");
     const double s = js::finiteNumber(scale, "zoom", 1.0, kMaxZoom, "1 to 4");
     cameraOf(book, width, height);  // checks the size
     book.setZoom(zoomAbout(book.zoom(), s, pixelOf(x, y), static_cast<int>(width), static_cast<int>(height)));
@@ -245,6 +262,7 @@ EMSCRIPTEN_BINDINGS(conecurl_book) {
         .function("gripPixel", &gripPixelNow)
         .function("viewProjection", &viewProjection)
         .function("restingRect", &restingRectOf)
+        .function("openPagePlaces", &openPagePlacesOf)
         .function("zoomAbout", &zoomAboutPixel)
         .function("panBy", &panByPixels)
         .function("zoom", optional_override([](const Book& b) {

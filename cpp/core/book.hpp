@@ -5,6 +5,7 @@
 #include <array>
 #include <vector>
 
+#include "book_constants.hpp"
 #include "curl_schedule.hpp"
 
 namespace conecurl {
@@ -14,10 +15,7 @@ enum class Binding { Left = 0, Right = 1, Top = 2 };  // where the spine is: LTR
 enum class TurnDirection { Forward = 0, Backward = 1 };
 
 inline constexpr int kNoPage = -1;            // blank paper: an empty back, or no page at all
-inline constexpr int kMaxTurnsInFlight = 6;
 inline constexpr int kMaxLeafDraws = kMaxTurnsInFlight + 2;  // + the two resting pages
-
-inline constexpr double kMaxZoom = 4.0;
 
 // Magnification of the view: the camera's picture scaled by `scale` about the canvas centre, then
 // moved by `offset` (normalised device coordinates, -1..1 across the canvas). 1 and (0, 0): all of it.
@@ -35,8 +33,8 @@ struct BookConfig {
     int pageCount = 0;
     Display display = Display::Double;
     Binding binding = Binding::Left;
-    double pageWidth = 0.8;   // world units from the spine to the free edge
-    double pageHeight = 1.0;  // world units along the spine
+    double pageWidth = kDefaultPageWidth;    // world units from the spine to the free edge
+    double pageHeight = kDefaultPageHeight;  // world units along the spine
     double turnSeconds = 1.0;
     CurlSchedule schedule;
     std::vector<bool> hardPages;  // by page index; pages past its end are soft
@@ -119,6 +117,8 @@ public:
     // The pose of a leaf turning at progress p (soft: the schedule; hard: rigid).
     CurlParams scheduledPose(int leaf, double progress) const;
     BookFrame frame() const;
+    // `leaf` lying flat in its stack, turned (rho pi, its back page up) or not (rho 0): as frame() draws it.
+    LeafDraw restingLeaf(int leaf, bool turned) const;
 
 private:
     struct Turn {
@@ -139,7 +139,6 @@ private:
     int frontPageOf(int leaf) const;
     int backPageOf(int leaf) const;
     bool inFlight(int leaf) const;
-    LeafDraw restingLeaf(int leaf, bool turned) const;
 
     BookConfig config_;
     int position_ = 0;

@@ -13,7 +13,6 @@
 namespace conecurl {
 namespace {
 constexpr double kFieldOfViewY = 24.0 * 3.14159265358979323846 / 180.0;  // mild: a lift reads as one
-constexpr double kFrameMargin = 1.3;  // room around the pages for leaves lifting up
 }  // namespace
 
 BookCamera bookCamera(const BookConfig& c, int width, int height, const ViewZoom& zoom) {
@@ -63,6 +62,24 @@ PixelRect restingRect(const BookCamera& camera, const BookConfig& config) {
     const glm::dvec2 low = worldToPixel(camera, {frame.center - frame.halfExtent, 0.0});
     const glm::dvec2 high = worldToPixel(camera, {frame.center + frame.halfExtent, 0.0});
     return PixelRect{std::min(low.x, high.x), std::min(low.y, high.y), std::abs(high.x - low.x), std::abs(high.y - low.y)};
+}
+
+OpenPages openPagePlaces(const Book& book, const BookCamera& camera) {
+    const BookConfig& c = book.config();
+    OpenPages open;
+    // The flat leaf's page corners, where the renderer puts them: no assumption about which side is which.
+    auto place = [&](int leaf, bool turned) {
+        const LeafDraw draw = book.restingLeaf(leaf, turned);
+        const glm::dvec2 a = worldToPixel(camera, leafPointToWorld(draw, c.binding, c.pageHeight, {0.0, 0.0}));
+        const glm::dvec2 b = worldToPixel(camera, leafPointToWorld(draw, c.binding, c.pageHeight, {c.pageWidth, c.pageHeight}));
+        const PixelRect rect{std::min(a.x, b.x), std::min(a.y, b.y), std::abs(b.x - a.x), std::abs(b.y - a.y)};
+        open.places[open.count++] = PagePlace{turned ? draw.backPage : draw.frontPage, rect};
+    };
+    const int position = book.position();
+    // In single display the turned side lies outside the view, as in Book::frame().
+    if (c.display == Display::Double && position > 0) place(position - 1, true);
+    if (position < book.leafCount()) place(position, false);
+    return open;
 }
 
 glm::dvec2 worldToPixel(const BookCamera& camera, glm::dvec3 world) {

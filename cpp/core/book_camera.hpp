@@ -2,6 +2,8 @@
 // pixels. Pure math: the renderer draws with it, and pointer input is solved against the same one.
 #pragma once
 
+#include <array>
+
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -37,6 +39,13 @@ struct PixelRect {
     double x = 0.0, y = 0.0, width = 0.0, height = 0.0;
 };
 PixelRect restingRect(const BookCamera& camera, const BookConfig& config);
+
+struct PagePlace { int page = kNoPage; PixelRect rect; };  // a page lying open, and where on the canvas
+struct OpenPages { std::array<PagePlace, 2> places{}; int count = 0; };
+// The leaves lying open at the settled position (turns in flight ignored: where they will land), each
+// with its visible page (kNoPage for a blank back) and its rectangle in canvas pixels under `camera`:
+// the turned side first.
+OpenPages openPagePlaces(const Book& book, const BookCamera& camera);
 
 // Canvas pixel (x right, y down, origin at the top-left corner) of a world point.
 glm::dvec2 worldToPixel(const BookCamera& camera, glm::dvec3 world);

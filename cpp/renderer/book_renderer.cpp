@@ -12,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "book_constants.hpp"
 #include "cone_deform.hpp"
 #include "embedded_shaders.hpp"
 #include "gl_program.hpp"
@@ -45,7 +46,7 @@ constexpr float kShadowStrength = 0.45f;
 constexpr int kShadowDownscale = 2;                  // the mask is blurred anyway
 constexpr int kDefaultRows = 48;                     // before the first canvas size is known
 const glm::vec3 kLightDirection = glm::normalize(glm::vec3(-0.35f, 0.45f, 1.0f));  // upper left, in front
-constexpr std::uint8_t kPaper[4] = {250, 247, 240, 255};
+constexpr std::uint8_t kPaper[4] = {kPaperRed, kPaperGreen, kPaperBlue, 255};
 
 // Digits of a whole number; std::to_string's snprintf would bring printf's float formatting into the wasm.
 std::string decimal(int n) {
@@ -71,7 +72,7 @@ BookRenderer::BookRenderer(const std::string& canvasTarget, bool antialias) {
         context_ = 0;
         return;
     }
-    grid_ = makePageGrid(0.8, 1.0, 38, kDefaultRows);
+    grid_ = makePageGrid(kDefaultPageWidth, kDefaultPageHeight, 38, kDefaultRows);
     createGpuObjects();
 }
 

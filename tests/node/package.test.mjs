@@ -12,12 +12,13 @@ const manifest = JSON.parse(fs.readFileSync(path.join(repositoryRoot, 'package.j
 let dryRun = null;
 const packed = () => (dryRun ??= packDryRun());  // one `npm pack --dry-run` for the tests that read it
 
-/** Every file a user needs, and nothing else: the engine, the web/src modules and typings, docs. */
+/** Every file a user needs, and nothing else: the engine and its constants, the web/src modules and typings, docs. */
 function allowedFiles() {
   const sources = fs.readdirSync(path.join(repositoryRoot, 'web/src'))
     .filter((name) => name.endsWith('.js') || name.endsWith('.d.ts'))
     .map((name) => `web/src/${name}`);
-  return ['package.json', 'README.md', 'LICENSE', 'dist/conecurl-engine.mjs', 'dist/conecurl-engine.wasm', ...sources].sort();
+  return ['package.json', 'README.md', 'LICENSE', 'dist/conecurl-engine.mjs', 'dist/conecurl-engine.wasm',
+    'dist/engine-constants.js', ...sources].sort();
 }
 
 /** Every string an exports entry points at, with the condition path that leads to it. */

@@ -83,6 +83,13 @@ export interface Book {
   /** One page or two from now on, keeping the first visible page; turns in flight land. TypeError for other values. */
   setDisplay(display: 'single' | 'double'): void;
   frame(): LeafDraw[];
+  /** Where the resting pages lie on a width x height drawing buffer (pixels), zoom included. */
+  restingRect(width: number, height: number): { x: number; y: number; width: number; height: number };
+  /**
+   * The leaves lying open at the settled position, turned side first: the page each shows (-1 for a
+   * blank back) and its rectangle in drawing-buffer pixels, zoom included.
+   */
+  openPagePlaces(width: number, height: number): Array<{ page: number; x: number; y: number; width: number; height: number }>;
   delete(): void;
 }
 

@@ -1,0 +1,16 @@
+// The numbers the JS layer shares with the engine, in one place: CMakeLists.txt turns each line
+// below into dist/engine-constants.js, so keep them one `inline constexpr <type> kName = value;` a line.
+#pragma once
+
+namespace conecurl {
+
+inline constexpr int kMaxTurnsInFlight = 6;
+inline constexpr double kMaxZoom = 4.0;
+inline constexpr double kFrameMargin = 1.3;  // room around the pages for leaves lifting up
+inline constexpr double kDefaultPageWidth = 0.8;  // world units from the spine to the free edge
+inline constexpr double kDefaultPageHeight = 1.0;  // world units along the spine
+inline constexpr int kPaperRed = 250;  // placeholder paper, shown before a page's image arrives
+inline constexpr int kPaperGreen = 247;
+inline constexpr int kPaperBlue = 240;
+
+}  // namespace conecurl

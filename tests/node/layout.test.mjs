@@ -1,0 +1,191 @@
+// Node tests of web/src/layout.js, the engine's layout in plain JS for the 2D fallback: its positions,
+// page places and zoom equal the wasm engine's, and the generated constants equal the C++ header's.
+import { test, before } from 'node:test';
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import * as layout from '../../web/src/layout.js';
+import * as generated from '../../dist/engine-constants.js';
+import { loadEngineForNode } from './load-engine.mjs';
+
+const BINDING = { ltr: 'left', rtl: 'right', vertical: 'top' };
+const SIZES = [{ width: 800, height: 600 }, { width: 300, height: 700 }];
+// The default page, and one whose width and height differ from it and from each other.
+const PAGES = [{}, { pageWidth: 1.4, pageHeight: 1.1 }];
+const MAX_PAGES = 9;
+
+let engine;
+before(async () => { engine = await loadEngineForNode(); });
+
+function withBook(options, use) {
+  const book = engine.Book.create(options);
+  try {
+    return use(book);
+  } finally {
+    book.delete();
+  }
+}
+
+// Pixel coordinates agree to 1e-6 of the canvas.
+function assertRectClose(actual, expected, size, where) {
+  const tolerance = 1e-6 * Math.max(size.width, size.height);
+  for (const key of ['x', 'y', 'width', 'height']) {
+    assert.ok(Math.abs(actual[key] - expected[key]) <= tolerance,
+      `${where}: ${key} ${actual[key]}, the engine's ${expected[key]}`);
+  }
+}
+
+function assertPlacesClose(actual, expected, size, where) {
+  assert.deepEqual(actual.map((place) => place.page), expected.map((place) => place.page), `${where}: pages`);
+  actual.forEach((place, i) => assertRectClose(place, expected[i], size, `${where}, place ${i}`));
+}
+
+function assertZoomClose(actual, expected, where) {
+  for (const key of ['scale', 'offsetX', 'offsetY']) {
+    assert.ok(Math.abs(actual[key] - expected[key]) <= 1e-9, `${where}: ${key} ${actual[key]}, the engine's ${expected[key]}`);
+  }
+}
+
+/** Calls `check(book, shape, where)` for every display, direction, page shape and page count 0..9. */
+function everyBook(check) {
+  for (const display of ['single', 'double']) {
+    for (const direction of Object.keys(BINDING)) {
+      for (const page of PAGES) {
+        for (let pageCount = 0; pageCount <= MAX_PAGES; pageCount++) {
+          const shape = { pageCount, display, direction };
+          if (page.pageWidth) shape.pageAspect = page.pageWidth / page.pageHeight;
+          withBook({ pageCount, display, binding: BINDING[direction], ...page }, (book) => {
+            check(book, shape, `${pageCount} pages, ${display}, ${direction}, page ${page.pageWidth ?? 'default'}`);
+          });
+        }
+      }
+    }
+  }
+}
+
+// Positions per book over page counts 0..9: single max(1, n) (46), double ceil(n / 2) + 1 (35); each for
+// 3 directions and 2 page shapes.
+const POSITIONS = (46 + 35) * 3 * 2;
+
+test('node: layout.js positions, first visible and open pages equal the engine Book\'s at every position of 0 to 9 pages (needs the wasm built)', () => {
+  let positions = 0;
+  everyBook((book, { pageCount, display }, where) => {
+    assert.equal(layout.lastPosition(pageCount, display), book.lastPosition(), where);
+    for (let page = 0; page < pageCount; page++) {
+      assert.equal(layout.positionOfPage(page, pageCount, display), book.positionOfPage(page), `${where}, page ${page}`);
+    }
+    for (let position = 0; position <= book.lastPosition(); position++) {
+      book.jumpTo(position);
+      const at = `${where}, position ${position}`;
+      const first = layout.firstVisiblePage(position, pageCount, display);
+      assert.equal(first, book.firstVisiblePage(), at);
+      // Announced: the pages lying open, except at an odd book's blank last spread, its face-down last page.
+      const shown = book.openPagePlaces(100, 100).map((place) => place.page).filter((page) => page >= 0).sort((a, b) => a - b);
+      assert.deepEqual(layout.openPages(position, pageCount, display), shown.length > 0 || first < 0 ? shown : [first], at);
+      positions++;
+    }
+  });
+  assert.equal(positions, POSITIONS);
+});
+
+test('node: layout.js restingRect and openPagePlaces equal the engine\'s, unzoomed, zoomed about a point and panned (needs the wasm built)', () => {
+  let cases = 0;
+  everyBook((book, shape, where) => {
+    for (let position = 0; position <= book.lastPosition(); position++) {
+      book.jumpTo(position);
+      for (const size of SIZES) {
+        const { width, height } = size;
+        const at = `${where}, position ${position}, ${width}x${height}`;
+        const rect = layout.restingRect(size, shape);
+        assertRectClose(rect, book.restingRect(width, height), size, `${at}: restingRect`);
+        assertPlacesClose(layout.openPagePlaces(position, shape, size), book.openPagePlaces(width, height), size, at);
+
+        // A point that moves with the position, so some zooms reach the offset limits and some do not.
+        const x = width * ((position * 0.37) % 1);
+        const y = height * ((position * 0.61 + 0.2) % 1);
+        let zoom = layout.zoomAbout({ scale: 1, offsetX: 0, offsetY: 0 }, 2.5, x, y, width, height);
+        assert.equal(book.zoomAbout(2.5, x, y, width, height), 2.5, at);
+        for (const [dx, dy] of [[0, 0], [-37, 23], [5000, -5000]]) {
+          if (dx !== 0 || dy !== 0) {
+            zoom = layout.panBy(zoom, dx, dy, width, height);
+            book.panBy(dx, dy, width, height);
+          }
+          const zoomed = `${at}, zoomed about (${x}, ${y}), panned (${dx}, ${dy})`;
+          assertZoomClose(zoom, book.zoom(), zoomed);
+          assertRectClose(layout.zoomRect(rect, zoom, width, height), book.restingRect(width, height), size, `${zoomed}: restingRect`);
+          assertPlacesClose(layout.openPagePlaces(position, shape, size, zoom), book.openPagePlaces(width, height), size, zoomed);
+        }
+        book.resetZoom();
+        cases++;
+      }
+    }
+  });
+  assert.equal(cases, POSITIONS * SIZES.length);
+});
+
+test('node: openPagePlaces of a book with turns in flight are where the turns land (needs the wasm built)', () => {
+  const size = { width: 640, height: 480 };
+  for (const display of ['single', 'double']) {
+    withBook({ pageCount: 9, display }, (book) => {
+      book.jumpTo(2);
+      assert.ok(book.startTurn('forward') && book.startTurn('forward') && book.startTurn('backward') === false);
+      assert.ok(book.animating());
+      const places = layout.openPagePlaces(book.position(), { pageCount: 9, display }, size);
+      assertPlacesClose(places, book.openPagePlaces(size.width, size.height), size, `${display}, two turns in flight`);
+    });
+  }
+});
+
+test('node: dist/engine-constants.js holds every constant of cpp/core/book_constants.hpp under its JS name (needs the wasm built)', () => {
+  const header = fs.readFileSync(new URL('../../cpp/core/book_constants.hpp', import.meta.url), 'utf8');
+  const expected = {};
+  for (const [, camel, value] of header.matchAll(/^inline constexpr [\w:]+ k(\w+) = ([^;]+);/gm)) {
+    expected[camel.replace(/([a-z0-9])([A-Z])/g, '$1_$2').toUpperCase()] = Number(value);
+  }
+  assert.equal(Object.keys(expected).length, header.match(/^inline constexpr/gm).length, 'a constant the pattern missed');
+  assert.ok(Object.keys(expected).length >= 8, 'book_constants.hpp unexpectedly small');
+  assert.deepEqual({ ...generated }, expected, 'dist/engine-constants.js is stale: run bash scripts/build-wasm.sh');
+});
+
+test('node: the engine keeps the limits and defaults layout.js exports (needs the wasm built)', () => {
+  const { DEFAULT_PAGE_HEIGHT, DEFAULT_PAGE_WIDTH, FRAME_MARGIN } = generated;
+  withBook({ pageCount: 30, display: 'double' }, (book) => {
+    // The default page.
+    assert.equal(book.pageWidth(), DEFAULT_PAGE_WIDTH);
+    assert.equal(book.pageHeight(), DEFAULT_PAGE_HEIGHT);
+    assert.equal(layout.DEFAULT_PAGE_ASPECT, book.pageWidth() / book.pageHeight());
+    // The frame margin: a 2 x 0.8 by 1 spread on a wide canvas fills its height less the margin.
+    assert.ok(Math.abs(book.restingRect(1600, 600).height - 600 / FRAME_MARGIN) < 1e-9);
+    // Turns in flight: the next one past the limit is refused (from position 1, so both stacks rest too).
+    book.jumpTo(1);
+    let started = 0;
+    while (book.startTurn('forward')) started++;
+    assert.equal(started, layout.MAX_TURNS_IN_FLIGHT);
+    assert.equal(book.frame().length, layout.MAX_TURNS_IN_FLIGHT + 2);
+    // Zoom: MAX_ZOOM is the most it takes, and its pan reaches MAX_ZOOM - 1 each way.
+    assert.equal(book.zoomAbout(layout.MAX_ZOOM, 0, 0, 800, 600), layout.MAX_ZOOM);
+    assert.throws(() => book.zoomAbout(layout.MAX_ZOOM + 1e-9, 0, 0, 800, 600), RangeError);
+    book.panBy(-1e6, 1e6, 800, 600);
+    assert.deepEqual(book.zoom(), { scale: layout.MAX_ZOOM, offsetX: -(layout.MAX_ZOOM - 1), offsetY: -(layout.MAX_ZOOM - 1) });
+    assert.deepEqual(layout.clampZoom({ scale: 10, offsetX: -1e6, offsetY: 1e6 }),
+      { scale: layout.MAX_ZOOM, offsetX: -(layout.MAX_ZOOM - 1), offsetY: layout.MAX_ZOOM - 1 });
+  });
+  assert.equal(layout.PAPER, `rgb(${generated.PAPER_RED}, ${generated.PAPER_GREEN}, ${generated.PAPER_BLUE})`);
+  assert.match(layout.PAPER, /^rgb\(\d{1,3}, \d{1,3}, \d{1,3}\)$/);
+});
+
+test('node: clampZoom treats non-finite values as no zoom, as the engine does', () => {
+  // -0 (an offset clamped to -0 at scale 1, as std::clamp gives too) reads as 0.
+  const clamped = (zoom) => Object.fromEntries(Object.entries(layout.clampZoom(zoom)).map(([key, value]) => [key, value + 0]));
+  assert.deepEqual(clamped({ scale: NaN, offsetX: NaN, offsetY: Infinity }), { scale: 1, offsetX: 0, offsetY: 0 });
+  assert.deepEqual(clamped({ scale: 0.5, offsetX: 0.3, offsetY: -0.3 }), { scale: 1, offsetX: 0, offsetY: 0 });
+  assert.deepEqual(clamped({ scale: 2, offsetX: 0.5, offsetY: -2 }), { scale: 2, offsetX: 0.5, offsetY: -1 });
+});
+
+test('node: displayFor shows two pages in \'auto\' only in containers wider than AUTO_DOUBLE_ASPECT times their height', () => {
+  assert.equal(layout.displayFor('single', { width: 2000, height: 100 }), 'single');
+  assert.equal(layout.displayFor('double', { width: 100, height: 2000 }), 'double');
+  assert.equal(layout.displayFor('auto', { width: 1000, height: 1000 }), 'single');
+  assert.equal(layout.displayFor('auto', { width: 120, height: 100 }), 'single');
+  assert.equal(layout.displayFor('auto', { width: 121, height: 100 }), 'double');
+  assert.equal(layout.displayFor('auto', { width: 10, height: 0 }), 'double');
+});
