@@ -93,7 +93,7 @@ test('browser: ten quick clicks land ten leaves on, quick clicks back land too, 
   await page.mouse.click(forward.x, forward.y);
   await settle(page);
   expect(await bookPage(page)).toBe(17);
-  expect(await page.evaluate(() => window.book._view.animating)).toBe(false);
+  expect(await page.evaluate(() => window.book.animating)).toBe(false);
 });
 
 test('browser: keys turn the focused book: arrows by direction, PageDown/PageUp, Home/End jump without animation', async ({ page }) => {
@@ -114,12 +114,12 @@ test('browser: keys turn the focused book: arrows by direction, PageDown/PageUp,
   // Home and End jump: no frame of a turn is drawn.
   await page.evaluate(() => {
     window.curled = 0;
-    const view = window.book._view;
+    const view = window.book.surface;
     const draw = view.drawNow.bind(view);
     view.drawNow = () => { if (view.book.frame().some((leaf) => !leaf.resting)) window.curled++; draw(); };
   });
   await page.keyboard.press('End');
-  expect(await page.evaluate(() => [window.book.page, window.book._view.animating])).toEqual([29, false]);
+  expect(await page.evaluate(() => [window.book.page, window.book.animating])).toEqual([29, false]);
   await settle(page);
   expect(await announcement(page)).toBe('Page 30 of 30');
   await page.keyboard.press('Home');
@@ -309,7 +309,7 @@ test('browser: with prefers-reduced-motion a turn cuts to the next spread: no cu
   await openBook(page, { pages: 20, display: 'double', duration: 2000 });
   const result = await page.evaluate(async () => {
     const book = window.book;
-    const view = book._view;
+    const view = book.surface;
     let curled = 0;
     const draw = view.drawNow.bind(view);
     view.drawNow = () => { if (view.book.frame().some((leaf) => !leaf.resting)) curled++; draw(); };
@@ -346,14 +346,14 @@ test('browser: a 1000-page book keeps no more textures than a 20-page one throug
     const pages = Array.from({ length: pageCount }, (_, i) => `/tests/browser/references/curl-t0-00.png?page=${i}`);
     await window.openBook({ pages, display: 'double', duration: 200, loadWindow: 4 });
     const book = window.book;
-    const renderer = book._view.renderer;
+    const renderer = book.surface.renderer;
     let most = 0;
     let bytes = 0;
     const measure = () => {
       most = Math.max(most, renderer.residentPageImages());
       let sum = 0;
       for (let i = 0; i < pageCount; i++) {
-        const size = book._view.pageImageSize(i);
+        const size = book.surface.pageImageSize(i);
         if (size) sum += size.width * size.height * 4;
       }
       bytes = Math.max(bytes, sum);
@@ -385,7 +385,7 @@ test('browser: a 1000-page book keeps no more textures than a 20-page one throug
     await book.flip(0, { animate: false });
     await checkOnScreen('jump to the start');
     sampling = false;
-    const size = book._view.pageImageSize(0);
+    const size = book.surface.pageImageSize(0);
     return { most, bytes, notResident, pageBytes: size.width * size.height * 4, resident: renderer.residentPageImages() };
   }, pageCount);
   const large = await run(1000);
@@ -406,7 +406,7 @@ test('browser: page images are downscaled to 1.5x their size on screen in device
     const big = window.makeNumberedPage(0, 4000, 5000);
     const small = window.makeNumberedPage(1, 200, 250);
     await window.openBook({ pages: [big, small], display: 'double' });
-    const view = window.book._view;
+    const view = window.book.surface;
     const rect = view.restingRect();
     const onScreen = { width: rect.width / 2, height: rect.height };  // one of the spread's two places
     const huge = document.createElement('canvas');
@@ -440,7 +440,7 @@ test('browser: restingRect is where the resting pages are drawn, for double, sin
   ]) {
     const edges = await page.evaluate(async (options) => {
       await window.openBook({ pages: 4, lighting: false, shadows: false, gutter: false, ...options });
-      const view = window.book._view;
+      const view = window.book.surface;
       view.drawNow();
       const pixels = view.readPixels();
       const r = view.restingRect();
@@ -466,16 +466,16 @@ test('browser: the book follows its container: \'auto\' turns single below aspec
   await openBook(page, { pages: 30, display: 'auto', duration: 150, startPage: 5 });
   const resize = (width, height) => page.evaluate(([width, height]) => new Promise((resolve) => {
     const book = window.book;
-    const framesBefore = book._view.framesDrawn;
+    const framesBefore = book.surface.framesDrawn;
     book.addEventListener('resize', (event) => {
       requestAnimationFrame(() => requestAnimationFrame(() => resolve({
-        detail: event.detail, display: book.display, page: book.page, canvasWidth: book._view.canvas.width,
-        redrawn: book._view.framesDrawn > framesBefore || book._view !== window.viewBefore,
-        framesNow: book._view.framesDrawn, texturesKept: book._view.renderer.hasPageImage(5),
+        detail: event.detail, display: book.display, page: book.page, canvasWidth: book.surface.canvas.width,
+        redrawn: book.surface.framesDrawn > framesBefore || book.surface !== window.viewBefore,
+        framesNow: book.surface.framesDrawn, texturesKept: book.surface.renderer.hasPageImage(5),
         announcement: document.querySelector('[aria-live]').textContent,
       })));
     }, { once: true });
-    window.viewBefore = book._view;
+    window.viewBefore = book.surface;
     document.getElementById('container').style.width = `${width}px`;
     document.getElementById('container').style.height = `${height}px`;
   }), [width, height]);
@@ -503,7 +503,7 @@ test('browser: a devicePixelRatio change (and back) resizes the canvas and bring
   await page.evaluate(async () => {
     const pages = Array.from({ length: 6 }, (_, i) => window.makeNumberedPage(i, 1600, 2000));
     await window.openBook({ pages, display: 'double', startPage: 1 });
-    window.before = window.book._view.pageImageSize(1);
+    window.before = window.book.surface.pageImageSize(1);
   });
   const cdp = await page.context().newCDPSession(page);
   // Chromium's emulation notifies media queries of a new ratio only with a viewport change, so the
@@ -517,7 +517,7 @@ test('browser: a devicePixelRatio change (and back) resizes the canvas and bring
       const detail = await window.resized;
       await new Promise((resolve) => setTimeout(resolve, 400));  // textures follow once resizing rests
       await new Promise((resolve) => requestAnimationFrame(resolve));
-      return { detail, dpr: devicePixelRatio, canvasWidth: window.book._view.canvas.width, size: window.book._view.pageImageSize(1) };
+      return { detail, dpr: devicePixelRatio, canvasWidth: window.book.surface.canvas.width, size: window.book.surface.pageImageSize(1) };
     });
   };
   const before = await page.evaluate(() => window.before);

@@ -18,7 +18,7 @@ async function openBookAndCornerPath(page, { corner = 'bottom', steps = 24 } = {
     for (const type of ['turnstart', 'turned', 'turncancel']) {
       book.addEventListener(type, (e) => window.events.push({ type, ...e.detail }));
     }
-    const view = book._view;
+    const view = book.surface;
     const engine = view.engine;
     const { width, height } = view.fitCanvas();
     const vp = view.book.viewProjection(width, height);
@@ -49,7 +49,7 @@ async function openBookAndCornerPath(page, { corner = 'bottom', steps = 24 } = {
 /** Where the GPU drew the grabbed corner: the held leaf's corner vertex by transform feedback, projected. */
 function gpuCornerCss(page) {
   return page.evaluate(() => {
-    const view = window.book._view;
+    const view = window.book.surface;
     const frame = view.book.frame();
     const index = frame.findIndex((leaf) => !leaf.resting);
     const vertices = view.renderer.captureLeaf(view.book, index);
@@ -67,7 +67,7 @@ function gpuCornerCss(page) {
 
 async function settleFrames(page) {
   // The held pose catches up within a few frames; SwiftShader frames are slow, so wait for rest.
-  await page.waitForFunction(() => !window.book._view.book.moving());
+  await page.waitForFunction(() => !window.book.surface.book.moving());
 }
 
 for (const corner of ['bottom', 'top']) {
@@ -104,7 +104,7 @@ test('browser: a drag released short of the spine falls back with turncancel and
   await page.mouse.move(path[2].x + 0.5, path[2].y);
   await page.mouse.up();
   await page.waitForFunction(() => window.events.some((e) => e.type === 'turncancel' || e.type === 'turned'));
-  await page.waitForFunction(() => !window.book._view.book.animating());
+  await page.waitForFunction(() => !window.book.animating);
   const state = await page.evaluate(() => ({ types: window.events.map((e) => e.type), pageNow: window.book.page }));
   expect(state.types).toEqual(['turnstart', 'turncancel']);
   expect(state.pageNow).toBe(1);
@@ -120,23 +120,23 @@ test('browser: a quick fling towards the spine completes the turn from a short d
   for (let i = 1; i <= 8; i++) await page.mouse.move(path[i].x, path[i].y);  // fast: no waits between moves
   await page.mouse.up();
   await page.waitForFunction(() => window.events.some((e) => e.type === 'turned' || e.type === 'turncancel'));
-  await page.waitForFunction(() => !window.book._view.book.animating());
+  await page.waitForFunction(() => !window.book.animating);
   expect(await page.evaluate(() => window.events.map((e) => e.type))).toEqual(['turnstart', 'turned']);
 });
 
 test('browser: hovering the mouse near a corner lifts it, and moving away lays it flat again', async ({ page }) => {
   const path = await openBookAndCornerPath(page);
-  await page.waitForFunction(() => !window.book._view.book.animating());
+  await page.waitForFunction(() => !window.book.animating);
   const shot = async () => page.screenshot({ clip: { x: path[0].x - 80, y: path[0].y - 80, width: 90, height: 90 } });
   await page.mouse.move(path[0].x - 300, path[0].y - 150);
   await page.waitForTimeout(300);
   const flat = await shot();
   await page.mouse.move(path[0].x - 4, path[0].y - 4);
-  await page.waitForFunction(() => window.book._view.book.holding() && !window.book._view.book.moving());
+  await page.waitForFunction(() => window.book.surface.book.holding() && !window.book.surface.book.moving());
   const lifted = await shot();
   expect(lifted.equals(flat)).toBe(false);
   await page.mouse.move(path[0].x - 300, path[0].y - 150);
-  await page.waitForFunction(() => !window.book._view.book.animating());
+  await page.waitForFunction(() => !window.book.animating);
   await page.waitForTimeout(200);
   expect((await shot()).equals(flat)).toBe(true);
   expect(await page.evaluate(() => window.book.page)).toBe(1);
@@ -169,11 +169,11 @@ test('browser: a touch drag from the corner across the spine turns the page, onc
 test('browser: a click on a corner lifted by hovering carries the lifted leaf on into one full turn', async ({ page }) => {
   const path = await openBookAndCornerPath(page);
   await page.mouse.move(path[0].x - 4, path[0].y - 4);
-  await page.waitForFunction(() => window.book._view.book.holding() && !window.book._view.book.moving());
+  await page.waitForFunction(() => window.book.surface.book.holding() && !window.book.surface.book.moving());
   await page.mouse.down();
   await page.mouse.up();
   await page.waitForFunction(() => window.events.some((e) => e.type === 'turned'));
-  await page.waitForFunction(() => !window.book._view.book.animating());
+  await page.waitForFunction(() => !window.book.animating);
   await page.waitForTimeout(200);
   expect(await page.evaluate(() => window.events.map((e) => e.type))).toEqual(['turnstart', 'turned']);
   expect(await page.evaluate(() => window.book.page)).toBe(3);

@@ -23,8 +23,8 @@ test('browser: <cone-flipbook> attributes become Flipbook options (display, dire
       pageCount: element.pageCount,
       // Right to left: the spread's first page (3) lies right of the spine, the second (4) left of it.
       leftRight: window.pagesAt(element, [[150, 300], [490, 300]]),
-      resident: book._view.renderer.residentPageImages(),
-      settings: (({ duration, hardCovers, lighting, loadWindow }) => ({ duration, hardCovers, lighting, loadWindow }))(book._settings),
+      resident: book.surface.renderer.residentPageImages(),
+      settings: (({ duration, hardCovers, lighting, loadWindow }) => ({ duration, hardCovers, lighting, loadWindow }))(book.options),
     };
   });
   expect(result.same).toBe(true);
@@ -47,7 +47,7 @@ test('browser: child <img> elements are the pages in order with their alt text, 
     const book = await element.whenReady();
     const first = {
       pageCount: element.pageCount,
-      alts: book._pages.map((p) => p.alt),
+      alts: book.options.pages.map((p) => p.alt),
       centre: window.pagesAt(element, [[320, 300]])[0],
       childWidths: [...element.querySelectorAll('img')].map((img) => img.getBoundingClientRect().width),
       canvasWidth: element.shadowRoot.querySelector('canvas').getBoundingClientRect().width,
@@ -115,7 +115,7 @@ test('browser: lighting, shadows and gutter attributes change the frame of the s
     const element = window.makeElement({ pages, display: 'double', 'start-page': '1' });
     document.getElementById('stage').append(element);
     const book = await element.whenReady();
-    const frameAt = () => { book._view.showTurn('forward', 0.3); return Uint8Array.from(book._view.readPixels().data); };
+    const frameAt = () => { book.surface.showTurn('forward', 0.3); return Uint8Array.from(book.surface.readPixels().data); };
     const lit = frameAt();
     element.setAttribute('lighting', 'false');
     element.setAttribute('shadows', 'false');
@@ -134,7 +134,7 @@ test('browser: lighting, shadows and gutter attributes change the frame of the s
     const detail = await rebuilt;
     return {
       live,
-      rebuild: { detail, page: element.page, display: element.display, newBook: element.book !== book, oldDestroyed: book._view === null, canvases: element.shadowRoot.querySelectorAll('canvas').length },
+      rebuild: { detail, page: element.page, display: element.display, newBook: element.book !== book, oldDestroyed: book.surface === null, canvases: element.shadowRoot.querySelectorAll('canvas').length },
     };
   });
   expect(result.live.same).toBe(true);
@@ -186,7 +186,7 @@ test('browser: a bad attribute fires an error event with a TypeError naming the 
     element.addEventListener('error', (event) => errors.push(event.detail.error.message));
     element.setAttribute('shadows', 'maybe');
     const turned = await element.next();
-    return { out, live: { errors, same: element.book === book, turned, shadows: book._settings.shadows } };
+    return { out, live: { errors, same: element.book === book, turned, shadows: book.options.shadows } };
   });
   for (const { name, events, sameError, shown, fixed, panelHiddenAfterFix } of result.out) {
     expect(events, `attribute ${name}`).toHaveLength(1);
@@ -219,13 +219,13 @@ test('browser: removing <cone-flipbook> destroys its book and releases its canva
 
     document.getElementById('elsewhere').append(element);  // a move: removed and inserted in one task
     await new Promise((resolve) => setTimeout(resolve, 50));
-    const moved = { same: element.book === book, alive: book._view !== null };
+    const moved = { same: element.book === book, alive: book.surface !== null };
 
     element.remove();
     await new Promise((resolve) => setTimeout(resolve, 50));
     const removed = {
       book: element.book,
-      destroyed: book._view === null,
+      destroyed: book.surface === null,
       canvases: element.shadowRoot.querySelectorAll('canvas').length,
       live: window.liveCanvases(),
       next: await element.next().then(() => 'resolved', (error) => error.message),

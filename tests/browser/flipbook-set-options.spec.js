@@ -11,7 +11,7 @@ test('browser: Flipbook.setOptions switches lighting, shadows and gutter on the 
     const container = document.getElementById('container');
     const pages = Array.from({ length: 6 }, (_, i) => window.makeNumberedPage(i));
     const book = await window.Flipbook.create(container, { pages, display: 'double', startPage: 1 });
-    const frameAt = () => { book._view.showTurn('forward', 0.3); return Uint8Array.from(book._view.readPixels().data); };
+    const frameAt = () => { book.surface.showTurn('forward', 0.3); return Uint8Array.from(book.surface.readPixels().data); };
     const changed = (a, b) => {
       let n = 0;
       for (let i = 0; i < a.length; i += 4) if (Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]) > 12) n++;

@@ -45,7 +45,7 @@ test('browser: Flipbook loads lazily with progress and ready, turns with turnsta
       return original.call(this, event);
     };
     const book = await window.Flipbook.create(container, { pages, display: 'double', duration: 300 });
-    const resident = book._view.renderer.residentPageImages();
+    const resident = book.surface.renderer.residentPageImages();
     await book.next();
     await book.flip(20, { animate: false });
     const at20 = book.page;
@@ -77,10 +77,10 @@ test('browser: a page that fails to load shows a placeholder and a pageerror; th
     };
     const book = await window.Flipbook.create(container, { pages, display: 'double', duration: 200 });
     const turned = await book.next();
-    book._view.drawNow();
-    const pixels = book._view.readPixels();
+    book.surface.drawNow();
+    const pixels = book.surface.readPixels();
     const at = (x, y) => { const i = (y * pixels.width + x) * 4; return Array.from(pixels.data.slice(i, i + 3)); };
-    return { errors, turned, page: book.page, left: at(110, 300), rightLoaded: book._view.renderer.hasPageImage(2) };
+    return { errors, turned, page: book.page, left: at(110, 300), rightLoaded: book.surface.renderer.hasPageImage(2) };
   });
   expect(result.errors).toHaveLength(1);
   expect(result.errors[0].index).toBe(1);

@@ -54,7 +54,7 @@ test('browser: two animated flips at once end at the later one\'s page and the b
       new Promise((resolve) => setTimeout(() => resolve('still turning after 10 s'), 10_000)),
     ]);
     await window.settle();
-    return { outcome, page: book.page, landed, animating: book._view.animating };
+    return { outcome, page: book.page, landed, animating: book.animating };
   });
   expect(result.outcome).toBe('resolved');
   expect(result.page).toBe(5);
@@ -71,13 +71,13 @@ test('browser: a jump by flip() while a page is dragged ends the drag; the point
   await page.mouse.move(corner.x, corner.y);
   await page.mouse.down();
   await page.mouse.move(middle.x, middle.y, { steps: 4 });
-  expect(await page.evaluate(() => window.book._view.book.holding())).toBe(true);
+  expect(await page.evaluate(() => window.book.surface.book.holding())).toBe(true);
   await page.evaluate(() => window.book.flip(0, { animate: false }));
   await page.mouse.move(middle.x - 40, middle.y, { steps: 3 });
   await page.mouse.up();
   await page.evaluate(() => window.settle());
   expect(problems).toEqual([]);
-  expect(await page.evaluate(() => ({ page: window.book.page, holding: window.book._view.book.holding() })))
+  expect(await page.evaluate(() => ({ page: window.book.page, holding: window.book.surface.book.holding() })))
     .toEqual({ page: 0, holding: false });
 });
 
@@ -98,7 +98,7 @@ test('browser: a page that loads while a hover hint lifts a corner does not leav
   // The mouse hovers the left page's top outer corner: the hint lifts that leaf (a held backward turn).
   const corner = await page.evaluate(() => window.halfPoint(0.003, 0.005));
   await page.mouse.move(corner.x, corner.y);
-  await page.waitForFunction(() => window.book._view.book.holding());
+  await page.waitForFunction(() => window.book.surface.book.holding());
   await page.evaluate(() => window.openGate());
   await page.waitForTimeout(400);  // the page under the lifted corner loads and uploads meanwhile
   await page.mouse.move(corner.x + 300, corner.y + 300);  // off the corner: the hint falls back

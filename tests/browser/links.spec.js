@@ -34,8 +34,8 @@ test('browser: page links are anchors placed over the open pages, a click fires 
   expect(list.map((a) => [a.page, a.text, a.href])).toEqual([[1, 'Example A', 'https://example.com/a'], [2, 'To page 7', '#']]);
   // Placed by page fractions: page 1 is the left half of the spread, page 2 the right.
   const spread = await page.evaluate(() => {
-    const box = window.book._view.canvas.getBoundingClientRect();
-    const r = window.book._view.restingRect();
+    const box = window.book.surface.canvas.getBoundingClientRect();
+    const r = window.book.restingRect();
     return { x: box.left + r.x, y: box.top + r.y, w: r.width, h: r.height };
   });
   expect(list[0].x).toBeCloseTo(spread.x + 0.1 * spread.w / 2, 0);
@@ -90,19 +90,19 @@ test('browser: a PDF\'s link annotations (a URI and a page destination) become l
   await openReady(page, '/tests/browser/fixtures/pdf-fixture.html');
   await page.evaluate(async (b) => {
     window.book = await window.Flipbook.create(window.container, { pdf: window.bytesFromBase64(b), display: 'double', startPage: 1, duration: 250 });
-    await window.book._whenIdle();
+    await window.book.whenIdle();
   }, base64);
   await page.waitForFunction(() => window.book.element.querySelectorAll('.conecurl-links a').length === 2);
   const list = await anchors(page);
   expect(list.map((a) => [a.page, a.href])).toEqual([[1, 'https://example.org/pdf'], [2, '#']]);
   // The URI link sits in the top part of the left page; the destination link low on the right page.
   const spread = await page.evaluate(() => {
-    const box = window.book._view.canvas.getBoundingClientRect();
-    const r = window.book._view.restingRect();
+    const box = window.book.surface.canvas.getBoundingClientRect();
+    const r = window.book.restingRect();
     return { x: box.left + r.x, y: box.top + r.y, w: r.width, h: r.height };
   });
   expect(list[0].y).toBeCloseTo(spread.y + (60 / 500) * spread.h, 0);
   expect(list[1].x).toBeGreaterThan(spread.x + spread.w / 2);
   await page.mouse.click(list[1].x + 5, list[1].y + 5);
-  await page.waitForFunction(() => window.book.page === 5 && !window.book._view.animating, null, { timeout: 20000 });
+  await page.waitForFunction(() => window.book.page === 5 && !window.book.animating, null, { timeout: 20000 });
 });

@@ -41,8 +41,8 @@ async function open(page) {
 async function showBook(page, b) {
   await page.evaluate((b) => document.getElementById(`slot-${b}`).scrollIntoView({ block: 'center' }), b);
   await page.waitForFunction((b) => {
-    const lease = window.books[b]._contextLease;
-    return lease.state === 'live' && !lease._gl.isContextLost() && !lease.showingSnapshot;
+    const lease = window.books[b].surface.contextLease;
+    return lease.state === 'live' && !window.books[b].surface.canvas.getContext('webgl2').isContextLost() && !lease.showingSnapshot;
   }, b);
   await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
 }
@@ -52,7 +52,7 @@ const twoFrames = (page) => page.evaluate(() => new Promise((resolve) => request
 /** [book, page] codes on screen at the middle of the left and right resting pages of book `b`. */
 async function pagesOnScreen(page, b) {
   const { box, rect } = await page.evaluate((b) => {
-    const view = window.books[b]._view;
+    const view = window.books[b].surface;
     const r = view.canvas.getBoundingClientRect();
     return { box: { x: r.left, y: r.top, width: r.width, height: r.height }, rect: view.restingRect() };
   }, b);
@@ -88,7 +88,7 @@ test('browser: 32 books on one page: each scrolled into view draws its own pages
   expect(afterCreate.budget).toBeLessThanOrEqual(MAX_LIVE);
 
   // Book 20 is far out of view, without a context: it still turns (its promise resolves) and keeps its page.
-  expect(await page.evaluate(() => window.books[20]._contextLease.state)).toBe('parked');
+  expect(await page.evaluate(() => window.books[20].surface.contextLease.state)).toBe('parked');
   expect(await page.evaluate(() => window.books[20].next())).toBe(true);
   expect(await page.evaluate(() => window.books[20].page)).toBe(3);
 
@@ -108,7 +108,7 @@ test('browser: 32 books on one page: each scrolled into view draws its own pages
 
   const { most, states } = await page.evaluate(() => ({
     most: window.maxLiveContexts,
-    states: window.books.map((book) => book._contextLease.state),
+    states: window.books.map((book) => book.surface.contextLease.state),
   }));
   console.log(`many books: 32 books, live WebGL contexts at most ${most} (budget ${MAX_LIVE}); `
     + `after each book's turn: ${seen.join(' ')}; at the end ${states.filter((s) => s === 'live').length} live`);
@@ -125,7 +125,7 @@ test('browser: a book whose context is lost by accident recovers its pages, and 
   // Lost outside the budget (as a GPU reset would), mid-turn, then restored by the browser.
   const turned = await page.evaluate(async () => {
     const book = window.books[2];
-    const canvas = book._view.canvas;
+    const canvas = book.surface.canvas;
     const gl = canvas.getContext('webgl2');
     const extension = gl.getExtension('WEBGL_lose_context');
     const event = (name) => new Promise((resolve) => canvas.addEventListener(name, resolve, { once: true }));
@@ -144,7 +144,7 @@ test('browser: a book whose context is lost by accident recovers its pages, and 
   expect(await pagesOnScreen(page, 2)).toEqual([[2, 3], [2, 4]]);
   // Scrolling on through the others parks book 2 (the longest out of view); back in view it is intact.
   for (let b = 5; b < 16; b++) await showBook(page, b);
-  expect(await page.evaluate(() => window.books[2]._contextLease.state)).toBe('parked');
+  expect(await page.evaluate(() => window.books[2].surface.contextLease.state)).toBe('parked');
   await showBook(page, 2);
   expect(await pagesOnScreen(page, 2)).toEqual([[2, 3], [2, 4]]);
   expect(await page.evaluate(() => window.maxLiveContexts)).toBeLessThanOrEqual(MAX_LIVE);
@@ -157,11 +157,11 @@ test('browser: with more books in view than contexts, those without one show the
   await page.evaluate(() => window.makeBooks(12, { grid: true }));  // 12 small books, all in view
   // Once the budget has settled: 8 books drawing, 4 showing a snapshot of their last frame.
   await page.waitForFunction(() => window.books.every((book) => {
-    const lease = book._contextLease;
+    const lease = book.surface.contextLease;
     return (lease.state === 'live' && !lease.showingSnapshot) || (lease.state === 'parked' && lease.showingSnapshot);
   }));
   await twoFrames(page);
-  const parked = await page.evaluate(() => window.books.flatMap((book, b) => (book._contextLease.state === 'parked' ? [b] : [])));
+  const parked = await page.evaluate(() => window.books.flatMap((book, b) => (book.surface.contextLease.state === 'parked' ? [b] : [])));
   expect(parked).toHaveLength(12 - MAX_LIVE);
   for (let b = 0; b < 12; b++) expect(await pagesOnScreen(page, b), `book ${b}`).toEqual([[b, 1], [b, 2]]);
 
@@ -170,8 +170,8 @@ test('browser: with more books in view than contexts, those without one show the
   expect(await page.evaluate((b) => window.books[b].next(), turner)).toBe(true);
   await showBook(page, turner);
   expect(await pagesOnScreen(page, turner)).toEqual([[turner, 3], [turner, 4]]);
-  await page.waitForFunction(() => window.books.every((book) => book._contextLease.state !== 'parked' || book._contextLease.showingSnapshot));
-  const parkedNow = await page.evaluate(() => window.books.flatMap((book, b) => (book._contextLease.state === 'parked' ? [b] : [])));
+  await page.waitForFunction(() => window.books.every((book) => book.surface.contextLease.state !== 'parked' || book.surface.contextLease.showingSnapshot));
+  const parkedNow = await page.evaluate(() => window.books.flatMap((book, b) => (book.surface.contextLease.state === 'parked' ? [b] : [])));
   expect(parkedNow).toHaveLength(12 - MAX_LIVE);
   expect(parkedNow).not.toContain(turner);
   for (const b of parkedNow) expect(await pagesOnScreen(page, b), `book ${b}, parked`).toEqual([[b, 1], [b, 2]]);

@@ -32,7 +32,7 @@ test.beforeAll(async () => { pdfBase64 = await makePdf(); });
 /** Colour at the middle of the left and right page of the open spread. */
 function spreadColors(page) {
   return page.evaluate(() => {
-    const view = window.book._view;
+    const view = window.book.surface;
     view.drawNow();
     const { width, height, data } = view.readPixels();
     const rect = view.book.restingRect(width, height);  // drawing-buffer pixels
@@ -57,7 +57,7 @@ test('browser: a generated 300-page PDF opens as a book with its pages, text and
       pdf: bytes, display: 'double', startPage: 1, duration: 300, lighting: false, shadows: false, gutter: false,
     });
     const ready = performance.now() - started;
-    await window.book._whenIdle();
+    await window.book.whenIdle();
     return { ready, firstSpread: performance.now() - started, pageCount: window.book.pageCount, bytesKept: bytes.length };
   }, pdfBase64);
   expect(opened.pageCount).toBe(PAGE_COUNT);
@@ -72,18 +72,18 @@ test('browser: a generated 300-page PDF opens as a book with its pages, text and
 
   // Jump deep into the book, then turn: the right pages, and the cache stays bounded.
   await page.evaluate(() => window.book.flip(150, { animate: false }));
-  await page.evaluate(() => window.book._whenIdle());
+  await page.evaluate(() => window.book.whenIdle());
   colors = await spreadColors(page);
   expect(near(colors.left, pageColor(149)), `left ${colors.left}`).toBe(true);
   expect(near(colors.right, pageColor(150)), `right ${colors.right}`).toBe(true);
   await page.evaluate(() => window.book.next());
-  await page.evaluate(() => window.book._whenIdle());
+  await page.evaluate(() => window.book.whenIdle());
   colors = await spreadColors(page);
   expect(near(colors.left, pageColor(151)), `left ${colors.left}`).toBe(true);
   expect(near(colors.right, pageColor(152)), `right ${colors.right}`).toBe(true);
   for (const target of [10, 290, 75, 299, 0]) await page.evaluate((t) => window.book.flip(t, { animate: false }), target);
-  await page.evaluate(() => window.book._whenIdle());
-  const resident = await page.evaluate(() => window.book._view.renderer.residentPageImages());
+  await page.evaluate(() => window.book.whenIdle());
+  const resident = await page.evaluate(() => window.book.surface.renderer.residentPageImages());
   expect(resident).toBeLessThanOrEqual(14);
   const cdp = await page.context().newCDPSession(page);
   await cdp.send('HeapProfiler.collectGarbage');
@@ -137,7 +137,7 @@ test('browser: <cone-flipbook pdf="..."> shows a PDF served by URL', async ({ pa
     window.container.replaceWith(element);
     await ready;
     window.book = element.book;
-    await element.book._whenIdle();
+    await element.book.whenIdle();
     return { pageCount: element.pageCount, page: element.page };
   }, `/${file}`);
   expect(result).toEqual({ pageCount: PAGE_COUNT, page: 3 });

@@ -22,13 +22,13 @@ function shownAt(page, points) {
     let pixels;
     let rect;
     let canvas;
-    if (book._view) {
-      book._view.drawNow();
-      pixels = book._view.readPixels();
-      rect = book._view.restingRect();
-      canvas = book._view.canvas;
+    if (book.surface?.kind === 'webgl') {
+      book.surface.drawNow();
+      pixels = book.surface.readPixels();
+      rect = book.restingRect();
+      canvas = book.surface.canvas;
     } else {
-      canvas = book._canvas;
+      canvas = book.element.querySelector('canvas');
       pixels = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height);
       rect = book.restingRect();
     }
@@ -122,7 +122,7 @@ test('browser: a cross-origin page without CORS fires a pageerror naming CORS (U
     const pages = [window.makeNumberedPage(0), `${otherOrigin}${path}`, `${otherOrigin}${path}?cors=1`, foreign];
     await window.openBook({ pages, display: 'double', startPage: 1, loadWindow: 4 });
     await new Promise((resolve) => setTimeout(resolve));  // the first view's events come just after create
-    const view = window.book._view;
+    const view = window.book.surface;
     view.drawNow();
     const pixels = view.readPixels();  // would throw on a tainted canvas
     return {
@@ -175,7 +175,7 @@ test('browser: a 1x1 image and a non-power-of-two image fill their page the righ
       pages: [window.makeNumberedPage(0), npot, onePixel, wide], display: 'double', startPage: 1,
       lighting: false, shadows: false, gutter: false,
     });
-    const view = window.book._view;
+    const view = window.book.surface;
     return { maxTextureSize, npot: view.pageImageSize(1), onePixel: view.pageImageSize(2), wide: view.pageImageSize(3) };
   });
   expect(sizes.onePixel).toEqual({ width: 1, height: 1 });  // never scaled up
@@ -192,7 +192,7 @@ test('browser: a 1x1 image and a non-power-of-two image fill their page the righ
 test('browser: one page and an odd page count have defined layouts in single and double display; next/prev/flip resolve false at the ends', async ({ page }) => {
   await openReady(page, FIXTURE);
   const turn = (how) => page.evaluate((how) => window.book[how](), how);
-  const state = () => page.evaluate(() => ({ page: window.book.page, animating: window.book._view.animating }));
+  const state = () => page.evaluate(() => ({ page: window.book.page, animating: window.book.animating }));
 
   // One page, double: the page alone on the right; turning it shows its blank back alone on the left.
   await openBook(page, { pages: 1, display: 'double', duration: 150 });
@@ -347,12 +347,13 @@ test.describe('without WebGL2', () => {
     expect(await page.evaluate(() => window.book.page)).toBe(3);
     expect(await shownAt(page, SPREAD)).toEqual([3, 4]);
     const left = await page.evaluate(() => {
-      const box = window.book._canvas.getBoundingClientRect();
+      const box = window.book.element.querySelector('canvas').getBoundingClientRect();
       const r = window.book.restingRect();
       return { x: box.left + r.x + r.width * 0.25, y: box.top + r.y + r.height / 2 };
     });
     await page.mouse.click(left.x, left.y);
-    expect(await page.evaluate(() => window.book.page)).toBe(1);
+    // A mouse click waits a moment to tell a double-click (which zooms, on still pages too) from a turn.
+    expect(await page.evaluate(async () => { await window.book.whenIdle(); return window.book.page; })).toBe(1);
 
     // Nothing in the strings ran or became markup; destroy empties the container and is final.
     const after = await page.evaluate(async () => {
@@ -423,7 +424,7 @@ test('browser: when the wasm engine cannot load, create rejects with code engine
 /** Loses the book's WebGL context (WEBGL_lose_context) and resolves once it is lost. */
 function loseContext(page) {
   return page.evaluate(async () => {
-    const canvas = window.book._view.canvas;
+    const canvas = window.book.surface.canvas;
     window.loseExtension = canvas.getContext('webgl2').getExtension('WEBGL_lose_context');  // the book's own context
     const lost = new Promise((resolve) => canvas.addEventListener('webglcontextlost', resolve, { once: true }));
     window.loseExtension.loseContext();
@@ -434,7 +435,7 @@ function loseContext(page) {
 /** Restores it, in a later task (Chrome ignores a restore in the task that lost it), and waits a frame. */
 function restoreContext(page) {
   return page.evaluate(async () => {
-    const canvas = window.book._view.canvas;
+    const canvas = window.book.surface.canvas;
     await new Promise((resolve) => setTimeout(resolve, 50));
     const restored = new Promise((resolve) => canvas.addEventListener('webglcontextrestored', resolve, { once: true }));
     window.loseExtension.restoreContext();
@@ -444,14 +445,14 @@ function restoreContext(page) {
 }
 
 /** The progress of the leaf in flight, as its rotation about the spine (0 resting right, pi landed). */
-const flyingRho = (page) => page.evaluate(() => window.book._view.book.frame().find((leaf) => !leaf.resting)?.curl.rho ?? null);
+const flyingRho = (page) => page.evaluate(() => window.book.surface.book.frame().find((leaf) => !leaf.resting)?.curl.rho ?? null);
 /** The whole pose (cone angle, apex, rotation) of the leaf in flight. */
-const flyingPose = (page) => page.evaluate(() => window.book._view.book.frame().find((leaf) => !leaf.resting)?.curl ?? null);
+const flyingPose = (page) => page.evaluate(() => window.book.surface.book.frame().find((leaf) => !leaf.resting)?.curl ?? null);
 
 /** Every cached page image has its texture again, and nothing else is resident. */
 const texturesMatchCache = (page) => page.evaluate(() => {
-  const { _view: view, _images: images } = window.book;
-  return { cached: images.size, resident: view.renderer.residentPageImages(), missing: [...images.keys()].filter((i) => !view.renderer.hasPageImage(i)) };
+  const { surface: view, residentPages: cached } = window.book;
+  return { cached: cached.length, resident: view.renderer.residentPageImages(), missing: cached.filter((i) => !view.renderer.hasPageImage(i)) };
 });
 
 test('browser: a WebGL context lost mid-turn pauses the turn; on restore every texture is back and the turn lands; pages loaded while lost show too', async ({ page }) => {
@@ -464,17 +465,17 @@ test('browser: a WebGL context lost mid-turn pauses the turn; on restore every t
     window.turning = window.book.next();
     window.queued = window.book.next();  // asked during the turn: it waits its turn
   });
-  await page.waitForFunction(() => (window.book._view.book.frame().find((leaf) => !leaf.resting)?.curl.rho ?? 0) > 0.3);
+  await page.waitForFunction(() => (window.book.surface.book.frame().find((leaf) => !leaf.resting)?.curl.rho ?? 0) > 0.3);
   await loseContext(page);
   const pausedAt = await flyingRho(page);
   // The container is resized meanwhile: the book lays out and asks for a frame, which must not run the clock.
   await page.evaluate(() => { document.getElementById('container').style.width = '620px'; });
   await page.waitForTimeout(500);  // half the turn's duration
   expect(await flyingRho(page), 'the turn does not move while the context is lost').toBe(pausedAt);
-  expect(await page.evaluate(() => [window.book._view.contextLost, window.book._view.animating,
+  expect(await page.evaluate(() => [window.book.surface.contextLost, window.book.animating,
     window.events.filter((e) => e.type === 'turned').length])).toEqual([true, true, 0]);
   await restoreContext(page);
-  expect(await page.evaluate(() => window.book._view.contextLost)).toBe(false);
+  expect(await page.evaluate(() => window.book.surface.contextLost)).toBe(false);
   expect(await page.evaluate(() => Promise.all([window.turning, window.queued]))).toEqual([true, true]);
   expect(await page.evaluate(() => window.book.page)).toBe(5);
   expect(await texturesMatchCache(page)).toMatchObject({ missing: [] });
@@ -483,7 +484,7 @@ test('browser: a WebGL context lost mid-turn pauses the turn; on restore every t
   // Lost while at rest, the book jumps to pages it has not loaded yet: they load into the lost
   // context, and show once it is back.
   await loseContext(page);
-  await page.evaluate(async () => { await window.book.flip(10, { animate: false }); await window.book._whenIdle(); });
+  await page.evaluate(async () => { await window.book.flip(10, { animate: false }); await window.book.whenIdle(); });
   await restoreContext(page);
   const textures = await texturesMatchCache(page);
   expect(textures.missing).toEqual([]);
@@ -499,7 +500,7 @@ test('browser: a WebGL context lost mid-drag pauses the held page; after restore
   await recordEvents(page);
   await openBook(page, { pages: 8, display: 'double', duration: 400, startPage: 1 });
   const at = (fx, fy) => page.evaluate(([fx, fy]) => window.halfPoint(fx, fy), [fx, fy]);
-  const poseAtRest = () => page.waitForFunction(() => window.book._view.book.holding() && !window.book._view.book.moving());
+  const poseAtRest = () => page.waitForFunction(() => window.book.surface.book.holding() && !window.book.surface.book.moving());
   const corner = await at(0.995, 0.99);
   await page.mouse.move(corner.x, corner.y);
   await page.mouse.down();
@@ -518,7 +519,7 @@ test('browser: a WebGL context lost mid-drag pauses the held page; after restore
   expect(await flyingRho(page), 'after the restore it caught up with the pointer, far along').toBeGreaterThan(held.rho + 0.5);
   await page.mouse.up();
   await page.waitForFunction(() => window.events.some((e) => e.type === 'turned'));
-  await page.waitForFunction(() => !window.book._view.animating);
+  await page.waitForFunction(() => !window.book.animating);
   expect(await page.evaluate(() => window.events.filter((e) => e.type.startsWith('turn')).map((e) => e.type))).toEqual(['turnstart', 'turned']);
   expect(await page.evaluate(() => window.book.page)).toBe(3);
   expect((await texturesMatchCache(page)).missing).toEqual([]);
@@ -616,6 +617,9 @@ function trackEmbind(page) {
     const { loadEngine } = await import('/web/src/engine.js');
     const engine = await loadEngine();
     window.engine = engine;
+    // One Book made and deleted before the baseline: the allocator's first growth of the heap keeps a
+    // region header (12 bytes in this build) that belongs to no book. Later books reuse that room.
+    engine.Book.create({ pageCount: 2 }).delete();
     window.embindMade = [];
     for (const name of ['Book', 'BookRenderer']) {
       const create = engine[name].create;
@@ -650,15 +654,15 @@ test('browser: calls during a turn queue; destroy() mid-turn leaves no animation
   await openBook(page, { pages: 10, display: 'double', duration: 800 });
   const during = await page.evaluate(async () => {
     const book = window.book;
-    window.bookContext = book._view.canvas.getContext('webgl2');
+    window.bookContext = book.surface.canvas.getContext('webgl2');
     const first = book.next();
     const queued = [book.next(), book.flip(7)];  // asked mid-turn: they wait their turn
     await new Promise((resolve) => {
-      const check = () => ((book._view.book.frame().find((leaf) => !leaf.resting)?.curl.rho ?? 0) > 0.2 ? resolve() : setTimeout(check, 20));
+      const check = () => ((book.surface.book.frame().find((leaf) => !leaf.resting)?.curl.rho ?? 0) > 0.2 ? resolve() : setTimeout(check, 20));
       check();
     });
     const inFlight = {
-      animating: book._view.animating, frames: window.held.frames(), listeners: window.held.listeners([book]),
+      animating: book.animating, frames: window.held.frames(), listeners: window.held.listeners([book]),
       observers: window.held.observers(), glObjects: window.held.glObjects(window.bookContext),
     };
     book.destroy();
@@ -714,7 +718,7 @@ test('browser: destroy() mid-drag and while pages load leaves nothing behind eit
     const pages = Array.from({ length: 10 }, (_, i) => (i < 5 ? window.makeNumberedPage(i) : slow(i)));
     const book = await window.Flipbook.create(document.getElementById('container'), { pages, display: 'double', startPage: 1, loadWindow: 1 });
     window.book = book;
-    window.bookContext = book._view.canvas.getContext('webgl2');
+    window.bookContext = book.surface.canvas.getContext('webgl2');
     book.flip(6, { animate: false });  // the slow pages are wanted now
   });
   const at = (fx, fy) => page.evaluate(([fx, fy]) => window.halfPoint(fx, fy), [fx, fy]);
@@ -723,7 +727,7 @@ test('browser: destroy() mid-drag and while pages load leaves nothing behind eit
   await page.mouse.move(corner.x, corner.y);
   await page.mouse.down();
   await page.mouse.move(middle.x, middle.y, { steps: 4 });
-  const dragging = await page.evaluate(() => ({ holding: window.book._view.book.holding(), loading: window.book._cache.loadsInFlight }));
+  const dragging = await page.evaluate(() => ({ holding: window.book.surface.book.holding(), loading: window.book.progress.pending }));
   expect(dragging.holding).toBe(true);
   expect(dragging.loading).toBeGreaterThan(0);
   expect(await page.evaluate(() => { window.book.destroy(); return window.held.frames(); })).toBe(0);
@@ -762,7 +766,7 @@ test('browser: 200 create/destroy cycles keep the JS heap and the wasm heap flat
         const pages = full ? [...canvases.slice(0, 3), blob] : canvases;
         const book = await window.Flipbook.create(document.getElementById('container'), { pages, display: 'double', duration: 50 });
         if (full) {
-          book._view.drawNow();
+          book.surface.drawNow();
           await book.next();
         }
         book.destroy();
@@ -838,7 +842,7 @@ test('browser: the renderer refuses bad arguments at the Embind boundary (page i
   await openReady(page, FIXTURE);
   await openBook(page, { pages: 4, display: 'double', startPage: 1 });
   const refusals = await page.evaluate(() => {
-    const view = window.book._view;
+    const view = window.book.surface;
     const renderer = view.renderer;
     const pixel = new ImageData(1, 1);
     const attempt = (call) => { try { call(); return 'no error'; } catch (error) { return `${error.name}: ${error.message}`; } };
@@ -889,5 +893,5 @@ test('browser: the renderer refuses bad arguments at the Embind boundary (page i
   });
   // Nothing refused changed the renderer: it draws the same pages, and a good capture still works.
   expect(await shownAt(page, SPREAD)).toEqual([1, 2]);
-  expect(await page.evaluate(() => window.book._view.renderer.captureLeaf(window.book._view.book, 0).length)).toBeGreaterThan(0);
+  expect(await page.evaluate(() => window.book.surface.renderer.captureLeaf(window.book.surface.book, 0).length)).toBeGreaterThan(0);
 });

@@ -27,8 +27,8 @@ async function openZoomBook(page) {
 /** The page fraction under a viewport point, from the resting pages' rectangle. */
 function fractionAt(page, point) {
   return page.evaluate(({ x, y }) => {
-    const box = window.book._view.canvas.getBoundingClientRect();
-    const r = window.book._view.restingRect();
+    const box = window.book.surface.canvas.getBoundingClientRect();
+    const r = window.book.restingRect();
     return { fx: (x - box.left - r.x) / r.width, fy: (y - box.top - r.y) / r.height, width: r.width };
   }, point);
 }
@@ -49,11 +49,11 @@ test('browser: Ctrl+wheel zooms about the pointer, a drag pans, clicks and keys 
   expect(await page.evaluate(() => window.events.filter((e) => e.type === 'zoom').length)).toBeGreaterThan(0);
 
   // A drag pans the view by as much as the pointer moved.
-  const rectBefore = await page.evaluate(() => window.book._view.restingRect());
+  const rectBefore = await page.evaluate(() => window.book.restingRect());
   await page.mouse.down();
   await page.mouse.move(point.x - 60, point.y - 30, { steps: 4 });
   await page.mouse.up();
-  const rectAfter = await page.evaluate(() => window.book._view.restingRect());
+  const rectAfter = await page.evaluate(() => window.book.restingRect());
   expect(rectAfter.x - rectBefore.x).toBeCloseTo(-60, 0);
   expect(rectAfter.y - rectBefore.y).toBeCloseTo(-30, 0);
 
@@ -75,7 +75,7 @@ test('browser: Ctrl+wheel zooms about the pointer, a drag pans, clicks and keys 
 
 test('browser: zoomed pages get sharper textures: the zoomSrc of an image page, a page function called for the larger size', async ({ page }) => {
   await openZoomBook(page);
-  const sizeOf = (index) => page.evaluate((i) => window.book._view.pageImageSize(i), index);
+  const sizeOf = (index) => page.evaluate((i) => window.book.surface.pageImageSize(i), index);
   await page.evaluate(() => window.book.flip(3, { animate: false }));  // pages 3 (a function) and 4 open
   await page.evaluate(() => window.settle());
   const before = { image: await sizeOf(4), drawn: await sizeOf(3) };
@@ -86,7 +86,7 @@ test('browser: zoomed pages get sharper textures: the zoomSrc of an image page, 
   expect(after.drawn.width).toBeGreaterThan(before.drawn.width * 2);
   // Back at 1x the textures shrink again once the zoom rests (memory stays bounded).
   await page.evaluate(() => { window.book.zoom = 1; });
-  await page.waitForFunction((w) => window.book._view.pageImageSize(4).width < w, after.image.width);
+  await page.waitForFunction((w) => window.book.surface.pageImageSize(4).width < w, after.image.width);
   console.log(`zoom 3x: page texture ${before.image.width} -> ${after.image.width} px wide (zoomSrc), `
     + `${before.drawn.width} -> ${after.drawn.width} (page function)`);
 });

@@ -7,6 +7,15 @@ import { ContextBudget, chooseContextToRelease } from '../../web/src/context-bud
 
 globalThis.requestAnimationFrame ??= (callback) => setTimeout(() => callback(performance.now()), 0);
 
+// Node has no IntersectionObserver: this one keeps the lease's callback on the canvas it observes, so a
+// test reports a book in or out of view as the browser would.
+globalThis.IntersectionObserver = class {
+  constructor(callback) { this.callback = callback; }
+  observe(target) { target.intersection = this; }
+  disconnect() {}
+};
+const setVisible = (lease, visible) => lease.canvas.intersection.callback([{ isIntersecting: visible }]);
+
 const tasks = (n = 4) => new Promise((resolve) => {
   const step = (left) => (left === 0 ? resolve() : setTimeout(() => step(left - 1), 0));
   step(n);
@@ -98,11 +107,11 @@ test('node: a parked book scrolled into view takes its context back from the boo
   const a = book(budget);
   const b = book(budget);
   const c = book(budget);  // parks a
-  a.lease._onVisibility(false);  // a is out of view
-  c.lease._onVisibility(false);
-  b.lease._onVisibility(false);  // b left the view after c: c goes first
+  setVisible(a.lease, false);  // a is out of view
+  setVisible(c.lease, false);
+  setVisible(b.lease, false);  // b left the view after c: c goes first
   await tasks();
-  a.lease._onVisibility(true);
+  setVisible(a.lease, true);
   assert.equal(a.lease.state, 'restoring');
   assert.equal(c.lease.state, 'parked');
   assert.equal(budget.liveCount, 2);
@@ -134,7 +143,7 @@ test('node: a parked book keeps its clock running (turns land without drawing); 
   assert.equal(resting.lease.state, 'restoring');
   assert.equal(newer.lease.state, 'parked');
   // Out of view, a parked book never asks.
-  newer.lease._onVisibility(false);
+  setVisible(newer.lease, false);
   newer.view.position = 5;
   newer.lease.demand();
   assert.equal(newer.lease.state, 'parked');
@@ -167,14 +176,14 @@ test('node: a book parked while in view takes a context back once another book r
   const budget = new ContextBudget({ maxLive: 2 });
   // New books count as visible until their first report: the third admitted parks the first, in view.
   const a = book(budget);
-  a.lease._onVisibility(true);  // its report comes before it is parked: nothing changes for it later
+  setVisible(a.lease, true);  // its report comes before it is parked: nothing changes for it later
   const b = book(budget);
   const c = book(budget);
   assert.equal(a.lease.state, 'parked');
   await tasks();
-  b.lease._onVisibility(true);
+  setVisible(b.lease, true);
   assert.equal(a.lease.state, 'parked', 'every live book is in view: the budget is full');
-  c.lease._onVisibility(false);
+  setVisible(c.lease, false);
   assert.equal(a.lease.state, 'restoring', 'the book out of view gave way');
   assert.equal(c.lease.state, 'parked');
   await tasks(6);
@@ -184,9 +193,9 @@ test('node: a book parked while in view takes a context back once another book r
   // A live book destroyed: a parked book in view takes the freed context.
   const full = new ContextBudget({ maxLive: 1 });
   const x = book(full);
-  x.lease._onVisibility(true);
+  setVisible(x.lease, true);
   const y = book(full);  // parks x, in view
-  y.lease._onVisibility(true);
+  setVisible(y.lease, true);
   assert.equal(x.lease.state, 'parked', 'the one context is held by a book in view');
   await tasks();
   y.lease.dispose();

@@ -59,9 +59,9 @@ function showSchedule(t) {
 }
 
 function showWhere() {
-  const first = book.page;
+  const open = book.openPages;  // as the book's live region says them
+  const [first, last] = [open[0], open[open.length - 1]];
   const count = book.pageCount;
-  const last = Math.min(count - 1, first + (book.display === 'single' || first === 0 ? 0 : 1));
   $('where').textContent = first === last ? `Page ${first + 1} of ${count}` : `Pages ${first + 1}–${last + 1} of ${count}`;
 }
 

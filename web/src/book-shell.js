@@ -1,5 +1,6 @@
 // The elements a Flipbook puts in its container: a focusable region that holds the canvas, a polite
 // live region announcing the open pages, and visually hidden text of those pages for screen readers.
+import { keyShortcuts } from './input-keys.js';
 
 const FOCUS_RING_CSS = `
 .conecurl-book:focus { outline: none; }
@@ -10,28 +11,6 @@ const FOCUS_RING_CSS = `
 // Out of sight but read by screen readers (the usual clip pattern).
 const VISUALLY_HIDDEN = 'position:absolute;width:1px;height:1px;margin:-1px;padding:0;border:0;'
   + 'overflow:hidden;clip:rect(0 0 0 0);clip-path:inset(50%);white-space:nowrap';
-const KEYS_OF_DIRECTION = {
-  ltr: 'ArrowRight ArrowLeft PageDown PageUp Home End',
-  rtl: 'ArrowLeft ArrowRight PageDown PageUp Home End',
-  vertical: 'ArrowDown ArrowUp PageDown PageUp Home End',
-};
-
-const TURN_KEYS = {
-  ltr: { ArrowRight: 'forward', ArrowLeft: 'backward' },
-  rtl: { ArrowLeft: 'forward', ArrowRight: 'backward' },
-  vertical: { ArrowDown: 'forward', ArrowUp: 'backward' },
-};
-const COMMON_KEYS = { PageDown: 'forward', PageUp: 'backward', Home: 'first', End: 'last' };
-
-/**
- * What a keydown on the book asks for: 'forward', 'backward', 'first', 'last', or null (not a key of
- * the book, or one with Ctrl, Alt or Meta, which stays the browser's).
- */
-export function actionForKey(event, direction) {
-  if (event.defaultPrevented || event.altKey || event.ctrlKey || event.metaKey) return null;
-  return TURN_KEYS[direction][event.key] || COMMON_KEYS[event.key] || null;
-}
-
 let sharedSheet = null;
 
 // A :focus-visible rule cannot be an inline style. A constructed sheet adopted by the container's
@@ -67,7 +46,7 @@ export function createShell(container, { label, direction }) {
   root.setAttribute('role', 'region');
   root.setAttribute('aria-roledescription', 'book');
   root.setAttribute('aria-label', label);
-  root.setAttribute('aria-keyshortcuts', KEYS_OF_DIRECTION[direction]);
+  root.setAttribute('aria-keyshortcuts', keyShortcuts(direction));
   root.style.cssText = 'position:relative;width:100%;height:100%';
 
   const canvas = document.createElement('canvas');

@@ -32,9 +32,24 @@ export class BookView {
   readonly book: Book;
   /** Null after destroy(). */
   readonly renderer: BookRenderer | null;
+  /** The surface kind the book controller sees (a CanvasSurface is 'canvas'). */
+  readonly kind: 'webgl';
   readonly pageCount: number;
+  readonly display: 'single' | 'double';
   /** Where the book settles once turns in flight land: a spread (double) or a page (single). */
   readonly position: number;
+  lastPosition(): number;
+  positionOfPage(page: number): number;
+  firstVisiblePage(): number;
+  /** Pages drawn now: the resting ones and both sides of every leaf in flight. */
+  pagesOnScreen(): number[];
+  /** View magnification, 1 to 4. */
+  readonly zoom: number;
+  readonly maxTextureSize: number;
+  /** The book's share of the page's WebGL contexts (context-budget.js), if it takes part in one. */
+  contextLease: object | null;
+  /** The leaves lying open at the settled position, as the engine's camera places them (CSS px, zoom included). */
+  openPagePlaces(): Array<{ page: number; x: number; y: number; width: number; height: number }>;
   readonly animating: boolean;
   /** Frames drawn so far: the book draws only while something moves or changes. */
   readonly framesDrawn: number;
@@ -67,6 +82,8 @@ export class BookView {
   /** Resolves true once every turn has landed, false if the book cannot turn that way. */
   next(): Promise<boolean>;
   prev(): Promise<boolean>;
+  /** next() or prev() by name. */
+  turn(direction: 'forward' | 'backward'): Promise<boolean>;
   jumpTo(position: number): void;
   /** 'single' or 'double' from now on, keeping the first visible page; the renderer and page textures stay. */
   setDisplay(display: 'single' | 'double'): void;

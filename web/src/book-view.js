@@ -1,62 +1,17 @@
 // One book on a canvas: JS ergonomics over the wasm Book (state, animation), BookRenderer (GL) and
 // FrameLoop (the clock): canvas sizing, page uploads, and a render loop that runs only while something
-// moves and costs one call into the engine per frame.
+// moves and costs one call into the engine per frame. It is the book controller's WebGL surface.
+// Over 350 lines because it is also the public lower layer (README "Using the engine from JavaScript"),
+// member by member a few lines over the engine, with the context-loss path that keeps it drawing.
 import { loadEngine } from './engine.js';
 import { PageLoadError } from './page-loader.js';
+import { atSize, naturalSize, uploadSizeFor } from './texture-upload.js';
+
+export { uploadSizeFor };
 
 const BINDING_OF_DIRECTION = { ltr: 'left', rtl: 'right', vertical: 'top' };
 const TURN_REFUSED = 2;  // FrameLoop.requestTurn: 0 started, 1 queued, 2 refused
 let nextTargetId = 1;
-
-function naturalSize(source) {
-  const width = source.naturalWidth || source.videoWidth || source.width;
-  const height = source.naturalHeight || source.videoHeight || source.height;
-  if (!(width > 0 && height > 0)) throw new TypeError('conecurl: page image has no size (not loaded yet?)');
-  return { width, height };
-}
-
-/**
- * The size a `width` x `height` image is uploaded at: scaled down (never up), keeping its aspect, to
- * the smallest size that still covers `cover` (when given), and to fit the GPU's MAX_TEXTURE_SIZE.
- */
-export function uploadSizeFor(width, height, { cover, maxTextureSize }) {
-  let scale = 1;
-  if (cover && cover.width > 0 && cover.height > 0) {
-    scale = Math.min(1, Math.max(cover.width / width, cover.height / height));
-  }
-  scale = Math.min(scale, maxTextureSize / width, maxTextureSize / height);
-  const fit = (length) => Math.max(1, Math.min(maxTextureSize, Math.round(length * scale)));
-  return { width: fit(width), height: fit(height) };
-}
-
-let scratch = null;  // one canvas for every book's scaling: texImage2D copies it before it is reused
-
-/**
- * What the texture is uploaded from: the source itself when it already has the size wanted, else the
- * source drawn at that size on a scratch canvas. The pixels never pass through getImageData or the
- * wasm heap: the browser copies them from there into the texture.
- */
-function atSize(source, natural, { width, height }) {
-  if (natural.width === width && natural.height === height) return source;
-  let drawable = source;
-  if (source instanceof ImageData) {  // drawImage cannot scale ImageData: stage it as a bitmap-sized canvas
-    drawable = makeCanvas(source.width, source.height);
-    drawable.getContext('2d').putImageData(source, 0, 0);
-  }
-  scratch ??= makeCanvas(width, height);
-  if (scratch.width !== width || scratch.height !== height) Object.assign(scratch, { width, height });
-  const context = scratch.getContext('2d');
-  context.imageSmoothingQuality = 'high';  // a big reduction stays legible, not aliased
-  context.clearRect(0, 0, width, height);
-  context.drawImage(drawable, 0, 0, width, height);
-  return scratch;
-}
-
-function makeCanvas(width, height) {
-  return typeof OffscreenCanvas === 'function'
-    ? new OffscreenCanvas(width, height)
-    : Object.assign(document.createElement('canvas'), { width, height });
-}
 
 export class BookView {
   /**
@@ -101,6 +56,8 @@ export class BookView {
     this._ticks = { moving: engine.TICK_MOVING, settled: engine.TICK_SETTLED, pagesChanged: engine.TICK_PAGES_CHANGED };
     /** Called after a frame whose pages on screen changed (a leaf lifted or landed): residency follows. */
     this.onPagesChanged = null;
+    /** The book's share of the page's WebGL contexts (context-budget.js), told when the view wants to draw. */
+    this.contextLease = null;
     this._uploads = [];          // page images waiting for a frame while leaves move: one a frame
     this._moving = false;        // the last frame still moved
     this._sources = new Map();   // page -> { source, cover }, to upload again after a context loss
@@ -119,9 +76,23 @@ export class BookView {
     this.requestRender();
   }
 
+  /** Which surface this is (book-controller.js drives a 'webgl' or a 'canvas' one). */
+  get kind() { return 'webgl'; }
   get pageCount() { return this.book.pageCount(); }
+  /** 'single' or 'double'. */
+  get display() { return this.book.isSingle() ? 'single' : 'double'; }
   /** Where the book settles once turns in flight land: a spread (double) or a page (single). */
   get position() { return this.book.position(); }
+  lastPosition() { return this.book.lastPosition(); }
+  /** The position that shows page `page`. */
+  positionOfPage(page) { return this.book.positionOfPage(page); }
+  /** The first visible page at the settled position. */
+  firstVisiblePage() { return this.book.firstVisiblePage(); }
+  /** Pages drawn now: the resting ones and both sides of every leaf in flight. */
+  pagesOnScreen() { return this.engine.pagesOnScreen(this.book); }
+  /** View magnification, 1 to MAX_ZOOM. */
+  get zoom() { return this.book.zoom().scale; }
+  get maxTextureSize() { return this.renderer.maxTextureSize(); }
   get animating() { return this.book.animating(); }
   /** Frames drawn so far (the book draws only while something moves). */
   get framesDrawn() { return this.renderer.framesDrawn(); }
@@ -205,6 +176,18 @@ export class BookView {
   }
 
   /**
+   * The leaves lying open at the settled position, as the engine's camera places them: for each, its
+   * visible page (-1 for a blank back) and its rectangle in CSS pixels from the canvas's top-left,
+   * turned side first, zoom included.
+   */
+  openPagePlaces() {
+    const { width } = this.fitCanvas();
+    const toCss = this.canvas.clientWidth / width;
+    return this.book.openPagePlaces(width, this.canvas.height).map(({ page, x, y, width: w, height: h }) => (
+      { page, x: x * toCss, y: y * toCss, width: w * toCss, height: h * toCss }));
+  }
+
+  /**
    * The drawing-buffer pixel under a viewport point, and the buffer's size: the engine's camera (drag
    * solve, zoom) works in these, the DOM in CSS pixels.
    */
@@ -243,8 +226,8 @@ export class BookView {
    * Turns one leaf forward; resolves true when every turn in flight has landed, false if the book
    * cannot turn that way. A turn asked for while the leaf it needs is still moving waits its turn.
    */
-  next() { return this._turn('forward'); }
-  prev() { return this._turn('backward'); }
+  next() { return this.turn('forward'); }
+  prev() { return this.turn('backward'); }
 
   /**
    * Shows 'single' or 'double' pages from now on, keeping the first visible page in view; turns in
@@ -293,13 +276,13 @@ export class BookView {
   readPixels() { return this.renderer.readPixels(); }
 
   requestRender() {
-    this._contextLease?.demand();  // Flipbook's share of the page's WebGL contexts (context-budget.js)
+    this.contextLease?.demand();  // Flipbook's share of the page's WebGL contexts (context-budget.js)
     if (!this._frame && this.renderer && (!this._lost || this._parked)) this._frame = requestAnimationFrame((now) => this._tick(now));
   }
 
   // The context was handed back on purpose (context-budget.js parks a book out of view): unlike an
   // accidental loss, the clock runs on, so turns land and resolve, and nothing is drawn.
-  get _parked() { return this._lost && this._contextLease?.state === 'parked'; }
+  get _parked() { return this._lost && this.contextLease?.state === 'parked'; }
 
   /**
    * Cancels animation, removes listeners, deletes every GL object and the wasm objects. With
@@ -328,7 +311,8 @@ export class BookView {
     for (const resolve of this._settled.splice(0)) resolve();
   }
 
-  _turn(direction) {
+  /** next() or prev() by name: 'forward' or 'backward'. */
+  turn(direction) {
     this._poseFrom = null;
     // performance.now() and animation frames share a clock: the turn runs from now, not from its first frame.
     if (this._loop.requestTurn(direction, performance.now()) === TURN_REFUSED) return Promise.resolve(false);

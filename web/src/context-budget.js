@@ -145,7 +145,7 @@ export class ContextLease {
   /** The BookView now drawing on the canvas (a new one after a display switch). */
   attach(view) {
     this.view = view;
-    view._contextLease = this;
+    view.contextLease = this;
     if (!this._gl) {
       this._gl = this.canvas.getContext('webgl2');  // the renderer's context: made already
       // Kept: a lost context gives out no extensions, and this one must restore it.
@@ -177,7 +177,7 @@ export class ContextLease {
     this.canvas.removeEventListener('webglcontextrestored', this._onRestored);
     this._budget._forget(this);
     this._clearSnapshot();
-    if (this.view) this.view._contextLease = null;
+    if (this.view) this.view.contextLease = null;
     this.view = null;
     // A canvas's context otherwise lives until the canvas is garbage collected, and counts until then.
     if (this._gl && !this._gl.isContextLost()) this._loseContext?.loseContext();

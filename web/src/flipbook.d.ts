@@ -1,5 +1,7 @@
 // Types of Flipbook, the public entry point. Kept beside flipbook.js.
 import type { StaticBook } from './static-book.js';
+import type { BookView } from './book-view.js';
+import type { CanvasSurface } from './canvas-surface.js';
 
 export type PageImage = string | HTMLImageElement | HTMLCanvasElement | ImageBitmap | Blob;
 /**
@@ -135,12 +137,21 @@ export interface FlipbookEventMap {
   error: CustomEvent<{ error: FlipbookCreateError }>;
 }
 
-export class Flipbook extends EventTarget {
-  /**
-   * Rejects with a TypeError naming a bad option (nothing is left in the container), or with a
-   * FlipbookCreateError when WebGL2 or the engine is unavailable (its `fallback` shows the pages).
-   */
-  static create(container: HTMLElement, options: FlipbookOptions): Promise<Flipbook>;
+/** A leaf lying open at the settled position, and where it lies on the canvas (CSS px from its top-left). */
+export interface PagePlace {
+  /** The page it shows; -1 for a leaf's blank back. */
+  page: number;
+  x: number;
+  y: number;
+  width: number;
+  height: number;
+}
+
+/**
+ * What every book is (book-controller.js): Flipbook draws it with WebGL2, StaticBook on a 2D canvas.
+ * Same members, input, loading, links, zoom and events on both.
+ */
+export class BookController extends EventTarget {
   readonly pageCount: number;
   /** Where page `index` stands now (RangeError for an index outside the book). */
   pageState(index: number): PageState;
@@ -150,6 +161,21 @@ export class Flipbook extends EventTarget {
   readonly residentPages: number[];
   /** Where the open pages lie on the canvas, in CSS pixels from its top-left (both places of a spread in double). */
   restingRect(): { x: number; y: number; width: number; height: number };
+  /** Each leaf lying open at the settled position, turned side first, as the engine (or layout.js) places it; zoom included. */
+  openPagePlaces(): PagePlace[];
+  /** The pages open at the settled position, as the live region announces them (one, or two in double). */
+  readonly openPages: number[];
+  /** Pages loaded or failed so far, the page count, and loads running now (what `progress` said last). */
+  readonly progress: { loaded: number; total: number; pending: number };
+  /** The options in effect, defaults filled in (a frozen copy). */
+  readonly options: Readonly<Required<Omit<FlipbookOptions, 'pdf' | 'pdfWorkerSrc' | 'wasmUrl' | 'on'>>> & FlipbookOptions;
+  /**
+   * What draws the book, for tools and tests (reading pixels, counting frames): a BookView (WebGL2) or
+   * a CanvasSurface (still pages); null after destroy(). Drive the book through its own members.
+   */
+  readonly surface: BookView | CanvasSurface | null;
+  /** Resolves once no page is loading (and no click waits to tell a double-click). */
+  whenIdle(): Promise<void>;
   /** First visible page at the settled position; after destroy(), the page the book was left at. */
   readonly page: number;
   /** Follows the container's aspect when the option is 'auto'; after destroy(), as it was last. */
@@ -174,7 +200,7 @@ export class Flipbook extends EventTarget {
   /**
    * View magnification, 1 (the whole book) to 4; setting it zooms about the middle of the book
    * (RangeError outside 1..4). While above 1, clicks, swipes, drags and arrow keys do not turn pages;
-   * next(), prev() and flip() zoom back out first.
+   * next(), prev() and flip() zoom back out first. Still pages (StaticBook) zoom the same way.
    */
   zoom: number;
   /**
@@ -195,4 +221,12 @@ export class Flipbook extends EventTarget {
     options?: boolean | AddEventListenerOptions): void;
   addEventListener(type: string, listener: EventListenerOrEventListenerObject | null,
     options?: boolean | AddEventListenerOptions): void;
+}
+
+export class Flipbook extends BookController {
+  /**
+   * Rejects with a TypeError naming a bad option (nothing is left in the container), or with a
+   * FlipbookCreateError when WebGL2 or the engine is unavailable (its `fallback` shows the pages).
+   */
+  static create(container: HTMLElement, options: FlipbookOptions): Promise<Flipbook>;
 }

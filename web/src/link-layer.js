@@ -13,10 +13,12 @@ export function isSafeHref(href) {
 }
 
 /**
+ * An overlay layer (book-controller.js lays it over the open pages while the book rests).
  * @param {HTMLElement} root  the book's element (position: relative); the layer covers it
- * @param {(link: { page: number, href: string, toPage?: number, title?: string }, event: MouseEvent) => void} onActivate
+ * @param {{ linksOf: (page: number) => Array<{ rect: number[], href: string, toPage?: number, title?: string }> | undefined,
+ *           onActivate: (link: { page: number, href: string, toPage?: number, title?: string }, event: MouseEvent) => void }} book
  */
-export function createLinkLayer(root, onActivate) {
+export function createLinkLayer(root, { linksOf, onActivate }) {
   const layer = document.createElement('div');
   layer.className = 'conecurl-links';
   layer.style.cssText = 'position:absolute;inset:0;pointer-events:none;overflow:hidden';
@@ -25,16 +27,18 @@ export function createLinkLayer(root, onActivate) {
 
   return {
     /**
-     * Lays the links of the open pages over them. `placed`: for each open page, its rectangle in CSS
-     * pixels of the root and its links ({ rect: [x, y, width, height] as fractions of the page,
-     * href, toPage, title }).
+     * Lays the links of the open pages over them. `places`: for each open page, its rectangle in CSS
+     * pixels of the root ({ page, x, y, width, height }); a link's rect is [x, y, width, height] as
+     * fractions of its page.
      */
-    show(placed) {
+    place(places) {
+      const placed = places.map((place) => ({ place, links: linksOf(place.page) ?? [] })).filter(({ links }) => links.length > 0);
       const key = JSON.stringify(placed);
       if (key === shown) return;
       shown = key;
       const anchors = [];
-      for (const { page, rect, links } of placed) {
+      for (const { place, links } of placed) {
+        const { page } = place;
         for (const link of links) {
           if (link.toPage === undefined && !isSafeHref(link.href)) continue;  // javascript: and the like never
           const [fx, fy, fw, fh] = link.rect;
@@ -44,8 +48,8 @@ export function createLinkLayer(root, onActivate) {
           if (link.title) a.title = link.title;
           a.textContent = link.title || (link.toPage !== undefined ? `Go to page ${link.toPage + 1}` : link.href);
           a.style.cssText = `position:absolute;pointer-events:auto;cursor:pointer;color:transparent;overflow:hidden;`
-            + `left:${rect.x + fx * rect.width}px;top:${rect.y + fy * rect.height}px;`
-            + `width:${fw * rect.width}px;height:${fh * rect.height}px`;
+            + `left:${place.x + fx * place.width}px;top:${place.y + fy * place.height}px;`
+            + `width:${fw * place.width}px;height:${fh * place.height}px`;
           a.dataset.page = String(page);
           a.addEventListener('click', (event) => onActivate({ page, ...link }, event));
           anchors.push(a);

@@ -1,8 +1,9 @@
 // Which pages keep a texture: the bounded page cache of Flipbook as plain functions (no DOM, no GL),
 // so the policy is tested on its own and GPU memory does not grow with the length of the book.
 
-/** Turns the book can have in flight at once (kMaxTurnsInFlight in cpp/core/book.hpp). */
-export const MAX_TURNS_IN_FLIGHT = 6;
+import { MAX_TURNS_IN_FLIGHT } from './layout.js';
+
+export { MAX_TURNS_IN_FLIGHT };  // turns the book can have in flight at once (the engine's constant)
 
 /**
  * Most page textures a book keeps: the pages within `loadWindow` of the open spread plus a little
@@ -98,6 +99,11 @@ export class PageCache {
   endLoad() {
     this.loadsInFlight--;
     if (this.loadsInFlight === 0) this.releaseWaiters();
+    return this.progress;
+  }
+
+  /** { loaded, total, pending }: pages loaded or failed, the page count, loads running now. */
+  get progress() {
     return { loaded: this._settled, total: this._states.length, pending: this.loadsInFlight };
   }
 

@@ -8,8 +8,8 @@ export async function mount(container, { urls, display, duration, extra = {} }) 
   const engine = await loadEngine();  // the module every book on the page shares: its memory
   const memory = Object.values(engine.asm).find((value) => value instanceof WebAssembly.Memory);
   return {
-    /** The BookView underneath (internal), for scripts/bench/profile-gpu.mjs. */
-    view: () => book._view,
+    /** The BookView drawing the book (its public `surface`), for scripts/bench/profile-gpu.mjs. */
+    view: () => book.surface,
     async turn() {
       if (!(await book.next())) throw new Error(`conecurl: could not turn forward from page ${book.page}`);
     },

@@ -1,0 +1,45 @@
+// Node tests of the layering rules that review alone lets slip: nothing outside web/src reads a
+// module's `_private` fields (tests, demo, scripts drive the public API), and every file under
+// web/src holds one concern, which shows as a short file (over 350 lines it says why at its top).
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readdirSync, readFileSync, statSync } from 'node:fs';
+import { join, relative } from 'node:path';
+
+const root = new URL('../..', import.meta.url).pathname;
+const SKIP = new Set(['node_modules', 'references', 'test-results', 'dist', 'build']);
+
+function filesUnder(dir, extensions) {
+  const found = [];
+  for (const name of readdirSync(dir)) {
+    if (SKIP.has(name)) continue;
+    const path = join(dir, name);
+    if (statSync(path).isDirectory()) found.push(...filesUnder(path, extensions));
+    else if (extensions.some((ext) => name.endsWith(ext))) found.push(path);
+  }
+  return found;
+}
+
+test('node: no test, demo or script reads a field or method that starts with _ (they use the public API)', () => {
+  const files = ['tests', 'web/demo', 'scripts'].flatMap((dir) => filesUnder(join(root, dir), ['.js', '.mjs', '.html', '.ts']));
+  assert.ok(files.length > 40, `scanned ${files.length} files`);
+  const reads = [];
+  for (const file of files) {
+    if (file.endsWith('source-rules.test.mjs')) continue;  // this file names the pattern
+    readFileSync(file, 'utf8').split('\n').forEach((line, i) => {
+      // `._x` as a property access; `window.__flag` (two underscores: the page's own test switches) is not one.
+      for (const match of line.matchAll(/\.(_[A-Za-z]\w*)/g)) reads.push(`${relative(root, file)}:${i + 1}: ${match[1]}`);
+    });
+  }
+  assert.deepEqual(reads, []);
+});
+
+test('node: every file under web/src has at most 350 lines, or says at its top why it has more', () => {
+  const files = filesUnder(join(root, 'web/src'), ['.js']);
+  assert.ok(files.length > 20, `scanned ${files.length} files`);
+  const long = files.filter((file) => {
+    const lines = readFileSync(file, 'utf8').split('\n');
+    return lines.length > 350 && !lines.slice(0, 8).some((line) => /Over 350 lines because/.test(line));
+  }).map((file) => `${relative(root, file)} (${readFileSync(file, 'utf8').split('\n').length} lines)`);
+  assert.deepEqual(long, []);
+});

@@ -1,0 +1,368 @@
+// The book controller: what a book is doing and what it tells its user, whichever surface draws it.
+// It holds the options, the pages and their states (page-store.js), the turns asked for, zoom, size and
+// events; input modules (book-input.js) and overlay layers attach to it; a surface (BookView over the
+// wasm engine, or the 2D CanvasSurface) animates and draws. Flipbook and StaticBook are this class over
+// each surface; the calls a surface answers are listed in docs/architecture.md.
+// Over 350 lines because it is the whole public API of both book classes, each member documented;
+// the work behind them is in the modules it imports.
+import { createShell } from './book-shell.js';
+import { BookEvents } from './book-events.js';
+import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
+import { PageStore } from './page-store.js';
+import { createLinkLayer } from './link-layer.js';
+import { attachInput } from './book-input.js';
+import { watchSize } from './size-watch.js';
+import { MAX_ZOOM, displayFor, openPages } from './layout.js';
+
+const REFIT_DELAY_MS = 150;  // images are fitted to a new size or zoom once it has come to rest
+const ZOOMED = 1.001;        // scales above this count as zoomed in
+
+export class BookController extends EventTarget {
+  /**
+   * @param {HTMLElement} container
+   * @param {object} settings  checked options with defaults (options.js validateOptions)
+   * @param {object|null} pdf  an open PDF whose pages are the book's (pdf-pages.js): the book owns it
+   */
+  constructor(container, settings, pdf = null) {
+    super();
+    this._container = container;
+    this._settings = settings;
+    this._pdf = pdf;
+    // Entries as given (a PDF's fill in their alt and links as their pages render), links in one form.
+    this._pages = pageEntries(settings.pages);
+    this._events = new BookEvents(this, settings.on);  // `on` listeners first; events of create() held
+    this._destroyed = false;
+    this._flips = 0;  // counts flip() calls: a later one stops an earlier one's leaf-by-leaf turning
+    this._surface = null;
+    this._shell = createShell(container, { label: settings.label, direction: settings.direction });
+    this._canvas = this._shell.canvas;
+    this._restingTouchAction = this._canvas.style.touchAction;
+    this._store = new PageStore(this._pages, settings, {
+      surface: () => this._surface,
+      openPages: () => this.openPages,
+      emit: (type, detail) => this._emit(type, detail),
+      // A source may have learned its page's text and links while making it (a PDF page). Not while a
+      // leaf moves or is lifted by a hover hint: the landing, or the hint's end, shows them again.
+      onOpenPageLoaded: (index) => {
+        if (!this._surface.animating && this.openPages.includes(index)) this._showOpenPages();
+      },
+    });
+    this._layers = [createLinkLayer(this._shell.root, {
+      linksOf: (page) => this._pages[page].links,
+      onActivate: (link, event) => this._onLink(link, event),
+    })];
+    this._reducedMotion = typeof matchMedia === 'function' ? matchMedia('(prefers-reduced-motion: reduce)') : null;
+  }
+
+  get pageCount() { return this._pages.length; }
+  /** Where page `index` stands: { state: 'idle' | 'loading' | 'loaded' | 'failed', reason?, error? }. */
+  pageState(index) { return this._store.pageState(index); }
+  /** The first visible page at the settled position (after destroy(), where the book was left). */
+  get page() { return this._surface ? this._surface.firstVisiblePage() : (this._finalPage ?? 0); }
+  get display() {
+    return this._surface?.display ?? this._finalDisplay ?? (this._settings.display === 'single' ? 'single' : 'double');
+  }
+  /** The pages open at the settled position, as the live region announces them. */
+  get openPages() {
+    if (!this._surface) return [this.page];
+    return openPages(this._surface.position, this.pageCount, this._surface.display);
+  }
+  /** The focusable element the book made in its container (holds the canvas). */
+  get element() { return this._shell.root; }
+  /** What draws the book: a BookView (WebGL2) or a CanvasSurface (still pages); null after destroy(). */
+  get surface() { return this._surface; }
+  /** A leaf is moving or waiting to (turns in flight, a held page); false after destroy(). */
+  get animating() { return Boolean(this._surface?.animating); }
+  /** Pages whose images are loaded and kept, in page order. */
+  get residentPages() { return this._store.residentPages; }
+  /** Pages loaded or failed so far, the page count, and loads running now (as the `progress` event says). */
+  get progress() { return this._store.progress; }
+  /** The options in effect, defaults filled in (a frozen copy; setOptions() changes the live ones). */
+  get options() {
+    const { pageAspect, ...options } = this._settings;  // pageAspect: the PDF's page shape, not an option
+    return Object.freeze(options);
+  }
+  /** Where the open pages lie on the canvas, in CSS pixels (both places of a spread in double). */
+  restingRect() { return this._surface.restingRect(); }
+  /** The leaves lying open at the settled position: { page (-1: a blank back), x, y, width, height } in CSS px. */
+  openPagePlaces() { return this._surface.openPagePlaces(); }
+  /** Resolves once no page is loading (and no click waits to see if it is a double-click). */
+  whenIdle() {
+    if (this._input?.pendingClick) {
+      return new Promise((resolve) => setTimeout(resolve, this._input.clickWaitMs + 20)).then(() => this.whenIdle());
+    }
+    return this._store.whenIdle();
+  }
+
+  next() { return this._turn('forward'); }
+  prev() { return this._turn('backward'); }
+
+  /** View magnification, 1 (the whole book) to MAX_ZOOM. Setting it zooms about the middle of the book. */
+  get zoom() { return this._surface ? this._surface.zoom : 1; }
+  set zoom(scale) {
+    this._alive();
+    if (!(Number.isFinite(scale) && scale >= 1 && scale <= MAX_ZOOM)) {
+      throw new RangeError(`conecurl: zoom must be a number from 1 to ${MAX_ZOOM}, got ${String(scale)}`);
+    }
+    this._zoomAboutCentre(scale);
+  }
+
+  /**
+   * Shows, frozen, the exact frame of the next ('forward') or previous ('backward') turn at progress
+   * t in [0, 1]: for scrubbers and figures. Returns false at the end of the book (and on still pages).
+   */
+  previewTurn(direction, t) {
+    this._alive();
+    if (direction !== 'forward' && direction !== 'backward') {
+      throw new TypeError(`conecurl: previewTurn direction must be 'forward' or 'backward', got ${String(direction)}`);
+    }
+    if (!(Number.isFinite(t) && t >= 0 && t <= 1)) throw new RangeError(`conecurl: previewTurn t must be in [0, 1], got ${String(t)}`);
+    const shown = this._surface.showTurn(direction, t);
+    this._store.update();  // the pages the posed leaf shows
+    return shown;
+  }
+
+  /** Shows page `index`; animated turns (default) go leaf by leaf, else it jumps. */
+  async flip(index, options) {
+    this._alive();
+    const { animate } = checkFlipOptions(options);
+    if (!Number.isInteger(index) || index < 0 || index >= this.pageCount) {
+      throw new RangeError(`conecurl: page ${index} is not in 0..${this.pageCount - 1}`);
+    }
+    // The latest flip wins: an animated flip still under way stops where it is (and resolves).
+    const flip = ++this._flips;
+    const surface = this._surface;
+    if (!animate || !this._animates()) {
+      const target = surface.positionOfPage(index);
+      if (surface.position === target && !surface.animating) return;
+      surface.jumpTo(target);
+      this._store.update();
+      this._landed();
+      return;
+    }
+    for (;;) {
+      const target = this._surface.positionOfPage(index);  // again each leaf: the display may switch
+      if (this._surface.position === target) return;
+      const turned = await this._turn(target > this._surface.position ? 'forward' : 'backward');
+      if (!turned || this._destroyed || flip !== this._flips) return;
+    }
+  }
+
+  /** Switches lighting, shadows and gutter shading on a live book; other options need a new book. */
+  setOptions(options) {
+    this._alive();
+    Object.assign(this._settings, checkLiveOptions(options, this._settings.pages));
+    const { lighting, shadows, gutter } = this._settings;
+    this._surface.setOptions({ lighting, shadows, gutter });
+  }
+
+  destroy() {
+    if (this._destroyed) return;
+    if (this._surface) {
+      this._finalPage = this.page;  // page and display still answer after destroy()
+      this._finalDisplay = this.display;
+    }
+    this._destroyed = true;
+    this._events.drop();
+    this._store.close();
+    this._pdf?.destroy();
+    this._pdf = null;
+    for (const layer of this._layers) layer.remove();
+    this._input?.stop();
+    this._stopWatchingSize?.();
+    clearTimeout(this._refitTimer);
+    this._surface?.destroy({ releaseContext: true });  // the canvas goes: give its WebGL context up now
+    this._surface = null;
+    this._shell.remove();
+  }
+
+  // ---- building: the subclass makes the surface ----------------------------------------------
+
+  /** The surface for `display` on this._canvas (Flipbook: a BookView; StaticBook: a CanvasSurface). */
+  _makeSurface() { throw new Error('conecurl: BookController is abstract: use Flipbook or StaticBook'); }
+
+  /** Whether turns on this surface animate (a still surface cuts to the next spread). */
+  _animates() { return this._surface.kind === 'webgl' && !this._reducedMotion?.matches; }
+
+  async _build() {
+    this._layoutSize = this._cssSize();
+    this._surface = this._makeSurface(displayFor(this._settings.display, this._layoutSize));
+    // While leaves move, the pages they show change (turns that waited start late): the surface says when.
+    this._surface.onPagesChanged = () => { if (!this._destroyed) this._store.update(); };
+    this._surface.jumpTo(this._surface.positionOfPage(this._settings.startPage));
+    this._attachInput();
+    this._stopWatchingSize = watchSize(this._shell.root, this._layoutSize, (size) => {
+      if (this._destroyed) return;
+      this._layoutSize = size;
+      this._relayout();
+    });
+    this._showOpenPages();
+    this._store.update();
+    await this.whenIdle();
+    this._emit('ready', { page: this.page });
+  }
+
+  // ---- input: each module in its own file (book-input.js), told what it may do --------------
+
+  _attachInput() {
+    this._input = attachInput({
+      canvas: this._canvas, element: this._shell.root, surface: this._surface, direction: this._settings.direction,
+    }, {
+      zoom: () => this.zoom,
+      zoomed: () => this._zoomed(),
+      zoomAbout: (scale, x, y) => this._zoomAbout(scale, x, y),
+      zoomAboutCentre: (scale) => this._zoomAboutCentre(scale),
+      panBy: (dx, dy) => this._panBy(dx, dy),
+      turn: (direction) => { if (!this._destroyed) this._turn(direction).catch(() => {}); },  // input after destroy() is dropped
+      jump: (end) => { this.flip(end === 'first' ? 0 : this.pageCount - 1, { animate: false }).catch(() => {}); },
+      dragStarted: (direction) => {
+        this._hideLayers();
+        this._emit('turnstart', { direction, page: this.page, drag: true });
+        this._store.update();
+      },
+      dragEnded: (completed) => {
+        if (this._destroyed) return;
+        this._store.update();
+        if (completed) {
+          this._landed();
+        } else {
+          this._showOpenPages();
+          this._emit('turncancel', { page: this.page });
+        }
+      },
+      // A corner lifted by hovering fell back: the open pages are those from before it again.
+      hintEnded: () => { if (!this._destroyed) this._showOpenPages(); },
+    });
+  }
+
+  // ---- turning -------------------------------------------------------------------------------
+
+  async _turn(direction) {
+    this._alive();
+    if (this._zoomed()) this._zoomAbout(1, 0, 0);  // a turn asked for by code shows the whole book again
+    if (!this._animates()) return this._jumpOneLeaf(direction);
+    const surface = this._surface;
+    const turning = surface.turn(direction);
+    if (surface.animating) {
+      this._hideLayers();
+      this._emit('turnstart', { direction, page: this.page });
+    }
+    this._store.update();
+    const turned = await turning;
+    if (this._destroyed) return false;
+    this._store.update();
+    if (turned) this._landed();
+    return turned;
+  }
+
+  // Reduced motion, or still pages: a turn is a cut to the next spread, with the same events.
+  _jumpOneLeaf(direction) {
+    const surface = this._surface;
+    const target = surface.position + (direction === 'forward' ? 1 : -1);
+    if (target < 0 || target > surface.lastPosition()) return false;
+    surface.jumpTo(target);
+    this._emit('turnstart', { direction, page: this.page });
+    this._store.update();
+    this._landed();
+    return true;
+  }
+
+  _landed() {
+    this._showOpenPages();
+    this._emit('turned', { page: this.page });
+  }
+
+  // The open pages are shown again: the overlay layers laid over them, the live region and alt text.
+  _showOpenPages() {
+    this._layoutLayers();
+    const pages = this.openPages;
+    this._shell.showOpenPages(pages, this.pageCount, pages.map((i) => this._pages[i].alt));
+  }
+
+  // ---- overlay layers: laid over the open pages while the book rests, hidden while a leaf moves --
+
+  _layoutLayers() {
+    if (this._destroyed || !this._surface) return;
+    if (this._surface.animating) {
+      this._hideLayers();
+      return;
+    }
+    const places = this._surface.openPagePlaces().filter((place) => place.page >= 0);
+    for (const layer of this._layers) layer.place(places);
+  }
+
+  _hideLayers() {
+    for (const layer of this._layers) layer.hide();
+  }
+
+  _onLink(link, event) {
+    const detail = { page: link.page, href: link.href, toPage: link.toPage };
+    const proceed = this.dispatchEvent(new CustomEvent('link', { detail, cancelable: true }));
+    if (link.toPage !== undefined || !proceed) event.preventDefault();
+    if (proceed && link.toPage !== undefined) this.flip(link.toPage).catch(() => {});
+  }
+
+  // ---- size and pixel ratio ------------------------------------------------------------------
+
+  _cssSize() {
+    const { width, height } = this._shell.root.getBoundingClientRect();
+    return { width, height };
+  }
+
+  // The container or the pixel ratio changed: switch single/double for 'auto' (same surface, same
+  // page), draw at the new size, and once resizing rests bring the images to the size now wanted.
+  _relayout() {
+    const display = displayFor(this._settings.display, this._layoutSize);
+    if (display !== this.display) {
+      this._surface.setDisplay(display);
+      this._store.update();
+      this._showOpenPages();
+    }
+    this._surface.sizeChanged();
+    this._refitSoon();
+    this._layoutLayers();
+    this._emit('resize', { ...this._layoutSize, display: this.display });
+  }
+
+  _refitSoon() {
+    clearTimeout(this._refitTimer);
+    this._refitTimer = setTimeout(() => this._store.refit(), REFIT_DELAY_MS);
+  }
+
+  // ---- zoom ------------------------------------------------------------------------------------
+
+  _zoomed() { return this.zoom > ZOOMED; }
+
+  _zoomAboutCentre(scale) {
+    const box = this._canvas.getBoundingClientRect();
+    this._zoomAbout(scale, box.left + box.width / 2, box.top + box.height / 2);
+  }
+
+  /** Zooms to `scale` about a viewport point (the table point under it stays there). */
+  _zoomAbout(scale, clientX, clientY) {
+    if (this._destroyed) return;
+    const before = this.zoom;
+    this._surface.zoomAbout(Math.min(MAX_ZOOM, Math.max(1, scale)), clientX, clientY);
+    const after = this.zoom;
+    this._layoutLayers();
+    // Zoomed in, a finger pans the view; at 1x the browser may scroll the page across the turn again.
+    this._canvas.style.touchAction = after > ZOOMED ? 'none' : this._restingTouchAction;
+    if (after === before) return;
+    this._refitSoon();  // sharp pages once it rests
+    this._emit('zoom', { scale: after });
+  }
+
+  /** Moves the zoomed view by CSS pixels (a pan), as far as the pages still fill it. */
+  _panBy(dxCss, dyCss) {
+    this._surface.panBy(dxCss, dyCss);
+    this._layoutLayers();
+  }
+
+  _emit(type, detail) {
+    if (!this._destroyed) this._events.dispatch(new CustomEvent(type, { detail }));
+  }
+
+  _alive() {
+    if (this._destroyed) throw new Error('conecurl: this flipbook was destroyed');
+  }
+}

@@ -1,0 +1,180 @@
+// A book's pages as the controller keeps them, whichever surface draws them: which are loading,
+// loaded or failed (and why), the images kept for the pages near the open spread (a bounded cache, the
+// least recently wanted let go first), their sizes for the screen, and sharper images when zoomed in.
+import { loadPage, pageFailure } from './page-loader.js';
+import { PageCache } from './page-residency.js';
+import { uploadSizeFor } from './texture-upload.js';
+
+const TEXTURE_OVERSAMPLE = 1.5;  // images up to this many pixels per device pixel of the page on screen
+const REFIT_RATIO = 1.25;        // a kept image is handed over again only when this far off the size wanted
+
+export class PageStore {
+  /**
+   * @param {Array<object>} entries  the book's page entries (options.js pageEntries)
+   * @param {{ loadWindow: number, direction: string }} settings
+   * @param {{ surface: () => object, openPages: () => number[], emit: (type: string, detail: object) => void,
+   *           onOpenPageLoaded: (index: number) => void }} hooks
+   */
+  constructor(entries, settings, hooks) {
+    this.entries = entries;
+    this._settings = settings;
+    this._hooks = hooks;
+    this._images = new Map();  // page -> image, while the surface holds it
+    this._owned = new Set();   // images made here (ImageBitmaps from URLs and Blobs): closed when let go
+    this._cache = new PageCache(settings.loadWindow, entries.length);
+    this._abort = new AbortController();  // fetches still running when the book is destroyed stop
+    this._sharpening = new Set();
+    this._closed = false;
+  }
+
+  /** Where page `index` stands: { state, reason?, error? }. */
+  pageState(index) { return this._cache.pageState(index); }
+  /** Pages whose images are kept (held by the surface), in page order. */
+  get residentPages() { return [...this._images.keys()].sort((a, b) => a - b); }
+  /** { loaded, total, pending }: pages loaded or failed, the page count, loads running now. */
+  get progress() { return this._cache.progress; }
+  /** Resolves once no page is loading. */
+  whenIdle() { return this._cache.whenIdle(); }
+
+  /**
+   * Loads the pages wanted now (on screen, then the open spread's neighbours within loadWindow) and
+   * lets go of the least recently wanted beyond the cache's capacity, which does not grow with the book.
+   */
+  update() {
+    if (this._closed) return;
+    const open = this._hooks.openPages();
+    const wanted = this._cache.want({
+      onScreen: this._hooks.surface().pagesOnScreen(),
+      first: open[0],
+      last: open[open.length - 1],
+      loadWindow: this._settings.loadWindow,
+      pageCount: this.entries.length,
+    });
+    for (const page of wanted) if (this._cache.stateOf(page) === 'idle') this._load(page);
+    this._releaseExcess();
+  }
+
+  /** Pixels a page needs: its size on screen in device pixels, times TEXTURE_OVERSAMPLE. */
+  cover({ zoomed = false } = {}) {
+    const surface = this._hooks.surface();
+    // restingRect is the zoomed picture; images are sized for the whole book unless asked for the
+    // open pages while zoomed in (only those get the extra pixels: memory stays bounded).
+    const unzoom = zoomed ? 1 : 1 / surface.zoom;
+    const full = surface.restingRect();
+    const spread = surface.display === 'single' ? 1 : 2;
+    const vertical = this._settings.direction === 'vertical';
+    const scale = (globalThis.devicePixelRatio || 1) * TEXTURE_OVERSAMPLE;
+    return {
+      width: Math.ceil(((vertical ? full.width : full.width / spread) * unzoom) * scale),
+      height: Math.ceil(((vertical ? full.height / spread : full.height) * unzoom) * scale),
+    };
+  }
+
+  /**
+   * The size on screen or the zoom changed: kept images far off the size now wanted are handed to the
+   * surface again, and zoomed-in open pages get a sharper source where they have one.
+   */
+  refit() {
+    if (this._closed) return;
+    const surface = this._hooks.surface();
+    const maxTextureSize = surface.maxTextureSize;
+    const open = new Set(this._hooks.openPages());
+    for (const [index, image] of this._images) {
+      const sharp = open.has(index) && surface.zoom > 1.001;
+      const cover = this.cover({ zoomed: sharp });
+      const uploaded = surface.pageImageSize(index);
+      const natural = { width: image.naturalWidth || image.width, height: image.naturalHeight || image.height };
+      const wanted = uploadSizeFor(natural.width, natural.height, { cover, maxTextureSize });
+      const ratio = wanted.width / uploaded.width;
+      if (ratio > REFIT_RATIO || ratio < 1 / REFIT_RATIO) surface.setPageImage(index, image, { cover });
+      // Zoomed in past what the image holds: a sharper source, where the page has one.
+      if (sharp && wanted.width < cover.width / REFIT_RATIO && wanted.width < maxTextureSize) this._sharpen(index, cover);
+    }
+  }
+
+  /** The book is destroyed: loads stop, owned images are closed, waiters released. */
+  close() {
+    if (this._closed) return;
+    this._closed = true;
+    this._abort.abort();
+    for (const image of this._owned) image.close?.();
+    this._owned.clear();
+    this._images.clear();
+    this._cache.releaseWaiters();
+  }
+
+  _releaseExcess() {
+    for (const page of this._cache.release([...this._images.keys()])) {
+      this._hooks.surface().releasePageImage(page);
+      this._closeIfOwned(this._images.get(page));
+      this._images.delete(page);
+      this._cache.setState(page, 'idle');
+    }
+  }
+
+  async _load(index) {
+    this._cache.startLoad(index);
+    try {
+      // A function makes its page only when the page is wanted (drawn, fetched or rendered on
+      // demand), told the size in device pixels the page is drawn at.
+      const { image, owned } = await loadPage(this.entries[index].src,
+        { index, size: this.cover(), signal: this._abort.signal });
+      if (owned) this._owned.add(image);
+      if (this._closed || this._cache.stateOf(index) !== 'loading'
+          || (!this._cache.wanted.has(index) && this._images.size >= this._cache.capacity)) {
+        // Destroyed, or no longer wanted and no room: not worth keeping.
+        this._closeIfOwned(image);
+        if (!this._closed && this._cache.stateOf(index) === 'loading') this._cache.setState(index, 'idle');
+        return;
+      }
+      await this._hooks.surface().queuePageImage(index, image, { cover: this.cover() });  // mid-turn: one a frame
+      if (this._closed) return;
+      this._images.set(index, image);
+      this._cache.setState(index, 'loaded');
+      this._releaseExcess();
+      this._hooks.onOpenPageLoaded(index);
+    } catch (error) {
+      if (this._closed) return;
+      // The page keeps the plain paper placeholder; the book keeps working. `reason` says why:
+      // 'http', 'network', 'cors', 'decode' or 'source' (PageLoadError), or 'upload'.
+      const failure = pageFailure(error);
+      this._cache.setState(index, 'failed', failure);
+      this._hooks.emit('pageerror', { index, ...failure });
+    } finally {
+      const progress = this._cache.endLoad();
+      if (!this._closed) this._hooks.emit('progress', progress);
+    }
+  }
+
+  // Loads a sharper image of an open page for the zoomed view: `zoomSrc`, or the page's function
+  // called again for the larger size (a PDF page rendered anew). The page keeps its present image
+  // until the sharper one is ready.
+  async _sharpen(index, cover) {
+    const entry = this.entries[index];
+    const source = typeof entry.src === 'function' ? entry.src : entry.zoomSrc;  // a function is told `cover`
+    if (!source || this._sharpening.has(index)) return;
+    this._sharpening.add(index);
+    try {
+      const { image, owned } = await loadPage(source, { index, size: cover, signal: this._abort.signal });
+      if (owned) this._owned.add(image);
+      if (this._closed || !this._images.has(index)) {
+        this._closeIfOwned(image);
+        return;
+      }
+      const surface = this._hooks.surface();
+      const previous = this._images.get(index);
+      surface.setPageImage(index, image, { cover });
+      this._images.set(index, image);
+      if (previous !== image) this._closeIfOwned(previous);
+      this._hooks.emit('sharpened', { index, width: surface.pageImageSize(index).width });
+    } catch (error) {
+      if (!this._closed) this._hooks.emit('pageerror', { index, ...pageFailure(error) });
+    } finally {
+      this._sharpening.delete(index);
+    }
+  }
+
+  _closeIfOwned(image) {
+    if (image && this._owned.delete(image)) image.close?.();
+  }
+}

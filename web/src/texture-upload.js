@@ -1,0 +1,52 @@
+// How a page image becomes a texture's pixels: the size it is uploaded at (never up, within the GPU's
+// limit, just covering what the screen needs) and a scaled copy on one shared scratch canvas when needed.
+
+export function naturalSize(source) {
+  const width = source.naturalWidth || source.videoWidth || source.width;
+  const height = source.naturalHeight || source.videoHeight || source.height;
+  if (!(width > 0 && height > 0)) throw new TypeError('conecurl: page image has no size (not loaded yet?)');
+  return { width, height };
+}
+
+/**
+ * The size a `width` x `height` image is uploaded at: scaled down (never up), keeping its aspect, to
+ * the smallest size that still covers `cover` (when given), and to fit the GPU's MAX_TEXTURE_SIZE.
+ */
+export function uploadSizeFor(width, height, { cover, maxTextureSize }) {
+  let scale = 1;
+  if (cover && cover.width > 0 && cover.height > 0) {
+    scale = Math.min(1, Math.max(cover.width / width, cover.height / height));
+  }
+  scale = Math.min(scale, maxTextureSize / width, maxTextureSize / height);
+  const fit = (length) => Math.max(1, Math.min(maxTextureSize, Math.round(length * scale)));
+  return { width: fit(width), height: fit(height) };
+}
+
+let scratch = null;  // one canvas for every book's scaling: texImage2D copies it before it is reused
+
+/**
+ * What the texture is uploaded from: the source itself when it already has the size wanted, else the
+ * source drawn at that size on a scratch canvas. The pixels never pass through getImageData or the
+ * wasm heap: the browser copies them from there into the texture.
+ */
+export function atSize(source, natural, { width, height }) {
+  if (natural.width === width && natural.height === height) return source;
+  let drawable = source;
+  if (source instanceof ImageData) {  // drawImage cannot scale ImageData: stage it as a bitmap-sized canvas
+    drawable = makeCanvas(source.width, source.height);
+    drawable.getContext('2d').putImageData(source, 0, 0);
+  }
+  scratch ??= makeCanvas(width, height);
+  if (scratch.width !== width || scratch.height !== height) Object.assign(scratch, { width, height });
+  const context = scratch.getContext('2d');
+  context.imageSmoothingQuality = 'high';  // a big reduction stays legible, not aliased
+  context.clearRect(0, 0, width, height);
+  context.drawImage(drawable, 0, 0, width, height);
+  return scratch;
+}
+
+function makeCanvas(width, height) {
+  return typeof OffscreenCanvas === 'function'
+    ? new OffscreenCanvas(width, height)
+    : Object.assign(document.createElement('canvas'), { width, height });
+}
