@@ -37,6 +37,12 @@ function countCalls() {
       return original.apply(this, args);
     };
   }
+  // Main-thread image scaling: every drawImage on a 2D canvas (the upload's scratch canvas, a check).
+  counts.drawImage = 0;
+  for (const Context of [CanvasRenderingContext2D, globalThis.OffscreenCanvasRenderingContext2D].filter(Boolean)) {
+    const drawImage = Context.prototype.drawImage;
+    Context.prototype.drawImage = function countedDrawImage(...args) { counts.drawImage++; return drawImage.apply(this, args); };
+  }
   const wrap = (fn) => function countedWasm(...args) { counts.wasm++; return fn.apply(this, args); };
   // Embind calls wasm through the function table; the glue calls the exports.
   const wrappedEntries = new WeakMap();
@@ -176,4 +182,40 @@ test('browser: pages that arrive together mid-turn are uploaded one a frame, nev
   expect(Math.max(...result.drawsPerFrame)).toBeLessThanOrEqual(4);
   expect(result.perFrame.reduce((a, b) => a + b, 0)).toBeGreaterThanOrEqual(2);
   expect(result.resident).toEqual(['loaded', 'loaded']);
+});
+
+test('browser: large encoded pages are decoded at the size they are drawn, off the main thread: no scaling pass on a canvas, textures at the decoded size, sharper when zoomed in', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    // Six 2000 x 2500 PNG pages (Blobs): far more pixels than a 640 x 400 book shows.
+    const big = document.createElement('canvas');
+    Object.assign(big, { width: 2000, height: 2500 });
+    const g = big.getContext('2d');
+    g.fillStyle = '#3a6'; g.fillRect(0, 0, 2000, 2500);
+    g.fillStyle = '#a33'; g.fillRect(0, 0, 1000, 1250);
+    const blob = await new Promise((resolve) => big.toBlob(resolve, 'image/png'));
+    const drawsBefore = window.__counts.drawImage;
+    await window.openBook({ pages: Array.from({ length: 6 }, () => blob), display: 'double', startPage: 1, loadWindow: 2 });
+    await window.settle();
+    const book = window.book;
+    const sizes = book.residentPages.map((i) => book.surface.pageImageSize(i));
+    const draws = window.__counts.drawImage - drawsBefore;
+    // Zoomed in, the open pages are decoded again from their source, larger.
+    const sharpened = [];
+    book.addEventListener('sharpened', (e) => sharpened.push(e.detail));
+    book.zoom = 4;
+    await new Promise((resolve) => setTimeout(resolve, 400));
+    await book.whenIdle();
+    return { sizes, draws, resident: book.residentPages.length, zoomedWidth: book.surface.pageImageSize(1).width, sharpened };
+  });
+  console.log(`large pages: textures ${JSON.stringify(result.sizes[0])} for 2000x2500 sources; canvas draws ${result.draws}; `
+    + `zoomed: ${result.zoomedWidth} px wide (${result.sharpened.length} sharpened)`);
+  expect(result.resident).toBeGreaterThan(2);
+  expect(result.draws).toBe(0);
+  for (const size of result.sizes) {
+    expect(size.width).toBeLessThan(1000);
+    expect(size.height / size.width).toBeCloseTo(1.25, 2);
+  }
+  expect(result.zoomedWidth).toBeGreaterThan(2 * result.sizes[0].width);
+  expect(result.sharpened.map((s) => s.index).sort()).toEqual([1, 2]);
 });

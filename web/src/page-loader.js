@@ -3,6 +3,9 @@
 // `pageerror` can tell a missing page from a broken one. URLs are fetched (not put in an <img>) because
 // only fetch reports the status; nothing that would taint a canvas gets through.
 
+import { imageSizeOf } from './image-header.js';
+import { uploadSizeFor } from './texture-upload.js';
+
 /**
  * Why a page could not be shown: `reason` is 'http' (`status` says which), 'network', 'cors', 'decode'
  * (not an image, or an image with no pixels) or 'source' (a page function threw or rejected).
@@ -25,6 +28,8 @@ export function pageFailure(error) {
   return { error: error instanceof Error ? error : new Error(String(error)), reason: error?.reason || 'upload' };
 }
 
+const MAX_DECODE_SIZE = 16384;  // no browser keeps a bigger texture; BookView fits the GPU's own limit
+
 const makeCanvas = (width, height) => (typeof OffscreenCanvas === 'function'
   ? new OffscreenCanvas(width, height)
   : Object.assign(document.createElement('canvas'), { width, height }));
@@ -40,7 +45,9 @@ function sourceName(source) {
 /**
  * Loads page `index` from `source` (a URL, Blob, HTMLImageElement, HTMLCanvasElement, ImageBitmap,
  * or a function of (index, size) returning one of these or a Promise of one). Resolves with
- * `{ image, owned }`: `owned` images were made here (close() an ImageBitmap when done with it).
+ * `{ image, owned, natural? }`: `owned` images were made here (close() an ImageBitmap when done with
+ * it). An encoded image (URL, Blob) is decoded at the size that covers `size` where its header says it
+ * is larger: then `natural` is the size it holds, for a sharper decode later (zoom).
  * Rejects with a PageLoadError, or the AbortError of `signal`.
  */
 export async function loadPage(source, { index = 0, size, signal } = {}) {
@@ -53,9 +60,9 @@ export async function loadPage(source, { index = 0, size, signal } = {}) {
         { reason: 'source', cause });
     }
   }
-  if (typeof source === 'string') return { image: await fetchImage(source, label, signal), owned: true };
+  if (typeof source === 'string') return { ...await fetchImage(source, label, signal, size), owned: true };
   if (typeof Blob !== 'undefined' && source instanceof Blob) {
-    return { image: await decodeBlob(source, `${label} (${sourceName(source)})`), owned: true };
+    return { ...await decodeBlob(source, `${label} (${sourceName(source)})`, undefined, size), owned: true };
   }
   const isImg = typeof HTMLImageElement !== 'undefined' && source instanceof HTMLImageElement;
   const isCanvas = typeof HTMLCanvasElement !== 'undefined' && source instanceof HTMLCanvasElement;
@@ -84,7 +91,7 @@ export async function loadPage(source, { index = 0, size, signal } = {}) {
   return { image: source, owned: false };
 }
 
-async function fetchImage(url, label, signal) {
+async function fetchImage(url, label, signal, size) {
   const where = `${label} ('${url}')`;
   let resolved;
   try {
@@ -113,7 +120,7 @@ async function fetchImage(url, label, signal) {
       { reason: 'http', status: response.status, url });
   }
   const blob = await response.blob();
-  return decodeBlob(blob, where, url);
+  return decodeBlob(blob, where, url, size);
 }
 
 async function answersWithoutCors(url, signal) {
@@ -125,9 +132,17 @@ async function answersWithoutCors(url, signal) {
   }
 }
 
-async function decodeBlob(blob, where, url) {
+// Decoded by the browser off the main thread; at the size that covers `size` (never up) when the header
+// says the image is larger, so it reaches the texture without a scaling pass on the main thread.
+async function decodeBlob(blob, where, url, size) {
   try {
-    return await createImageBitmap(blob);
+    const natural = size ? await imageSizeOf(blob) : null;
+    const wanted = natural && uploadSizeFor(natural.width, natural.height, { cover: size, maxTextureSize: MAX_DECODE_SIZE });
+    if (wanted && wanted.width < natural.width) {
+      const image = await createImageBitmap(blob, { resizeWidth: wanted.width, resizeHeight: wanted.height, resizeQuality: 'high' });
+      return { image, natural };
+    }
+    return { image: await createImageBitmap(blob) };
   } catch (first) {
     // createImageBitmap refuses some formats an <img> shows (SVG in Chromium): try that before giving up.
     const objectUrl = URL.createObjectURL(blob);
@@ -135,7 +150,7 @@ async function decodeBlob(blob, where, url) {
       const image = new Image();
       image.src = objectUrl;
       await image.decode();
-      if (image.naturalWidth > 0) return image;
+      if (image.naturalWidth > 0) return { image };
     } catch {
       // reported below, with what the bytes were
     } finally {

@@ -20,6 +20,7 @@ export class PageStore {
     this._settings = settings;
     this._hooks = hooks;
     this._images = new Map();  // page -> image, while the surface holds it
+    this._naturals = new Map();  // page -> size its source holds, where the image kept was decoded smaller
     this._owned = new Set();   // images made here (ImageBitmaps from URLs and Blobs): closed when let go
     this._cache = new PageCache(settings.loadWindow, entries.length);
     this._abort = new AbortController();  // fetches still running when the book is destroyed stop
@@ -83,12 +84,21 @@ export class PageStore {
       const sharp = open.has(index) && surface.zoom > 1.001;
       const cover = this.cover({ zoomed: sharp });
       const uploaded = surface.pageImageSize(index);
-      const natural = { width: image.naturalWidth || image.width, height: image.naturalHeight || image.height };
+      const kept = { width: image.naturalWidth || image.width, height: image.naturalHeight || image.height };
+      const natural = this._naturals.get(index) ?? kept;  // what the source holds
       const wanted = uploadSizeFor(natural.width, natural.height, { cover, maxTextureSize });
       const ratio = wanted.width / uploaded.width;
-      if (ratio > REFIT_RATIO || ratio < 1 / REFIT_RATIO) surface.setPageImage(index, image, { cover });
-      // Zoomed in past what the image holds: a sharper source, where the page has one.
-      if (sharp && wanted.width < cover.width / REFIT_RATIO && wanted.width < maxTextureSize) this._sharpen(index, cover);
+      const entry = this.entries[index];
+      if (ratio > REFIT_RATIO && wanted.width > kept.width * REFIT_RATIO) {
+        this._reload(index, cover, entry.src, sharp);  // the source holds more than was decoded: decode it again
+      } else if (ratio > REFIT_RATIO || ratio < 1 / REFIT_RATIO) {
+        surface.setPageImage(index, image, { cover });
+      }
+      // Zoomed in past what the source holds: a sharper source, where the page has one.
+      const sharper = typeof entry.src === 'function' ? entry.src : entry.zoomSrc;  // a function is told `cover`
+      if (sharp && sharper && wanted.width < cover.width / REFIT_RATIO && wanted.width < maxTextureSize) {
+        this._reload(index, cover, sharper, true);
+      }
     }
   }
 
@@ -108,6 +118,7 @@ export class PageStore {
       this._hooks.surface().releasePageImage(page);
       this._closeIfOwned(this._images.get(page));
       this._images.delete(page);
+      this._naturals.delete(page);
       this._cache.setState(page, 'idle');
     }
   }
@@ -117,7 +128,7 @@ export class PageStore {
     try {
       // A function makes its page only when the page is wanted (drawn, fetched or rendered on
       // demand), told the size in device pixels the page is drawn at.
-      const { image, owned } = await loadPage(this.entries[index].src,
+      const { image, owned, natural } = await loadPage(this.entries[index].src,
         { index, size: this.cover(), signal: this._abort.signal });
       if (owned) this._owned.add(image);
       if (this._closed || this._cache.stateOf(index) !== 'loading'
@@ -130,6 +141,7 @@ export class PageStore {
       await this._hooks.surface().queuePageImage(index, image, { cover: this.cover() });  // mid-turn: one a frame
       if (this._closed) return;
       this._images.set(index, image);
+      this._keepNatural(index, natural);
       this._cache.setState(index, 'loaded');
       this._releaseExcess();
       this._hooks.onOpenPageLoaded(index);
@@ -146,16 +158,19 @@ export class PageStore {
     }
   }
 
-  // Loads a sharper image of an open page for the zoomed view: `zoomSrc`, or the page's function
-  // called again for the larger size (a PDF page rendered anew). The page keeps its present image
-  // until the sharper one is ready.
-  async _sharpen(index, cover) {
-    const entry = this.entries[index];
-    const source = typeof entry.src === 'function' ? entry.src : entry.zoomSrc;  // a function is told `cover`
-    if (!source || this._sharpening.has(index)) return;
+  _keepNatural(index, natural) {
+    if (natural) this._naturals.set(index, natural);
+    else this._naturals.delete(index);
+  }
+
+  // Loads a page's image again at the size `cover` asks for: its source decoded larger, `zoomSrc`, or
+  // its function called again (a PDF page rendered anew). The page keeps its present image until the
+  // new one is ready; `sharpened` is told when it came for the zoomed view.
+  async _reload(index, cover, source, zoomed) {
+    if (this._sharpening.has(index)) return;
     this._sharpening.add(index);
     try {
-      const { image, owned } = await loadPage(source, { index, size: cover, signal: this._abort.signal });
+      const { image, owned, natural } = await loadPage(source, { index, size: cover, signal: this._abort.signal });
       if (owned) this._owned.add(image);
       if (this._closed || !this._images.has(index)) {
         this._closeIfOwned(image);
@@ -165,8 +180,9 @@ export class PageStore {
       const previous = this._images.get(index);
       surface.setPageImage(index, image, { cover });
       this._images.set(index, image);
+      if (source === this.entries[index].src) this._keepNatural(index, natural);
       if (previous !== image) this._closeIfOwned(previous);
-      this._hooks.emit('sharpened', { index, width: surface.pageImageSize(index).width });
+      if (zoomed) this._hooks.emit('sharpened', { index, width: surface.pageImageSize(index).width });
     } catch (error) {
       if (!this._closed) this._hooks.emit('pageerror', { index, ...pageFailure(error) });
     } finally {

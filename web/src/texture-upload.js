@@ -1,6 +1,8 @@
 // How a page image becomes a texture's pixels: the size it is uploaded at (never up, within the GPU's
 // limit, just covering what the screen needs) and a scaled copy on one shared scratch canvas when needed.
 
+const SAME_SIZE = 0.99;  // within 1 % of the size wanted is that size
+
 export function naturalSize(source) {
   const width = source.naturalWidth || source.videoWidth || source.width;
   const height = source.naturalHeight || source.videoHeight || source.height;
@@ -16,6 +18,8 @@ export function uploadSizeFor(width, height, { cover, maxTextureSize }) {
   let scale = 1;
   if (cover && cover.width > 0 && cover.height > 0) {
     scale = Math.min(1, Math.max(cover.width / width, cover.height / height));
+    // An image already decoded at the size wanted can be off by a rounding: no rescaling pass for that.
+    if (scale > SAME_SIZE) scale = 1;
   }
   scale = Math.min(scale, maxTextureSize / width, maxTextureSize / height);
   const fit = (length) => Math.max(1, Math.min(maxTextureSize, Math.round(length * scale)));
