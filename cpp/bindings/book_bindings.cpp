@@ -177,7 +177,7 @@ val restingRectOf(const Book& book, double width, double height) {
     return withRect(val::object(), restingRect(cameraOf(book, width, height), book.config()));
 }
 
-// The pages lying open and where, in drawing-buffer pixels under the zoom: [{ page, x, y, width, height }],
+// The pages lying open and where, in drawing-buffer pixels under the zoom: [{ page, turned, x, y, width, height }],
 // the turned side first, page -1 for a blank back (book_camera.hpp).
 val openPagePlacesOf(const Book& book, double width, double height) {
     const OpenPages open = openPagePlaces(book, cameraOf(book, width, height));
@@ -185,6 +185,7 @@ val openPagePlacesOf(const Book& book, double width, double height) {
     for (int i = 0; i < open.count; ++i) {
         val item = val::object();
         item.set("page", open.places[i].page);
+        item.set("turned", open.places[i].turned);
         out.call<void>("push", withRect(item, open.places[i].rect));
     }
     return out;

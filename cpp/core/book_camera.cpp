@@ -73,7 +73,7 @@ OpenPages openPagePlaces(const Book& book, const BookCamera& camera) {
         const glm::dvec2 a = worldToPixel(camera, leafPointToWorld(draw, c.binding, c.pageHeight, {0.0, 0.0}));
         const glm::dvec2 b = worldToPixel(camera, leafPointToWorld(draw, c.binding, c.pageHeight, {c.pageWidth, c.pageHeight}));
         const PixelRect rect{std::min(a.x, b.x), std::min(a.y, b.y), std::abs(b.x - a.x), std::abs(b.y - a.y)};
-        open.places[open.count++] = PagePlace{turned ? draw.backPage : draw.frontPage, rect};
+        open.places[open.count++] = PagePlace{turned ? draw.backPage : draw.frontPage, rect, turned};
     };
     const int position = book.position();
     // In single display the turned side lies outside the view, as in Book::frame().

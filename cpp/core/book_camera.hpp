@@ -40,7 +40,8 @@ struct PixelRect {
 };
 PixelRect restingRect(const BookCamera& camera, const BookConfig& config);
 
-struct PagePlace { int page = kNoPage; PixelRect rect; };  // a page lying open, and where on the canvas
+// A page lying open, where on the canvas, and whether it lies on the turned side (its free edge outward there).
+struct PagePlace { int page = kNoPage; PixelRect rect; bool turned = false; };
 struct OpenPages { std::array<PagePlace, 2> places{}; int count = 0; };
 // The leaves lying open at the settled position (turns in flight ignored: where they will land), each
 // with its visible page (kNoPage for a blank back) and its rectangle in canvas pixels under `camera`:

@@ -71,6 +71,7 @@ TEST(OpenPagePlaces, TileTheRestingRectTurnedSideFirstForEveryBindingDisplayAndZ
                             if (display == Display::Single) {
                                 ASSERT_EQ(open.count, 1) << where;
                                 expectRect(open.places[0].rect, all, where);
+                                EXPECT_FALSE(open.places[0].turned) << where;
                             } else {
                                 // Halves left and right (top and bottom for Top); the turned side is the
                                 // left (Left), right (Right) or top (Top) one.
@@ -90,6 +91,8 @@ TEST(OpenPagePlaces, TileTheRestingRectTurnedSideFirstForEveryBindingDisplayAndZ
                                 ASSERT_EQ(open.count, int(hasTurned) + int(hasUnturned)) << where;
                                 if (hasTurned) expectRect(open.places[0].rect, turned, where + ", turned");
                                 if (hasUnturned) expectRect(open.places[open.count - 1].rect, unturned, where + ", unturned");
+                                EXPECT_EQ(open.places[0].turned, hasTurned) << where;
+                                if (open.count == 2) EXPECT_FALSE(open.places[1].turned) << where;
                             }
                             ++checked;
                         }

@@ -35,7 +35,7 @@ function assertRectClose(actual, expected, size, where) {
 }
 
 function assertPlacesClose(actual, expected, size, where) {
-  assert.deepEqual(actual.map((place) => place.page), expected.map((place) => place.page), `${where}: pages`);
+  assert.deepEqual(actual.map((place) => [place.page, place.turned]), expected.map((place) => [place.page, place.turned]), `${where}: pages, sides`);
   actual.forEach((place, i) => assertRectClose(place, expected[i], size, `${where}, place ${i}`));
 }
 

@@ -58,7 +58,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
 });
 
 test('node: pages must be a non-empty array of page sources; each entry is checked by index, src, alt, hard and key', () => {
-  const sources = 'a URL string, HTMLImageElement, HTMLCanvasElement, ImageBitmap, Blob, a function returning one of these (or a Promise of one)';
+  const sources = 'a URL string, HTMLImageElement, HTMLCanvasElement, ImageBitmap, Blob, a function returning one of these (or a Promise of one), or an HTML element (an HTML page)';
   const arrayRule = 'a non-empty array of at most 1000000 page sources';
   refuses({ pages: [] }, `option 'pages' must be ${arrayRule}, got an array of 0`);
   refuses({ pages: 'a.png' }, `option 'pages' must be ${arrayRule}, got "a.png"`);
@@ -72,7 +72,7 @@ test('node: pages must be a non-empty array of page sources; each entry is check
   refuses({ pages: [{ alt: 'no source' }] }, `option 'pages[0].src' must be ${sources}; got undefined`);
   refuses({ pages: [{ src: 'a.png', alt: 5 }] }, "option 'pages[0].alt' must be a string (the page's text for screen readers); got 5");
   refuses({ pages: [{ src: 'a.png', hard: 'yes' }] }, "option 'pages[0].hard' must be true or false; got \"yes\"");
-  refuses({ pages: [{ src: 'a.png', title: 'x' }] }, "option 'pages[0]' has an unknown key 'title' (allowed: src, alt, hard, zoomSrc, links)");
+  refuses({ pages: [{ src: 'a.png', title: 'x' }] }, "option 'pages[0]' has an unknown key 'title' (allowed: src, html, alt, hard, zoomSrc, links)");
   refuses({ pages: [{ src: 'a.png', zoomSrc: () => 'b.png' }] },
     "option 'pages[0].zoomSrc' must be a URL, HTMLImageElement, HTMLCanvasElement, ImageBitmap or Blob; got a function");
   refuses({ pages: [{ src: 'a.png', links: {} }] }, "option 'pages[0].links' must be an array of { rect, href } or { rect, page }; got an object");
@@ -93,7 +93,7 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses(null, 'options must be an object, got null');
   refuses('pages', 'options must be an object, got "pages"');
   refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, direction, startPage, duration, hardCovers, "
-    + 'lighting, shadows, gutter, loadWindow, wasmUrl, label, fallback, antialias, on)');
+    + 'lighting, shadows, gutter, loadWindow, wasmUrl, label, fallback, antialias, turnArea, on)');
   refuses({ pages, antialias: 'yes' }, "option 'antialias' must be 'auto', true or false, got \"yes\"");
   refuses({ pages, startPage: 3 }, "option 'startPage' must be below the page count 3, got 3");
   // A value whose own toString throws or is huge is described, not called.
@@ -113,4 +113,13 @@ test('node: setOptions takes only lighting, shadows and gutter, checked; flip op
   assert.throws(() => checkFlipOptions({ animate: 0 }), (e) => e instanceof TypeError && /flip option 'animate' must be true or false, got 0/.test(e.message));
   assert.throws(() => checkFlipOptions({ speed: 2 }), /unknown flip option 'speed' \(allowed: animate\)/);
   assert.throws(() => checkFlipOptions(null), /flip options must be an object like \{ animate: false \}, got null/);
+});
+
+test('node: turnArea is one of page, edges, corners, none; its default is edges for a book with HTML pages, else page', () => {
+  assert.equal(validateOptions({ pages: ['a.jpg'] }).turnArea, 'page');
+  assert.equal(validateOptions({ pages: ['a.jpg'], turnArea: 'corners' }).turnArea, 'corners');
+  assert.throws(() => validateOptions({ pages: ['a.jpg'], turnArea: 'middle' }),
+    { name: 'TypeError', message: "conecurl: option 'turnArea' must be 'page', 'edges', 'corners' or 'none', got \"middle\"" });
+  assert.throws(() => validateOptions({ pages: [{ html: 'a <b>string</b>' }] }),
+    { name: 'TypeError', message: /option 'pages\[0\]\.html' must be an HTML element .*strings are never parsed as HTML/ });
 });

@@ -5,6 +5,7 @@ import { Flipbook } from '../src/flipbook.js';
 import { loadEngine } from '../src/engine.js';
 import { DEMO_PAGE_COUNT, drawBookPage, isHardPage } from './book-pages.js';
 import { makeDemoPdf } from './demo-pdf.js';
+import { magazinePages } from './demo-magazine.js';
 
 const $ = (id) => document.getElementById(id);
 const deg = 180 / Math.PI;
@@ -69,11 +70,13 @@ function showWhere() {
 function buildBook(startPage) {
   building = building.then(async () => {
     book?.destroy();
-    const pdf = $('source').value === 'pdf';
+    const source = $('source').value;
+    const pdf = source === 'pdf';
     if (pdf) pdfBytes ??= await makeDemoPdf();
+    const pages = source === 'html' ? magazinePages() : PAGES;
     book = await Flipbook.create($('book'), {
-      ...(pdf ? { pdf: pdfBytes } : { pages: PAGES }),
-      startPage: pdf ? 0 : startPage,
+      ...(pdf ? { pdf: pdfBytes } : { pages }),
+      startPage: source === 'drawn' ? startPage : 0,
       display: $('display').value,
       direction: $('direction').value,
       duration: Number($('speed').value) * 1000,

@@ -10,6 +10,7 @@ import { BookEvents } from './book-events.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { PageStore } from './page-store.js';
 import { createLinkLayer } from './link-layer.js';
+import { freeEdge, inTurnArea } from './turn-area.js';
 import { attachInput } from './book-input.js';
 import { watchSize } from './size-watch.js';
 import { MAX_ZOOM, displayFor, openPages } from './layout.js';
@@ -47,6 +48,7 @@ export class BookController extends EventTarget {
         if (!this._surface.animating && this.openPages.includes(index)) this._showOpenPages();
       },
     });
+    this._html = null;  // HTML pages, once _build() has loaded their module
     this._layers = [createLinkLayer(this._shell.root, {
       linksOf: (page) => this._pages[page].links,
       onActivate: (link, event) => this._onLink(link, event),
@@ -118,6 +120,7 @@ export class BookController extends EventTarget {
     }
     if (!(Number.isFinite(t) && t >= 0 && t <= 1)) throw new RangeError(`conecurl: previewTurn t must be in [0, 1], got ${String(t)}`);
     const shown = this._surface.showTurn(direction, t);
+    if (shown) this._hideLayers();  // a posed leaf: live layers give way until the book next lands
     this._store.update();  // the pages the posed leaf shows
     return shown;
   }
@@ -185,6 +188,7 @@ export class BookController extends EventTarget {
   _animates() { return this._surface.kind === 'webgl' && !this._reducedMotion?.matches; }
 
   async _build() {
+    if (this._pages.some((entry) => entry.html)) await this._attachHtmlPages();
     this._layoutSize = this._cssSize();
     this._surface = this._makeSurface(displayFor(this._settings.display, this._layoutSize));
     // While leaves move, the pages they show change (turns that waited start late): the surface says when.
@@ -202,6 +206,21 @@ export class BookController extends EventTarget {
     this._emit('ready', { page: this.page });
   }
 
+  // HTML pages live over the canvas while they lie open (html-pages.js, loaded only for books that have
+  // them), under the links.
+  async _attachHtmlPages() {
+    const { HtmlPages } = await import('./html-pages.js');
+    if (this._destroyed) return;
+    this._html = new HtmlPages(this._shell.root, this._pages, {
+      direction: this._settings.direction,
+      turnArea: this._settings.turnArea,
+      zoom: () => this.zoom,
+      pageSize: () => this._store.pageCssSize(),
+      changed: (index) => { this._html?.refreshed(index); this._store.refresh(index); },
+    });
+    this._layers.unshift(this._html);
+  }
+
   // ---- input: each module in its own file (book-input.js), told what it may do --------------
 
   _attachInput() {
@@ -215,6 +234,7 @@ export class BookController extends EventTarget {
       panBy: (dx, dy) => this._panBy(dx, dy),
       turn: (direction) => { if (!this._destroyed) this._turn(direction).catch(() => {}); },  // input after destroy() is dropped
       jump: (end) => { this.flip(end === 'first' ? 0 : this.pageCount - 1, { animate: false }).catch(() => {}); },
+      turnsFrom: (clientX, clientY) => this._turnsFrom(clientX, clientY),
       dragStarted: (direction) => {
         this._hideLayers();
         this._emit('turnstart', { direction, page: this.page, drag: true });
@@ -230,6 +250,8 @@ export class BookController extends EventTarget {
           this._emit('turncancel', { page: this.page });
         }
       },
+      // A corner lifts as the mouse hovers it: the live layers give way to the page's texture.
+      hintStarted: () => this._hideLayers(),
       // A corner lifted by hovering fell back: the open pages are those from before it again.
       hintEnded: () => { if (!this._destroyed) this._showOpenPages(); },
     });
@@ -240,6 +262,11 @@ export class BookController extends EventTarget {
   async _turn(direction) {
     this._alive();
     if (this._zoomed()) this._zoomAbout(1, 0, 0);  // a turn asked for by code shows the whole book again
+    const stale = this._html?.staleAmong(this.openPages) ?? [];
+    if (stale.length > 0) {
+      await this._redraw(stale);
+      if (this._destroyed) return false;
+    }
     if (!this._animates()) return this._jumpOneLeaf(direction);
     const surface = this._surface;
     const turning = surface.turn(direction);
@@ -253,6 +280,23 @@ export class BookController extends EventTarget {
     this._store.update();
     if (turned) this._landed();
     return turned;
+  }
+
+  // Open HTML pages whose content changed since their textures were made are drawn again before they move.
+  _redraw(pages) {
+    for (const index of pages) this._html.refreshed(index);
+    return Promise.all(pages.map((index) => this._store.refresh(index)));
+  }
+
+  /** Whether a press at a viewport point may turn a page there (the `turnArea` option). */
+  _turnsFrom(clientX, clientY) {
+    const area = this._settings.turnArea;
+    if (area === 'page' || area === 'none') return area === 'page';
+    const box = this._canvas.getBoundingClientRect();
+    const [x, y] = [clientX - box.left, clientY - box.top];
+    const place = this._surface.openPagePlaces()
+      .find((p) => x >= p.x && x <= p.x + p.width && y >= p.y && y <= p.y + p.height);
+    return Boolean(place) && inTurnArea(area, place, freeEdge(this._settings.direction, place.turned), x, y);
   }
 
   // Reduced motion, or still pages: a turn is a cut to the next spread, with the same events.

@@ -11,16 +11,19 @@ import { PointerDrag } from './pointer-drag.js';
  * @param {{ zoom: () => number, zoomed: () => boolean, zoomAbout: (scale: number, x: number, y: number) => void,
  *           zoomAboutCentre: (scale: number) => void, panBy: (dx: number, dy: number) => void,
  *           turn: (direction: string) => void, jump: (end: 'first'|'last') => void,
+ *           turnsFrom: (clientX: number, clientY: number) => boolean,
  *           dragStarted: (direction: string) => void, dragEnded: (completed: boolean) => void,
- *           hintEnded: () => void }} book  what the controller lets input do
+ *           hintStarted: () => void, hintEnded: () => void }} book  what the controller lets input do
  * @returns {{ stop: () => void, readonly pendingClick: boolean, clickWaitMs: number }}
  */
 export function attachInput({ canvas, element, surface, direction }, book) {
   // First: a press on a corner is a drag, not a tap. Only the engine can solve a held leaf's pose.
   const drag = surface.kind === 'webgl' ? new PointerDrag(surface, {
     enabled: () => !book.zoomed(),
+    pressAllowed: book.turnsFrom,
     onTurnStart: book.dragStarted,
     onTurnEnd: book.dragEnded,
+    onHintStart: book.hintStarted,
     onHintEnd: book.hintEnded,
   }) : null;
   const port = {
@@ -33,6 +36,7 @@ export function attachInput({ canvas, element, surface, direction }, book) {
     queuedTurns: () => surface.queuedTurns,
     restingRect: () => surface.restingRect(),
     strokeWasDrag: () => Boolean(drag?.strokeWasDrag),
+    turnsFrom: book.turnsFrom,
   };
   const taps = listenForTaps(canvas, port);
   const stopZoom = listenForZoom(canvas, {

@@ -2,15 +2,21 @@
 // live region announcing the open pages, and visually hidden text of those pages for screen readers.
 import { keyShortcuts } from './input-keys.js';
 
-const FOCUS_RING_CSS = `
+// The focus ring, and HTML pages with turnArea 'page': a press on their content turns the page unless
+// it lands on something interactive (html-pages.js).
+const BOOK_CSS = `
 .conecurl-book:focus { outline: none; }
 .conecurl-book:focus-visible {
   outline: var(--conecurl-focus-ring, 3px solid #1a5fd6);
   outline-offset: var(--conecurl-focus-ring-offset, -3px);
-}`;
+}
+.conecurl-html-page[data-turn-area="page"] { pointer-events: none !important; }
+.conecurl-html-page[data-turn-area="page"] :is(a, button, input, select, textarea, label, summary, video, audio,
+  iframe, [contenteditable], [tabindex], [data-conecurl-interactive]) { pointer-events: auto; }`;
 // Out of sight but read by screen readers (the usual clip pattern).
 const VISUALLY_HIDDEN = 'position:absolute;width:1px;height:1px;margin:-1px;padding:0;border:0;'
   + 'overflow:hidden;clip:rect(0 0 0 0);clip-path:inset(50%);white-space:nowrap';
+
 let sharedSheet = null;
 
 // A :focus-visible rule cannot be an inline style. A constructed sheet adopted by the container's
@@ -22,13 +28,13 @@ function installFocusRing(container, root) {
   if (canAdopt) {
     if (!sharedSheet) {
       sharedSheet = new CSSStyleSheet();
-      sharedSheet.replaceSync(FOCUS_RING_CSS);
+      sharedSheet.replaceSync(BOOK_CSS);
     }
     if (!scope.adoptedStyleSheets.includes(sharedSheet)) scope.adoptedStyleSheets = [...scope.adoptedStyleSheets, sharedSheet];
     return;
   }
   const style = document.createElement('style');
-  style.textContent = FOCUS_RING_CSS;
+  style.textContent = BOOK_CSS;
   root.append(style);
 }
 

@@ -49,7 +49,7 @@ export class BookView {
   /** The book's share of the page's WebGL contexts (context-budget.js), if it takes part in one. */
   contextLease: object | null;
   /** The leaves lying open at the settled position, as the engine's camera places them (CSS px, zoom included). */
-  openPagePlaces(): Array<{ page: number; x: number; y: number; width: number; height: number }>;
+  openPagePlaces(): Array<{ page: number; turned: boolean; x: number; y: number; width: number; height: number }>;
   readonly animating: boolean;
   /** Frames drawn so far: the book draws only while something moves or changes. */
   readonly framesDrawn: number;

@@ -183,8 +183,8 @@ export class BookView {
   openPagePlaces() {
     const { width } = this.fitCanvas();
     const toCss = this.canvas.clientWidth / width;
-    return this.book.openPagePlaces(width, this.canvas.height).map(({ page, x, y, width: w, height: h }) => (
-      { page, x: x * toCss, y: y * toCss, width: w * toCss, height: h * toCss }));
+    return this.book.openPagePlaces(width, this.canvas.height).map(({ page, turned, x, y, width: w, height: h }) => (
+      { page, turned, x: x * toCss, y: y * toCss, width: w * toCss, height: h * toCss }));
   }
 
   /**

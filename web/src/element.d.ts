@@ -14,7 +14,8 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
 
 /**
  * The Flipbook as an element. Attributes (all optional except the pages): pages (URLs separated by
- * spaces; else the child <img> elements, alt text kept), display, direction, start-page, duration,
+ * spaces; else the child elements: an <img> an image page, alt text kept, any other element a live
+ * HTML page shown through a named slot), display, direction, start-page, duration,
  * hard-covers, lighting, shadows, gutter ("true"/"false"), antialias ("auto"/"true"/"false"),
  * load-window, wasm-url, pdf, pdf-worker-src.
  */

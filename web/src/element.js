@@ -1,9 +1,11 @@
 // <cone-flipbook>: the Flipbook as an HTML element, for pages without a build step. Attributes mirror
-// the options; child <img> elements can be the pages, and are what a browser without JavaScript shows.
+// the options; its child elements can be the pages (an <img> an image page, any other element a live
+// HTML page), and are what a browser without JavaScript shows.
 import { Flipbook } from './flipbook.js';
 import { BOOK_EVENTS } from './book-events.js';
 
 const TAG = 'cone-flipbook';
+const NOT_PAGES = ['script', 'style', 'template', 'link', 'meta', 'noscript'];  // children that are never pages
 
 const parseText = (raw) => raw;
 function parseNumber(raw, attribute) {
@@ -57,7 +59,7 @@ function inAttributeTerms(error, element) {
   const attribute = option && ATTRIBUTE_OF_OPTION[option];
   if (!attribute) return error;
   const raw = element.getAttribute(attribute);
-  const given = raw === null ? '(from the child <img> elements)' : `"${raw}"`;
+  const given = raw === null ? '(from the child elements)' : `"${raw}"`;
   return new TypeError(`conecurl: <${TAG}> attribute '${attribute}' ${given} is not valid: ${
     error.message.replace(/^conecurl: /, '')}`, { cause: error });
 }
@@ -86,7 +88,8 @@ export class ConeFlipbookElement extends HTMLElement {
 
   constructor() {
     super();
-    // No <slot> while the book shows: the child <img> elements are page sources, not content.
+    // No default <slot> while the book shows: child <img> elements are page sources, and other children
+    // (HTML pages) show through named slots the book makes for them.
     this.attachShadow({ mode: 'open' }).innerHTML = TEMPLATE;
     this._container = this.shadowRoot.querySelector('.book');
     this._failure = this.shadowRoot.querySelector('.failed');
@@ -98,7 +101,7 @@ export class ConeFlipbookElement extends HTMLElement {
     this._reopenAt = null;       // page to open at when the book is built again
     this._destroyed = false;
     this._children = new MutationObserver((records) => {
-      if (!this.hasAttribute('pages') && records.some((record) => this._touchesChildImage(record))) this._schedule();
+      if (!this.hasAttribute('pages') && records.some((record) => this._touchesChildPages(record))) this._schedule();
     });
   }
 
@@ -230,17 +233,21 @@ export class ConeFlipbookElement extends HTMLElement {
   }
 
   _childPages() {
-    const images = [...this.querySelectorAll(':scope > img')];
-    if (images.length === 0) {
+    const children = [...this.children].filter((child) => !NOT_PAGES.includes(child.localName));
+    if (children.length === 0) {
       throw new TypeError(`conecurl: <${TAG}> has no pages: give it a 'pages' attribute (image URLs separated by `
-        + 'spaces) or child <img> elements');
+        + 'spaces) or child elements (<img> elements, or any element as an HTML page)');
     }
-    return images.map((image) => ({ src: image.currentSrc || image.src, alt: image.alt }));
+    // An <img> child is an image page; any other element is a live HTML page (it stays a child).
+    return children.map((child) => (child.localName === 'img'
+      ? { src: child.currentSrc || child.src, alt: child.alt }
+      : { html: child, ...(child.hasAttribute('aria-label') ? { alt: child.getAttribute('aria-label') } : {}) }));
   }
 
-  _touchesChildImage(record) {
+  _touchesChildPages(record) {
     if (record.type === 'attributes') return record.target.localName === 'img' && record.target.parentNode === this;
-    return record.target === this && [...record.addedNodes, ...record.removedNodes].some((node) => node.localName === 'img');
+    return record.target === this && [...record.addedNodes, ...record.removedNodes]
+      .some((node) => node.nodeType === 1 && !NOT_PAGES.includes(node.localName));
   }
 
   _forward(book, event) {

@@ -89,7 +89,7 @@ export interface Book {
    * The leaves lying open at the settled position, turned side first: the page each shows (-1 for a
    * blank back) and its rectangle in drawing-buffer pixels, zoom included.
    */
-  openPagePlaces(width: number, height: number): Array<{ page: number; x: number; y: number; width: number; height: number }>;
+  openPagePlaces(width: number, height: number): Array<{ page: number; turned: boolean; x: number; y: number; width: number; height: number }>;
   delete(): void;
 }
 

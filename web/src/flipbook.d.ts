@@ -22,7 +22,14 @@ export interface PageLink {
 }
 
 export interface PageEntry {
-  src: PageSource;
+  /** The page's image (give this or `html`). */
+  src?: PageSource;
+  /**
+   * A live HTML page: the element is shown over the page while it lies open (fully interactive) and
+   * drawn to the page's texture while it moves (needs the optional dependency modern-screenshot).
+   * Any element but an image, canvas or video; strings are never parsed as HTML.
+   */
+  html?: HTMLElement;
   /** Text of the page for screen readers. */
   alt?: string;
   /** Turns rigidly, like a cover. */
@@ -34,8 +41,17 @@ export interface PageEntry {
 }
 
 export interface FlipbookOptions {
-  /** The pages, first to last; at least one. A URL is loaded with CORS. Give this or `pdf`. */
-  pages?: Array<PageSource | PageEntry>;
+  /**
+   * The pages, first to last; at least one. A URL is loaded with CORS. An HTMLElement (not an image,
+   * canvas or video) is a live HTML page, as `{ html: element }`. Give this or `pdf`.
+   */
+  pages?: Array<PageSource | HTMLElement | PageEntry>;
+  /**
+   * Where a press may turn a page: anywhere on it ('page'), a band along its free edge ('edges'), its
+   * two free corners ('corners'), or nowhere ('none': keys, buttons and code still turn). Default
+   * 'edges' when the book has HTML pages (a press on their content stays theirs), else 'page'.
+   */
+  turnArea?: 'page' | 'edges' | 'corners' | 'none';
   /**
    * A PDF (URL or bytes) instead of `pages`: shown through pdf.js (the optional dependency pdfjs-dist,
    * imported only then), each page rendered when wanted at the size the canvas needs, its text as its
@@ -141,6 +157,8 @@ export interface FlipbookEventMap {
 export interface PagePlace {
   /** The page it shows; -1 for a leaf's blank back. */
   page: number;
+  /** It lies on the turned side (left in ltr, right in rtl, top in vertical); its free edge is outward. */
+  turned: boolean;
   x: number;
   y: number;
   width: number;

@@ -24,6 +24,12 @@ export function actionForKey(event, direction) {
   return TURN_KEYS[direction][event.key] || COMMON_KEYS[event.key] || null;
 }
 
+// Elements inside a page (an HTML page's) that use these keys themselves: text fields, lists, media.
+function keepsKeys(target) {
+  return typeof target?.closest === 'function'
+    && Boolean(target.closest('input, textarea, select, video, audio, [contenteditable]:not([contenteditable="false"])'));
+}
+
 /**
  * Listens for the book's keys on `element`. `book` is the controller's input port (book-controller.js).
  * Returns a function that stops listening.
@@ -31,6 +37,7 @@ export function actionForKey(event, direction) {
 export function listenForKeys(element, book) {
   const onKeyDown = (event) => {
     if (event.defaultPrevented || event.altKey || event.ctrlKey || event.metaKey) return;
+    if (event.target !== element && keepsKeys(event.target)) return;  // typing in an HTML page's field
     const zoomKey = { '+': ZOOM_STEP, '=': ZOOM_STEP, '-': 1 / ZOOM_STEP, 0: 0 }[event.key];
     if (zoomKey !== undefined) {
       event.preventDefault();

@@ -62,12 +62,12 @@ export function listenForTaps(canvas, book) {
   const stop = listenForTapsAndSwipes(canvas, {
     // A stroke that dragged a page is not also a tap or a swipe.
     tap: (x, y, kind) => {
-      if (book.strokeWasDrag()) return;
+      if (book.strokeWasDrag() || !book.turnsFrom(x, y)) return;
       if (kind === 'click') onMouseClick(halfOf(x, y));
       else turnTo(halfOf(x, y));
     },
-    swipe: (dx, dy) => {
-      if (book.strokeWasDrag() || book.zoomed()) return;
+    swipe: (dx, dy, x, y) => {
+      if (book.strokeWasDrag() || book.zoomed() || !book.turnsFrom(x, y)) return;
       const turn = swipeDirection(dx, dy, book.direction);
       if (turn) book.turn(turn);
     },

@@ -63,7 +63,7 @@ export function restingRect(size, { display = 'double', direction = 'ltr', pageA
 }
 
 /**
- * The pages lying open at `position` and where: [{ page, x, y, width, height }] in `size`'s unit, the
+ * The pages lying open at `position` and where: [{ page, turned, x, y, width, height }] in `size`'s unit, the
  * turned side first (left for ltr, right for rtl, top for vertical), page -1 for a leaf's blank back,
  * under `zoom` if given. As the engine's openPagePlaces.
  */
@@ -72,7 +72,7 @@ export function openPagePlaces(position, book, size, zoom) {
   const rect = restingRect(size, { display, direction, pageAspect });
   const places = [];
   if (display !== 'double') {
-    if (position < pageCount) places.push({ page: position, ...rect });
+    if (position < pageCount) places.push({ page: position, turned: false, ...rect });
   } else {
     const vertical = direction === 'vertical';
     const half = vertical
@@ -80,10 +80,10 @@ export function openPagePlaces(position, book, size, zoom) {
       : [{ ...rect, width: rect.width / 2 }, { ...rect, x: rect.x + rect.width / 2, width: rect.width / 2 }];
     const [turned, unturned] = direction === 'rtl' ? [half[1], half[0]] : half;
     // The turned leaf shows its back page, the unturned one its front (a leaf holds pages 2l and 2l + 1).
-    if (position > 0) places.push({ page: 2 * position - 1 < pageCount ? 2 * position - 1 : -1, ...turned });
-    if (position < Math.ceil(pageCount / 2)) places.push({ page: 2 * position, ...unturned });
+    if (position > 0) places.push({ page: 2 * position - 1 < pageCount ? 2 * position - 1 : -1, turned: true, ...turned });
+    if (position < Math.ceil(pageCount / 2)) places.push({ page: 2 * position, turned: false, ...unturned });
   }
-  return zoom ? places.map(({ page, ...place }) => ({ page, ...zoomRect(place, zoom, size.width, size.height) })) : places;
+  return zoom ? places.map(({ page, turned, ...place }) => ({ page, turned, ...zoomRect(place, zoom, size.width, size.height) })) : places;
 }
 
 // ---- zoom: { scale, offsetX, offsetY }, the picture scaled about the centre then moved (NDC, -1..1) ----

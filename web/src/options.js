@@ -1,6 +1,7 @@
 // The options of a book (Flipbook and its static fallback) checked in one place: every bad value is
 // a TypeError that names the option and says what is allowed, before anything is built.
 import { BOOK_EVENTS } from './book-events.js';
+import { TURN_AREAS } from './turn-area.js';
 
 const BOOLEAN = (v) => typeof v === 'boolean' || 'true or false';
 export const MAX_PAGES = 1_000_000;  // the engine's Book refuses more (book_bindings.cpp)
@@ -21,6 +22,7 @@ const OPTION_CHECKS = {
   label: (v) => (typeof v === 'string' && v.trim() !== '') || 'a non-empty string',
   fallback: BOOLEAN,
   antialias: (v) => typeof v === 'boolean' || v === 'auto' || "'auto', true or false",
+  turnArea: (v) => TURN_AREAS.includes(v) || TURN_AREAS.map((a) => `'${a}'`).join(', ').replace(/, ([^,]*)$/, ' or $1'),
   on: (v) => (isPlainEntry(v) && Object.entries(v).every(([type, f]) => BOOK_EVENTS.includes(type) && typeof f === 'function'))
     || `an object of listeners by event name (${BOOK_EVENTS.join(', ')})`,
 };
@@ -31,9 +33,9 @@ export const DEFAULTS = {
 };
 /** Options a live book takes through setOptions(); the others need a new book. */
 export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter'];
-const PAGE_ENTRY_KEYS = ['src', 'alt', 'hard', 'zoomSrc', 'links'];
+const PAGE_ENTRY_KEYS = ['src', 'html', 'alt', 'hard', 'zoomSrc', 'links'];
 const PAGE_SOURCES = 'a URL string, HTMLImageElement, HTMLCanvasElement, ImageBitmap, Blob, '
-  + 'a function returning one of these (or a Promise of one)';
+  + 'a function returning one of these (or a Promise of one), or an HTML element (an HTML page)';
 
 /**
  * A value as an error message shows it: short, never the value's own toString (which may throw or
@@ -57,21 +59,35 @@ function isPageImage(src) {
     || (typeof ImageBitmap !== 'undefined' && src instanceof ImageBitmap);
 }
 
+/** An element shown as a live HTML page: any HTMLElement but an image, canvas or video. */
+export function isHtmlPage(page) {
+  return typeof HTMLElement !== 'undefined' && page instanceof HTMLElement && !isPageImage(page)
+    && !(typeof HTMLVideoElement !== 'undefined' && page instanceof HTMLVideoElement);
+}
+
 function isPlainEntry(page) {
-  return page !== null && typeof page === 'object' && !Array.isArray(page) && !isPageImage(page);
+  return page !== null && typeof page === 'object' && !Array.isArray(page) && !isPageImage(page) && !isHtmlPage(page);
 }
 
 function checkPage(page, index, pageCount) {
   const name = `pages[${index}]`;
   if (!isPlainEntry(page)) {
-    if (isPageImage(page) || typeof page === 'function') return;
+    if (isPageImage(page) || isHtmlPage(page) || typeof page === 'function') return;
     throw new TypeError(`conecurl: option '${name}' must be ${PAGE_SOURCES}, or { src, alt, hard }; got ${describeValue(page)}`);
   }
   const unknown = Object.keys(page).find((key) => !PAGE_ENTRY_KEYS.includes(key));
   if (unknown !== undefined) {
     throw new TypeError(`conecurl: option '${name}' has an unknown key '${unknown}' (allowed: ${PAGE_ENTRY_KEYS.join(', ')})`);
   }
-  if (!isPageImage(page.src) && typeof page.src !== 'function') {
+  if (page.html !== undefined) {
+    if (!isHtmlPage(page.html)) {
+      throw new TypeError(`conecurl: option '${name}.html' must be an HTML element (not an image, canvas or video; `
+        + `strings are never parsed as HTML); got ${describeValue(page.html)}`);
+    }
+    if (page.src !== undefined || page.zoomSrc !== undefined) {
+      throw new TypeError(`conecurl: option '${name}' gives both 'html' and '${page.src !== undefined ? 'src' : 'zoomSrc'}': an HTML page is drawn from its element`);
+    }
+  } else if (!isPageImage(page.src) && typeof page.src !== 'function') {
     throw new TypeError(`conecurl: option '${name}.src' must be ${PAGE_SOURCES}; got ${describeValue(page.src)}`);
   }
   if (page.alt !== undefined && typeof page.alt !== 'string') {
@@ -127,19 +143,25 @@ export function validateOptions(options) {
   if (options.startPage !== undefined && options.startPage >= options.pages.length) {
     throw new TypeError(`conecurl: option 'startPage' must be below the page count ${options.pages.length}, got ${options.startPage}`);
   }
-  return { ...DEFAULTS, ...options };
+  // A book with HTML pages turns from the pages' edges by default: a press on their content is theirs.
+  const hasHtml = Array.from(options.pages, (page) => isHtmlPage(page) || (isPlainEntry(page) && page.html !== undefined)).some(Boolean);
+  return { ...DEFAULTS, turnArea: hasHtml ? 'edges' : 'page', ...options };
 }
 
+const oneLinkForm = (l) => ({ rect: l.rect, href: l.href ?? '#', toPage: l.page, title: l.title });
+
 /**
- * The page entries of checked options: every page as { src, alt?, hard?, zoomSrc?, links? }, links
+ * The page entries of checked options: every page as { src, alt?, hard?, zoomSrc?, links? } (or { html, ... }), links
  * in one form { rect, href, toPage, title }. Entries without links stay the objects given (a PDF's
  * fill in their alt and links as their pages render).
  */
 export function pageEntries(pages) {
   return pages.map((page) => {
+    if (isHtmlPage(page)) return { html: page, alt: page.getAttribute('aria-label') ?? undefined };
     if (!isPlainEntry(page)) return { src: page };
+    if (page.html) return { ...page, links: page.links?.map(oneLinkForm) };  // a copy: the book adds its `src`
     if (!page.links) return page;
-    return { ...page, links: page.links.map((l) => ({ rect: l.rect, href: l.href ?? '#', toPage: l.page, title: l.title })) };
+    return { ...page, links: page.links.map(oneLinkForm) };
   });
 }
 

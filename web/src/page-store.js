@@ -24,7 +24,7 @@ export class PageStore {
     this._owned = new Set();   // images made here (ImageBitmaps from URLs and Blobs): closed when let go
     this._cache = new PageCache(settings.loadWindow, entries.length);
     this._abort = new AbortController();  // fetches still running when the book is destroyed stop
-    this._sharpening = new Set();
+    this._sharpening = new Map();  // page -> its reload running now
     this._closed = false;
   }
 
@@ -55,20 +55,33 @@ export class PageStore {
     this._releaseExcess();
   }
 
-  /** Pixels a page needs: its size on screen in device pixels, times TEXTURE_OVERSAMPLE. */
-  cover({ zoomed = false } = {}) {
+  /** A page's size on screen in CSS px at zoom 1 (restingRect is the zoomed picture of both pages). */
+  pageCssSize() {
     const surface = this._hooks.surface();
-    // restingRect is the zoomed picture; images are sized for the whole book unless asked for the
-    // open pages while zoomed in (only those get the extra pixels: memory stays bounded).
-    const unzoom = zoomed ? 1 : 1 / surface.zoom;
     const full = surface.restingRect();
     const spread = surface.display === 'single' ? 1 : 2;
     const vertical = this._settings.direction === 'vertical';
-    const scale = (globalThis.devicePixelRatio || 1) * TEXTURE_OVERSAMPLE;
     return {
-      width: Math.ceil(((vertical ? full.width : full.width / spread) * unzoom) * scale),
-      height: Math.ceil(((vertical ? full.height / spread : full.height) * unzoom) * scale),
+      width: (vertical ? full.width : full.width / spread) / surface.zoom,
+      height: (vertical ? full.height / spread : full.height) / surface.zoom,
     };
+  }
+
+  /**
+   * Pixels a page needs: its size on screen in device pixels, times TEXTURE_OVERSAMPLE. Images are
+   * sized for the whole book unless asked for the open pages while zoomed in (only those get the extra
+   * pixels: memory stays bounded).
+   */
+  cover({ zoomed = false } = {}) {
+    const { width, height } = this.pageCssSize();
+    const scale = (globalThis.devicePixelRatio || 1) * TEXTURE_OVERSAMPLE * (zoomed ? this._hooks.surface().zoom : 1);
+    return { width: Math.ceil(width * scale), height: Math.ceil(height * scale) };
+  }
+
+  /** Page `index` changed (an HTML page's content): its image is made again if it is kept. Resolves when done. */
+  refresh(index) {
+    if (this._closed || this._cache.stateOf(index) !== 'loaded') return Promise.resolve();
+    return this._reload(index, this.cover(), this.entries[index].src, false, { force: true });
   }
 
   /**
@@ -166,9 +179,18 @@ export class PageStore {
   // Loads a page's image again at the size `cover` asks for: its source decoded larger, `zoomSrc`, or
   // its function called again (a PDF page rendered anew). The page keeps its present image until the
   // new one is ready; `sharpened` is told when it came for the zoomed view.
-  async _reload(index, cover, source, zoomed) {
-    if (this._sharpening.has(index)) return;
-    this._sharpening.add(index);
+  async _reload(index, cover, source, zoomed, { force = false } = {}) {
+    const running = this._sharpening.get(index);
+    if (running) {
+      if (!force) return running;
+      await running.catch(() => {});  // content changed during the reload: once more after it
+    }
+    const reload = this._reloadNow(index, cover, source, zoomed);
+    this._sharpening.set(index, reload);
+    return reload;
+  }
+
+  async _reloadNow(index, cover, source, zoomed) {
     try {
       const { image, owned, natural } = await loadPage(source, { index, size: cover, signal: this._abort.signal });
       if (owned) this._owned.add(image);

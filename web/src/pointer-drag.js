@@ -11,8 +11,10 @@ export class PointerDrag {
    * @param {import('./book-view.js').BookView} view
    * @param {{ onTurnStart?: (direction: 'forward'|'backward') => void,
    *           onTurnEnd?: (completed: boolean) => Promise<void>|void,
+   *           onHintStart?: () => void, (a corner lifts as the mouse hovers it)
    *           onHintEnd?: () => void,   (a corner lifted by hovering fell back)
-   *           enabled?: () => boolean }} [hooks]
+   *           enabled?: () => boolean,
+   *           pressAllowed?: (clientX: number, clientY: number) => boolean }} [hooks]  (the turnArea option)
    */
   constructor(view, hooks = {}) {
     this.view = view;
@@ -62,6 +64,7 @@ export class PointerDrag {
 
   _onDown(event) {
     if (!this._enabled() || !event.isPrimary || event.button !== 0 || this._drag) return;
+    if (this._hooks.pressAllowed && !this._hooks.pressAllowed(event.clientX, event.clientY)) return;
     this.strokeWasDrag = false;
     const p = this._pixel(event);
     const grip = this._hint ? this._hint.grip : this.view.book.gripAt(p.x, p.y, p.width, p.height);
@@ -159,7 +162,10 @@ export class PointerDrag {
       if (!same) this._endHint();
       return;
     }
-    if (!near || book.animating() || !book.startHeldTurn(grip)) return;
+    if (!near || book.animating()) return;
+    if (this._hooks.pressAllowed && !this._hooks.pressAllowed(event.clientX, event.clientY)) return;
+    if (!book.startHeldTurn(grip)) return;
+    this._hooks.onHintStart?.();
     const hint = { grip, start: performance.now(), frame: 0 };
     this._hint = hint;
     const step = (now) => {

@@ -23,7 +23,7 @@ export function swipeDirection(dx, dy, direction) {
 
 /**
  * Calls `tap(clientX, clientY)` for a primary mouse click or a touch/pen tap on `element`, and
- * `swipe(dx, dy)` (CSS px, end minus start) for a touch/pen stroke of SWIPE_MIN or more. A second
+ * `swipe(dx, dy, x, y)` (CSS px, end minus start; where it started) for a touch/pen stroke of SWIPE_MIN or more. A second
  * finger cancels the stroke (pinch-zoom is not a swipe). Returns a function that stops listening.
  */
 export function listenForTapsAndSwipes(element, { tap, swipe }) {
@@ -48,7 +48,7 @@ export function listenForTapsAndSwipes(element, { tap, swipe }) {
     const dy = event.clientY - y;
     const elapsed = event.timeStamp - time;
     if (Math.hypot(dx, dy) <= TAP_SLOP && elapsed <= TAP_MAX_MS) tap(x, y);
-    else if (Math.max(Math.abs(dx), Math.abs(dy)) >= SWIPE_MIN) swipe(dx, dy);
+    else if (Math.max(Math.abs(dx), Math.abs(dy)) >= SWIPE_MIN) swipe(dx, dy, x, y);
   };
   const onPointerCancel = (event) => {
     if (stroke && event.pointerId === stroke.id) stroke = null;

@@ -1,0 +1,196 @@
+// Browser: HTML pages. An element in `pages` is shown live over its place while it lies open (typing,
+// clicking, links work and never turn the page), is the page's texture while it moves (read back: the
+// red block where the DOM has it, the typed text), follows DOM changes before it next shows, turns
+// from its edge, works on still pages and in <cone-flipbook>, and goes back where it came from.
+import { test, expect } from '@playwright/test';
+import { openReady } from './helpers.js';
+
+const FIXTURE = '/tests/browser/fixtures/html-fixture.html';
+
+/** Opens a double book of 6 pages whose page 2 (right of the spread [1, 2]) is the HTML page. */
+async function openHtmlBook(page, options = {}) {
+  await openReady(page, FIXTURE);
+  await page.evaluate(async (options) => {
+    const html = window.makeHtmlPage();
+    window.htmlHome = document.createElement('div');
+    window.htmlHome.append(html);
+    document.body.append(window.htmlHome);
+    const pages = Array.from({ length: 6 }, (_, i) => (i === 2 ? html : window.makeNumberedPage(i)));
+    const Book = options.still ? window.StaticBook : window.Flipbook;
+    window.book = await Book.create(window.container, { pages, display: 'double', startPage: 1, duration: 400, ...options.book });
+    window.events = [];
+    for (const type of ['turnstart', 'turned']) window.book.addEventListener(type, (e) => window.events.push({ type, ...e.detail }));
+    await window.book.whenIdle();
+  }, options);
+}
+
+/** The HTML page's parts: viewport rectangles, and whether its sheet shows live. */
+const parts = (page) => page.evaluate(() => {
+  const root = document.getElementById('form');
+  const rect = (el) => el.getBoundingClientRect().toJSON();
+  const sheet = root.closest('.conecurl-html-page');
+  return {
+    input: rect(root.querySelector('.name')), button: rect(root.querySelector('.count')), link: rect(root.querySelector('.link')),
+    block: rect(root.querySelector('.block')), page: rect(sheet), live: !sheet.inert,
+    count: root.querySelector('.count').textContent, typed: root.querySelector('.name').value,
+  };
+});
+
+/** Canvas pixels (drawn now) of the WebGL book: RGB at viewport points, and dark pixels in a viewport rectangle. */
+const readBack = (page, points, box) => page.evaluate(({ points, box }) => {
+  const book = window.book;
+  const canvas = book.surface.canvas.getBoundingClientRect();
+  book.surface.drawNow();
+  const pixels = book.surface.readPixels();
+  const at = (x, y) => { const i = (Math.round(y - canvas.top) * pixels.width + Math.round(x - canvas.left)) * 4; return [...pixels.data.slice(i, i + 3)]; };
+  let dark = 0;
+  if (box) {
+    for (let y = Math.ceil(box.y); y < box.y + box.height; y++) {
+      for (let x = Math.ceil(box.x); x < box.x + box.width; x++) if (Math.max(...at(x, y)) < 110) dark++;
+    }
+  }
+  return { colours: points.map(([x, y]) => at(x, y)), dark };
+}, { points, box });
+
+const isRed = ([r, g, b]) => r > 140 && g < 90 && b < 90;
+const centre = (r) => [r.x + r.width / 2, r.y + r.height / 2];
+
+test('browser: an HTML page lies live over its place: typing, clicking and its link work and never turn; its texture shows the red block where the DOM has it and the typed text', async ({ page }) => {
+  await openHtmlBook(page, { book: { duration: 4000 } });
+  const before = await parts(page);
+  expect(before.live).toBe(true);
+  const place = await page.evaluate(() => window.book.openPagePlaces().find((p) => p.page === 2));
+  const canvasBox = await page.evaluate(() => window.book.surface.canvas.getBoundingClientRect().toJSON());
+  expect(Math.abs(before.page.x - (canvasBox.x + place.x))).toBeLessThan(1);
+  expect(Math.abs(before.page.width - place.width)).toBeLessThan(1);
+  const textureBefore = await readBack(page, [centre(before.block)], before.input);
+
+  await page.mouse.click(...centre(before.input));
+  await page.keyboard.type('Hello');
+  await page.keyboard.press('ArrowLeft');  // moves the caret: a key the field keeps, not a turn
+  for (let i = 0; i < 3; i++) await page.mouse.click(...centre(before.button));
+  await page.mouse.click(...centre(before.link));
+  await page.mouse.click(...centre(before.block));
+  await page.waitForTimeout(500);  // past a click series and the texture's refresh delay
+  const after = await parts(page);
+  expect([after.typed, after.count]).toEqual(['Hello', '3']);
+  expect(await page.evaluate(() => [window.book.page, window.events.length, location.hash])).toEqual([1, 0, '#ordered']);
+
+  // The texture (under the live page) was made again: the block is red where the DOM has it; the
+  // field shows more dark pixels (the typed text) than before.
+  await page.evaluate(() => window.book.whenIdle());
+  const texture = await readBack(page, [centre(after.block)], after.input);
+  expect(isRed(textureBefore.colours[0])).toBe(true);
+  expect(isRed(texture.colours[0])).toBe(true);
+  expect(texture.dark).toBeGreaterThan(textureBefore.dark + 20);
+
+  // Once the turn starts the live page is hidden and the moving leaf shows its texture, red block and all.
+  await page.evaluate(() => { window.turning = window.book.next(); });
+  await page.waitForFunction(() => window.book.surface.book.frame().some((leaf) => !leaf.resting && leaf.curl.rho > 0.05));
+  expect((await parts(page)).live).toBe(false);
+  const red = await page.evaluate(() => {
+    window.book.surface.drawNow();
+    const pixels = window.book.surface.readPixels();
+    let n = 0;
+    for (let i = 0; i < pixels.data.length; i += 4) if (pixels.data[i] > 140 && pixels.data[i + 1] < 90 && pixels.data[i + 2] < 90) n++;
+    return n;
+  });
+  expect(red).toBeGreaterThan(200);
+  expect(await page.evaluate(() => window.turning)).toBe(true);
+});
+
+test('browser: a press on an HTML page\'s content never turns it, a drag from its free edge does (turnArea \'edges\', the default)', async ({ page }) => {
+  await openHtmlBook(page);
+  expect(await page.evaluate(() => window.book.options.turnArea)).toBe('edges');
+  const { page: box } = await parts(page);
+  // A drag across the middle of the page: the content's (text selection), no turn.
+  await page.mouse.move(box.x + box.width * 0.5, box.y + box.height * 0.3);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width * 0.1, box.y + box.height * 0.35, { steps: 8 });
+  await page.mouse.up();
+  await page.waitForTimeout(400);
+  expect(await page.evaluate(() => [window.book.page, window.events.length])).toEqual([1, 0]);
+  // From the free edge (the right one, in the band left to the canvas): the leaf follows and turns.
+  await page.mouse.move(box.x + box.width * 0.97, box.y + box.height * 0.6);
+  await page.mouse.down();
+  await page.mouse.move(box.x - box.width * 0.6, box.y + box.height * 0.55, { steps: 12 });
+  await page.mouse.up();
+  await page.waitForFunction(() => window.events.some((e) => e.type === 'turned'));
+  expect(await page.evaluate(() => window.events.map((e) => [e.type, e.drag ?? null, e.page]))).toEqual([['turnstart', true, 3], ['turned', null, 3]]);
+});
+
+test('browser: an HTML page changed while it is elsewhere shows the change when it next lies open', async ({ page }) => {
+  await openHtmlBook(page, { book: { startPage: 4 } });
+  expect(await page.evaluate(() => window.book.pageState(2).state)).toBe('loaded');  // kept, out of sight
+  await page.evaluate(() => { document.querySelector('#form .block').style.background = 'rgb(30, 30, 200)'; });
+  await page.waitForTimeout(400);
+  await page.evaluate(async () => { await window.book.whenIdle(); await window.book.flip(1, { animate: false }); });
+  const { block } = await parts(page);
+  const { colours: [colour] } = await readBack(page, [centre(block)]);
+  expect(colour[2]).toBeGreaterThan(140);
+  expect(colour[0]).toBeLessThan(90);
+});
+
+test('browser: still pages (StaticBook) show HTML pages live too, and destroy() gives the element back where it came from', async ({ page }) => {
+  await openHtmlBook(page, { still: true });
+  const { input, live } = await parts(page);
+  expect(live).toBe(true);
+  await page.mouse.click(...centre(input));
+  await page.keyboard.type('Still');
+  expect((await parts(page)).typed).toBe('Still');
+  const back = await page.evaluate(() => {
+    window.book.destroy();
+    const element = document.getElementById('form');
+    return { home: element.parentElement === window.htmlHome, inert: element.closest('[inert]') !== null, value: element.querySelector('.name').value };
+  });
+  expect(back).toEqual({ home: true, inert: false, value: 'Still' });
+});
+
+test('browser: <cone-flipbook> takes its child elements as pages: an <img> an image page, a <section> a live HTML page styled by the document', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    const element = document.createElement('cone-flipbook');
+    element.setAttribute('display', 'double');
+    element.setAttribute('start-page', '1');
+    element.style.cssText = 'width:640px;height:400px';
+    const image = document.createElement('img');
+    image.src = '/tests/browser/references/curl-t0-00.png';
+    element.append(image, window.makeHtmlPage(), image.cloneNode());
+    document.body.append(element);
+    const book = await element.whenReady();
+    const section = document.getElementById('form');
+    return {
+      pageCount: book.pageCount, open: book.openPages, slot: section.slot, parent: section.parentElement === element,
+      padding: getComputedStyle(section).paddingTop, width: section.getBoundingClientRect().width,
+      place: book.openPagePlaces().find((p) => p.page === 1)?.width,
+    };
+  });
+  expect(result).toMatchObject({ pageCount: 3, open: [1, 2], parent: true, padding: '12px' });
+  expect(result.slot).toMatch(/^conecurl-page-1$/);
+  expect(Math.abs(result.width - result.place)).toBeLessThan(1);
+});
+
+test('browser: 200 create/destroy cycles of a book with an HTML page keep the JS heap flat and leave the element where it was', async ({ page }) => {
+  test.setTimeout(180_000);
+  await openReady(page, FIXTURE);
+  const cdp = await page.context().newCDPSession(page);
+  const heap = async () => {
+    await cdp.send('HeapProfiler.collectGarbage');
+    return (await cdp.send('Runtime.getHeapUsage')).usedSize;
+  };
+  const cycles = (n) => page.evaluate(async (n) => {
+    const html = document.getElementById('form') ?? window.makeHtmlPage();
+    if (!html.isConnected) document.body.append(html);
+    for (let i = 0; i < n; i++) {
+      const book = await window.Flipbook.create(window.container, { pages: [window.makeNumberedPage(0), html, window.makeNumberedPage(2)] });
+      book.destroy();
+    }
+    return html.parentElement === document.body && document.querySelectorAll('.conecurl-html-page').length === 0;
+  }, n);
+  expect(await cycles(20)).toBe(true);
+  const at20 = await heap();
+  expect(await cycles(180)).toBe(true);
+  const at200 = await heap();
+  console.log(`HTML page books: JS heap ${at20} -> ${at200} bytes from cycle 20 to 200`);
+  expect(at200 - at20).toBeLessThan(1_000_000);
+});

@@ -1,0 +1,163 @@
+// HTML pages: live DOM where the reader interacts, a texture where the page moves. An overlay layer
+// that shows each open HTML page's element over its place while the book rests (inputs, links, video,
+// selection, focus all live), hides it while a leaf moves, and rasterises it to the page's texture
+// (modern-screenshot, an optional dependency imported only for books with HTML pages), again whenever
+// its content changes.
+import { PAPER } from './layout.js';
+import { freeEdge, liveClipPath } from './turn-area.js';
+
+const REFRESH_DELAY_MS = 150;  // a page's texture is made again once its content has rested this long
+const OFFSCREEN = 'translate(-100000px, 0)';
+
+async function importRasteriser() {
+  try {
+    return await import('modern-screenshot');
+  } catch (error) {
+    throw new Error('conecurl: HTML pages need the optional dependency modern-screenshot (npm install modern-screenshot) '
+      + `to draw them while they turn; it could not be loaded: ${error && error.message ? error.message : error}`);
+  }
+}
+
+export class HtmlPages {
+  /**
+   * @param {HTMLElement} root  the book's element: the layer goes in it, over the canvas
+   * @param {Array<object>} entries  the book's page entries; those with `html` get a `src` that rasterises them
+   * @param {{ direction: string, turnArea: string, zoom: () => number, pageSize: () => { width: number, height: number },
+   *           changed: (index: number) => void }} book
+   */
+  constructor(root, entries, book) {
+    this._book = book;
+    this._layer = document.createElement('div');
+    this._layer.className = 'conecurl-html-pages';
+    this._layer.style.cssText = 'position:absolute;inset:0;overflow:hidden;pointer-events:none';
+    root.prepend(this._layer);  // positioned, so above the canvas; below the links, which come later
+    this._pages = new Map();  // page index -> { element, sheet, content, home, observer }
+    this._dirty = new Set();
+    this._timer = 0;
+    this._size = null;        // the pages' CSS size at zoom 1, as last laid out
+    const host = root.getRootNode().host ?? null;  // <cone-flipbook>: its children stay its own, slotted
+    entries.forEach((entry, index) => {
+      if (!entry.html) return;
+      this._pages.set(index, this._mount(index, entry.html, host));
+      entry.src = (i, size) => this.snapshot(i, size);
+    });
+  }
+
+  /** Whether `index` is an HTML page. */
+  has(index) { return this._pages.has(index); }
+  /**
+   * Of `pages`, the HTML pages whose content changed since their texture was made; a page holding a
+   * canvas or video (moving pictures no mutation reports) always counts as changed.
+   */
+  staleAmong(pages) {
+    return pages.filter((page) => this._dirty.has(page)
+      || (this._pages.has(page) && this._pages.get(page).element.querySelector('canvas, video') !== null));
+  }
+  /** The texture of `index` is being made again now: it is fresh from here. */
+  refreshed(index) { this._dirty.delete(index); }
+
+  /** Shows the open HTML pages live over their places (CSS px of the root); the others go out of sight. */
+  place(places) {
+    const zoom = this._book.zoom();
+    this._resize(this._book.pageSize());
+    const open = new Map(places.filter((place) => this._pages.has(place.page)).map((place) => [place.page, place]));
+    for (const [index, page] of this._pages) {
+      const place = open.get(index);
+      if (!place) {
+        this._conceal(page);
+        continue;
+      }
+      page.sheet.style.transform = `translate(${place.x}px, ${place.y}px) scale(${zoom})`;
+      page.sheet.style.clipPath = liveClipPath(this._book.turnArea, this._size.width, this._size.height,
+        freeEdge(this._book.direction, place.turned));
+      page.sheet.inert = false;
+      page.sheet.removeAttribute('aria-hidden');
+    }
+  }
+
+  /** A leaf moves: every page shows as its texture. */
+  hide() {
+    for (const page of this._pages.values()) this._conceal(page);
+  }
+
+  /** The book is destroyed: each element goes back where it came from. */
+  remove() {
+    clearTimeout(this._timer);
+    for (const page of this._pages.values()) {
+      page.observer.disconnect();
+      for (const type of ['input', 'change']) page.element.removeEventListener(type, page.onInput);
+      if (page.slotted) page.element.removeAttribute('slot');
+      else if (page.home.parent) page.home.parent.insertBefore(page.element, page.home.next?.parentNode === page.home.parent ? page.home.next : null);
+      else page.element.remove();
+    }
+    this._pages.clear();
+    this._layer.remove();
+  }
+
+  /** The page's content drawn at `size` device pixels: a canvas for its texture. */
+  async snapshot(index, size) {
+    const page = this._pages.get(index);
+    this._dirty.delete(index);
+    this._resize(this._book.pageSize());
+    const { domToCanvas } = await importRasteriser();
+    const { width, height } = this._size;
+    // A slotted child is drawn itself (a clone of the slot would hold nothing); a moved one with its box.
+    return domToCanvas(page.slotted ? page.element : page.content, { width, height, scale: size.width / width, backgroundColor: PAPER });
+  }
+
+  _mount(index, element, host) {
+    const sheet = document.createElement('div');
+    sheet.className = 'conecurl-html-page';
+    sheet.dataset.page = String(index);
+    sheet.dataset.turnArea = this._book.turnArea;
+    sheet.style.cssText = `position:absolute;left:0;top:0;transform-origin:0 0;overflow:hidden;pointer-events:auto;background:${PAPER}`;
+    const content = document.createElement('div');
+    content.style.cssText = 'width:100%;height:100%;overflow:hidden;box-sizing:border-box';
+    sheet.append(content);
+    const home = { parent: element.parentNode, next: element.nextSibling };
+    const slotted = host !== null && element.parentNode === host;
+    if (slotted) {
+      // A child of <cone-flipbook> stays in the document's tree (its styles apply) and shows through a slot.
+      const slot = document.createElement('slot');
+      slot.name = `conecurl-page-${index}`;
+      element.slot = slot.name;
+      content.append(slot);
+    } else {
+      content.append(element);
+    }
+    const onInput = () => this._changed(index);
+    for (const type of ['input', 'change']) element.addEventListener(type, onInput);
+    const observer = new MutationObserver(() => this._changed(index));
+    observer.observe(element, { subtree: true, childList: true, attributes: true, characterData: true });
+    const page = { element, sheet, content, home, observer, onInput, slotted };
+    this._conceal(page);
+    this._layer.append(sheet);
+    return page;
+  }
+
+  _conceal(page) {
+    page.sheet.style.transform = OFFSCREEN;  // laid out still, so it can be drawn to its texture
+    page.sheet.inert = true;
+    page.sheet.setAttribute('aria-hidden', 'true');
+  }
+
+  // Every sheet is the page's CSS size at zoom 1 (a zoom scales it, never reflows it).
+  _resize(size) {
+    if (this._size && size.width === this._size.width && size.height === this._size.height) return;
+    const first = this._size === null;
+    this._size = { width: size.width, height: size.height };
+    for (const page of this._pages.values()) {
+      page.sheet.style.width = `${size.width}px`;
+      page.sheet.style.height = `${size.height}px`;
+    }
+    if (!first) for (const index of this._pages.keys()) this._changed(index);  // the content reflowed
+  }
+
+  _changed(index) {
+    this._dirty.add(index);
+    clearTimeout(this._timer);
+    this._timer = setTimeout(() => {
+      for (const page of [...this._dirty]) this._book.changed(page);
+    }, REFRESH_DELAY_MS);
+  }
+}
