@@ -194,3 +194,43 @@ test('browser: 200 create/destroy cycles of a book with an HTML page keep the JS
   console.log(`HTML page books: JS heap ${at20} -> ${at200} bytes from cycle 20 to 200`);
   expect(at200 - at20).toBeLessThan(1_000_000);
 });
+
+test('browser: turnArea limits where a press turns image pages too: \'edges\' turns from the free edge only, \'corners\' from its ends, \'none\' never (keys still turn)', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const tapsTurn = (turnArea, fx, fy) => page.evaluate(async ({ turnArea, fx, fy }) => {
+    window.book?.destroy();
+    const pages = Array.from({ length: 6 }, (_, i) => window.makeNumberedPage(i));
+    window.book = await window.Flipbook.create(window.container, { pages, display: 'double', startPage: 1, duration: 100, turnArea });
+    const canvas = window.book.surface.canvas.getBoundingClientRect();
+    const right = window.book.openPagePlaces().find((p) => !p.turned);  // the right page: free edge on the right
+    return { x: canvas.left + right.x + fx * right.width, y: canvas.top + right.y + fy * right.height };
+  }, { turnArea, fx, fy }).then(async (at) => {
+    await page.mouse.click(at.x, at.y);
+    await page.waitForTimeout(400);  // a click waits to tell a double-click
+    await page.evaluate(() => window.book.whenIdle());
+    return page.evaluate(() => window.book.page);
+  });
+  expect(await tapsTurn('page', 0.5, 0.5)).toBe(3);
+  expect(await tapsTurn('edges', 0.5, 0.5)).toBe(1);
+  expect(await tapsTurn('edges', 0.95, 0.5)).toBe(3);
+  expect(await tapsTurn('corners', 0.95, 0.5)).toBe(1);
+  expect(await tapsTurn('corners', 0.95, 0.97)).toBe(3);
+  expect(await tapsTurn('none', 0.95, 0.97)).toBe(1);
+  await page.evaluate(() => window.book.element.focus());
+  await page.keyboard.press('ArrowRight');
+  expect(await page.evaluate(async () => { await window.book.whenIdle(); return window.book.page; })).toBe(3);
+});
+
+test('browser: an HTML page\'s turn grips lie along its free edge (\'edges\') or at its free corners (\'corners\'), on whichever side it lies', async ({ page }) => {
+  await openHtmlBook(page, { book: { turnArea: 'corners' } });
+  const grips = await page.evaluate(() => {
+    const sheet = document.getElementById('form').closest('.conecurl-html-page').getBoundingClientRect();
+    return [...document.querySelectorAll('.conecurl-turn-grip')].map((g) => {
+      const r = g.getBoundingClientRect();
+      return { right: Math.round(sheet.right - r.right), top: Math.round(r.top - sheet.top), bottom: Math.round(sheet.bottom - r.bottom), square: Math.abs(r.width - r.height) < 1 };
+    });
+  });
+  expect(grips).toHaveLength(2);
+  expect(grips.every((g) => g.right === 0 && g.square)).toBe(true);
+  expect(grips.map((g) => Math.min(g.top, g.bottom))).toEqual([0, 0]);
+});

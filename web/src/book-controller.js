@@ -214,6 +214,7 @@ export class BookController extends EventTarget {
     this._html = new HtmlPages(this._shell.root, this._pages, {
       direction: this._settings.direction,
       turnArea: this._settings.turnArea,
+      canvas: this._canvas,
       zoom: () => this.zoom,
       pageSize: () => this._store.pageCssSize(),
       changed: (index) => { this._html?.refreshed(index); this._store.refresh(index); },

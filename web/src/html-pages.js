@@ -4,10 +4,13 @@
 // (modern-screenshot, an optional dependency imported only for books with HTML pages), again whenever
 // its content changes.
 import { PAPER } from './layout.js';
-import { freeEdge, liveClipPath } from './turn-area.js';
+import { freeEdge, turnGrips } from './turn-area.js';
 
 const REFRESH_DELAY_MS = 150;  // a page's texture is made again once its content has rested this long
 const OFFSCREEN = 'translate(-100000px, 0)';
+// What a grip hands to the canvas: presses, moves and clicks that turn, and zoom gestures.
+const FORWARDED = ['pointerdown', 'pointermove', 'pointerup', 'pointercancel', 'click', 'dblclick', 'wheel'];
+const EVENT_CLASS = { click: 'MouseEvent', dblclick: 'MouseEvent', wheel: 'WheelEvent' };
 
 async function importRasteriser() {
   try {
@@ -22,11 +25,18 @@ export class HtmlPages {
   /**
    * @param {HTMLElement} root  the book's element: the layer goes in it, over the canvas
    * @param {Array<object>} entries  the book's page entries; those with `html` get a `src` that rasterises them
-   * @param {{ direction: string, turnArea: string, zoom: () => number, pageSize: () => { width: number, height: number },
-   *           changed: (index: number) => void }} book
+   * @param {{ direction: string, turnArea: string, canvas: HTMLCanvasElement, zoom: () => number,
+   *           pageSize: () => { width: number, height: number }, changed: (index: number) => void }} book
    */
   constructor(root, entries, book) {
     this._book = book;
+    // A press on a grip (the turn area over live content) is the canvas's: the same event, sent there.
+    this._forward = (event) => {
+      event.stopPropagation();
+      if (event.cancelable) event.preventDefault();
+      const Class = globalThis[EVENT_CLASS[event.type] ?? 'PointerEvent'];
+      book.canvas.dispatchEvent(new Class(event.type, event));
+    };
     this._layer = document.createElement('div');
     this._layer.className = 'conecurl-html-pages';
     this._layer.style.cssText = 'position:absolute;inset:0;overflow:hidden;pointer-events:none';
@@ -68,8 +78,8 @@ export class HtmlPages {
         continue;
       }
       page.sheet.style.transform = `translate(${place.x}px, ${place.y}px) scale(${zoom})`;
-      page.sheet.style.clipPath = liveClipPath(this._book.turnArea, this._size.width, this._size.height,
-        freeEdge(this._book.direction, place.turned));
+      this._layGrips(page, turnGrips(this._book.turnArea, this._size.width, this._size.height,
+        freeEdge(this._book.direction, place.turned)));
       page.sheet.inert = false;
       page.sheet.removeAttribute('aria-hidden');
     }
@@ -129,10 +139,26 @@ export class HtmlPages {
     for (const type of ['input', 'change']) element.addEventListener(type, onInput);
     const observer = new MutationObserver(() => this._changed(index));
     observer.observe(element, { subtree: true, childList: true, attributes: true, characterData: true });
-    const page = { element, sheet, content, home, observer, onInput, slotted };
+    const page = { element, sheet, content, home, observer, onInput, slotted, grips: [], gripKey: '' };
     this._conceal(page);
     this._layer.append(sheet);
     return page;
+  }
+
+  // Transparent boxes over the content's turn area (its free edge or corners): presses there turn.
+  _layGrips(page, rects) {
+    const key = JSON.stringify(rects);
+    if (page.gripKey === key) return;
+    page.gripKey = key;
+    for (const grip of page.grips.splice(0)) grip.remove();
+    for (const { x, y, width, height } of rects) {
+      const grip = document.createElement('div');
+      grip.className = 'conecurl-turn-grip';
+      grip.style.cssText = `position:absolute;left:${x}px;top:${y}px;width:${width}px;height:${height}px;touch-action:none`;
+      for (const type of FORWARDED) grip.addEventListener(type, this._forward, type === 'wheel' ? { passive: false } : undefined);
+      page.grips.push(grip);
+      page.sheet.append(grip);
+    }
   }
 
   _conceal(page) {

@@ -1,6 +1,6 @@
 // Where a press may turn a page (the `turnArea` option): anywhere on it, a band along its free edge,
-// its two free corners, or nowhere. One rule for presses on the canvas (input) and for the part of an
-// HTML page's live content that lets presses through to the canvas (html-pages.js).
+// its two free corners, or nowhere. One rule for presses on the canvas (input) and for the grips laid
+// over an HTML page's live content that hand presses to the canvas (html-pages.js).
 
 export const TURN_AREAS = ['page', 'edges', 'corners', 'none'];
 const BAND = 0.15;       // the band's depth, as a fraction of the page across the turn
@@ -33,24 +33,20 @@ export function inTurnArea(turnArea, rect, edge, x, y) {
 }
 
 /**
- * The CSS clip-path of a live page's content (width x height CSS px) that leaves its turn area to the
- * canvas beneath, where presses turn; '' where the content keeps every press ('none') or where presses
- * pass by CSS instead ('page': only its interactive elements take them).
+ * The parts of a live page's content (width x height CSS px, from its top-left) where a press belongs
+ * to the turn, not to the content: [{ x, y, width, height }]. Empty for 'page' (there presses pass by
+ * CSS to the canvas wherever the content is not interactive) and for 'none'.
  */
-export function liveClipPath(turnArea, width, height, edge) {
-  if (turnArea !== 'edges' && turnArea !== 'corners') return '';
+export function turnGrips(turnArea, width, height, edge) {
+  if (turnArea !== 'edges' && turnArea !== 'corners') return [];
   const d = bandDepth(width, height, edge);
-  if (turnArea === 'edges') {
-    const inset = { top: [d, 0, 0, 0], right: [0, d, 0, 0], bottom: [0, 0, d, 0], left: [0, 0, 0, d] }[edge];
-    return `inset(${inset.map((n) => `${n}px`).join(' ')})`;
-  }
-  // The page less a d x d square at each end of the free edge, as a polygon (x, y in px).
-  const [w, h] = [width, height];
-  const points = {
-    right: [[0, 0], [w - d, 0], [w - d, d], [w, d], [w, h - d], [w - d, h - d], [w - d, h], [0, h]],
-    left: [[d, 0], [w, 0], [w, h], [d, h], [d, h - d], [0, h - d], [0, d], [d, d]],
-    bottom: [[0, 0], [w, 0], [w, h - d], [w - d, h - d], [w - d, h], [d, h], [d, h - d], [0, h - d]],
-    top: [[d, 0], [w - d, 0], [w - d, d], [w, d], [w, h], [0, h], [0, d], [d, d]],
+  const strip = {
+    left: { x: 0, y: 0, width: d, height }, right: { x: width - d, y: 0, width: d, height },
+    top: { x: 0, y: 0, width, height: d }, bottom: { x: 0, y: height - d, width, height: d },
   }[edge];
-  return `polygon(${points.map(([x, y]) => `${x}px ${y}px`).join(', ')})`;
+  if (turnArea === 'edges') return [strip];
+  const along = edge === 'left' || edge === 'right';
+  return along
+    ? [{ ...strip, height: d }, { ...strip, y: height - d, height: d }]
+    : [{ ...strip, width: d }, { ...strip, x: width - d, width: d }];
 }
