@@ -4,6 +4,7 @@
 // from its edge, works on still pages and in <cone-flipbook>, and goes back where it came from.
 import { test, expect } from '@playwright/test';
 import { openReady } from './helpers.js';
+import { decodePng } from './png.js';
 
 const FIXTURE = '/tests/browser/fixtures/html-fixture.html';
 
@@ -233,4 +234,30 @@ test('browser: an HTML page\'s turn grips lie along its free edge (\'edges\') or
   expect(grips).toHaveLength(2);
   expect(grips.every((g) => g.right === 0 && g.square)).toBe(true);
   expect(grips.map((g) => Math.min(g.top, g.bottom))).toEqual([0, 0]);
+});
+
+test('browser: no visible jump when a live HTML page gives way to its texture: the same pixels within a small tolerance (screenshots of both)', async ({ page }) => {
+  await openHtmlBook(page);
+  const place = await page.evaluate(() => {
+    const c = window.book.surface.canvas.getBoundingClientRect();
+    const p = window.book.openPagePlaces().find((q) => q.page === 2);
+    return { x: c.left + p.x, y: c.top + p.y, width: p.width, height: p.height };
+  });
+  const clip = { x: Math.ceil(place.x) + 1, y: Math.ceil(place.y) + 1, width: Math.floor(place.width) - 2, height: Math.floor(place.height) - 2 };
+  const live = decodePng(await page.screenshot({ clip }));
+  await page.evaluate(() => { document.querySelector('.conecurl-html-page').style.visibility = 'hidden'; });
+  const texture = decodePng(await page.screenshot({ clip }));
+  let sum = 0;
+  let off = 0;
+  for (let i = 0; i < live.data.length; i += 4) {
+    const d = (Math.abs(live.data[i] - texture.data[i]) + Math.abs(live.data[i + 1] - texture.data[i + 1])
+      + Math.abs(live.data[i + 2] - texture.data[i + 2])) / 3;
+    sum += d;
+    if (d > 32) off++;
+  }
+  const pixels = live.width * live.height;
+  console.log(`swap: live page vs its texture, mean difference ${(sum / pixels).toFixed(2)} of 255, ${(100 * off / pixels).toFixed(2)} % of pixels off by > 32`);
+  // Lighting and gutter shading are on the texture only, and text is filtered: a few levels on average.
+  expect(sum / pixels).toBeLessThan(8);
+  expect(off / pixels).toBeLessThan(0.08);
 });
