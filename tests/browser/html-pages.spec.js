@@ -261,3 +261,48 @@ test('browser: no visible jump when a live HTML page gives way to its texture: t
   expect(sum / pixels).toBeLessThan(8);
   expect(off / pixels).toBeLessThan(0.08);
 });
+
+test('browser: a playing <video> on an HTML page goes on playing on its texture while the page turns (its colour changes mid-turn)', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  await page.evaluate(async () => {
+    // A video whose frames alternate red and blue every 300 ms (a canvas stream: no file needed).
+    const source = Object.assign(document.createElement('canvas'), { width: 64, height: 64 });
+    const g = source.getContext('2d');
+    const paint = (now) => {
+      g.fillStyle = Math.floor(now / 300) % 2 ? 'rgb(30, 30, 220)' : 'rgb(220, 30, 30)';
+      g.fillRect(0, 0, 64, 64);
+      requestAnimationFrame(paint);
+    };
+    requestAnimationFrame(paint);
+    const video = Object.assign(document.createElement('video'), { muted: true, playsInline: true });
+    video.srcObject = source.captureStream(30);
+    video.style.cssText = 'display:block;width:100%;height:80%;object-fit:fill';
+    const html = document.createElement('section');
+    html.className = 'html-page';
+    html.append(video);
+    await video.play();
+    const pages = Array.from({ length: 6 }, (_, i) => (i === 2 ? html : window.makeNumberedPage(i)));
+    window.book = await window.Flipbook.create(window.container, { pages, display: 'double', startPage: 1, duration: 6000 });
+    await window.book.whenIdle();
+    window.turning = window.book.next();
+  });
+  const colours = [];
+  for (let i = 0; i < 6; i++) {
+    await page.waitForTimeout(150);
+    colours.push(await page.evaluate(() => {
+      window.book.surface.drawNow();
+      const pixels = window.book.surface.readPixels();
+      let red = 0;
+      let blue = 0;
+      for (let k = 0; k < pixels.data.length; k += 4) {
+        const [r, g, b] = [pixels.data[k], pixels.data[k + 1], pixels.data[k + 2]];
+        if (r > 140 && g < 90 && b < 90) red++;
+        if (b > 140 && r < 90 && g < 90) blue++;
+      }
+      return red > blue ? 'red' : 'blue';
+    }));
+  }
+  console.log(`video on a turning page, dominant colour every 150 ms: ${colours.join(' ')}`);
+  expect(new Set(colours).size).toBe(2);  // both colours showed while the page moved
+  expect(await page.evaluate(() => window.book.animating)).toBe(true);  // all of it mid-turn
+});

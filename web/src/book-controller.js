@@ -218,6 +218,9 @@ export class BookController extends EventTarget {
       zoom: () => this.zoom,
       pageSize: () => this._store.pageCssSize(),
       changed: (index) => { this._html?.refreshed(index); this._store.refresh(index); },
+      pagesOnScreen: () => this._surface?.pagesOnScreen() ?? [],
+      // A video's new frame drawn into the page's image: upload it again, if the page is still kept.
+      redrawn: (index, canvas) => { if (this._store.holds(index, canvas)) this._surface.setPageImage(index, canvas, { cover: this._store.cover() }); },
     });
     this._layers.unshift(this._html);
   }

@@ -8,6 +8,7 @@ import { PAPER } from './layout.js';
 import { freeEdge, turnGrips } from './turn-area.js';
 
 const REFRESH_DELAY_MS = 150;  // a page's texture is made again once its content has rested this long
+const SNAPSHOT_TIMEOUT_MS = 10000;  // a page the rasteriser cannot draw by then fails (pageerror), the book goes on
 const OFFSCREEN = 'translate(-100000px, 0)';
 // What a grip hands to the canvas: presses, moves and clicks that turn, and zoom gestures.
 const FORWARDED = ['pointerdown', 'pointermove', 'pointerup', 'pointercancel', 'click', 'dblclick', 'wheel'];
@@ -27,7 +28,8 @@ export class HtmlPages {
    * @param {HTMLElement} root  the book's element: the layer goes in it, over the canvas
    * @param {Array<object>} entries  the book's page entries; those with `html` get a `src` that rasterises them
    * @param {{ direction: string, turnArea: string, canvas: HTMLCanvasElement, zoom: () => number,
-   *           pageSize: () => { width: number, height: number }, changed: (index: number) => void }} book
+   *           pageSize: () => { width: number, height: number }, changed: (index: number) => void,
+   *           pagesOnScreen: () => number[], redrawn: (index: number, canvas: HTMLCanvasElement) => void }} book
    */
   constructor(root, entries, book) {
     this._book = book;
@@ -45,6 +47,8 @@ export class HtmlPages {
     this._pages = new Map();  // page index -> { element, sheet, content, home, observer }
     this._dirty = new Set();
     this._timer = 0;
+    this._moving = false;     // a leaf moves: the live pages are hidden, their textures show
+    this._removed = false;
     this._size = null;        // the pages' CSS size at zoom 1, as last laid out
     const host = root.getRootNode().host ?? null;  // <cone-flipbook>: its children stay its own, slotted
     entries.forEach((entry, index) => {
@@ -69,6 +73,7 @@ export class HtmlPages {
 
   /** Shows the open HTML pages live over their places (CSS px of the root); the others go out of sight. */
   place(places) {
+    this._moving = false;  // at rest: a playing video is live again
     const zoom = this._book.zoom();
     this._resize(this._book.pageSize());
     const open = new Map(places.filter((place) => this._pages.has(place.page)).map((place) => [place.page, place]));
@@ -86,13 +91,36 @@ export class HtmlPages {
     }
   }
 
-  /** A leaf moves: every page shows as its texture. */
+  /** A leaf moves: every page shows as its texture, and the videos playing on them go on playing there. */
   hide() {
     for (const page of this._pages.values()) this._conceal(page);
+    if (!this._moving) {
+      this._moving = true;
+      if ([...this._pages.values()].some((page) => page.videos.length > 0)) this._followVideos();
+    }
+  }
+
+  // While leaves move, each frame of a playing <video> on a page on screen is drawn into that page's
+  // snapshot where the video lies, and the texture is updated from it: one draw and one upload a frame.
+  _followVideos() {
+    const step = () => {
+      if (!this._moving || this._removed) return;
+      const onScreen = new Set(this._book.pagesOnScreen());
+      for (const [index, page] of this._pages) {
+        if (!page.canvas || !onScreen.has(index)) continue;
+        const playing = page.videos.filter(({ video }) => !video.paused && !video.ended && video.readyState >= 2);
+        if (playing.length === 0) continue;
+        this._drawVideos(page, playing);
+        this._book.redrawn(index, page.canvas);
+      }
+      requestAnimationFrame(step);
+    };
+    requestAnimationFrame(step);
   }
 
   /** The book is destroyed: each element goes back where it came from. */
   remove() {
+    this._removed = true;
     clearTimeout(this._timer);
     for (const page of this._pages.values()) {
       page.observer.disconnect();
@@ -113,7 +141,26 @@ export class HtmlPages {
     const { domToCanvas } = await importRasteriser();
     const { width, height } = this._size;
     // A slotted child is drawn itself (a clone of the slot would hold nothing); a moved one with its box.
-    return domToCanvas(page.slotted ? page.element : page.content, { width, height, scale: size.width / width, backgroundColor: PAPER });
+    const target = page.slotted ? page.element : page.content;
+    // Videos are left to us (the rasteriser can wait for ever on a stream): their frames are drawn in.
+    const drawing = domToCanvas(target, { width, height, scale: size.width / width, backgroundColor: PAPER,
+      filter: (node) => node.localName !== 'video' });
+    let timer = 0;
+    const late = new Promise((resolve, reject) => {
+      timer = setTimeout(() => reject(new Error(`conecurl: drawing HTML page ${index} took longer than ${SNAPSHOT_TIMEOUT_MS / 1000} s`)),
+        SNAPSHOT_TIMEOUT_MS);
+    });
+    const canvas = await Promise.race([drawing, late]).finally(() => clearTimeout(timer));
+    // Where its videos lie, in the page's CSS px: their frames are drawn there now and while the page moves.
+    const box = target.getBoundingClientRect();
+    const unscale = width / Math.max(1, box.width);
+    page.videos = [...page.element.querySelectorAll('video')].map((video) => {
+      const r = video.getBoundingClientRect();
+      return { video, rect: { x: (r.left - box.left) * unscale, y: (r.top - box.top) * unscale, width: r.width * unscale, height: r.height * unscale } };
+    });
+    page.canvas = canvas;
+    this._drawVideos(page, page.videos.filter(({ video }) => video.readyState >= 2));
+    return canvas;
   }
 
   _mount(index, element, host) {
@@ -140,10 +187,16 @@ export class HtmlPages {
     for (const type of ['input', 'change']) element.addEventListener(type, onInput);
     const observer = new MutationObserver(() => this._changed(index));
     observer.observe(element, { subtree: true, childList: true, attributes: true, characterData: true });
-    const page = { element, sheet, content, home, observer, onInput, slotted, grips: [], gripKey: '' };
+    const page = { element, sheet, content, home, observer, onInput, slotted, grips: [], gripKey: '', canvas: null, videos: [] };
     this._conceal(page);
     this._layer.append(sheet);
     return page;
+  }
+
+  _drawVideos(page, videos) {
+    const g = page.canvas.getContext('2d');
+    const scale = page.canvas.width / this._size.width;
+    for (const { video, rect } of videos) g.drawImage(video, rect.x * scale, rect.y * scale, rect.width * scale, rect.height * scale);
   }
 
   // Transparent boxes over the content's turn area (its free edge or corners): presses there turn.

@@ -30,6 +30,8 @@ export class PageStore {
 
   /** Where page `index` stands: { state, reason?, error? }. */
   pageState(index) { return this._cache.pageState(index); }
+  /** Whether `image` is the image kept for page `index`. */
+  holds(index, image) { return this._images.get(index) === image; }
   /** Pages whose images are kept (held by the surface), in page order. */
   get residentPages() { return [...this._images.keys()].sort((a, b) => a - b); }
   /** { loaded, total, pending }: pages loaded or failed, the page count, loads running now. */
