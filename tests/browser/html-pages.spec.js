@@ -306,3 +306,25 @@ test('browser: a playing <video> on an HTML page goes on playing on its texture 
   expect(new Set(colours).size).toBe(2);  // both colours showed while the page moved
   expect(await page.evaluate(() => window.book.animating)).toBe(true);  // all of it mid-turn
 });
+
+test('browser: an HTML page changed while leaves move is drawn again once the book lands, never during the turning frames', async ({ page }) => {
+  await openHtmlBook(page, { book: { duration: 2500 } });
+  await page.evaluate(() => {
+    const surface = window.book.surface;
+    const setPageImage = surface.setPageImage.bind(surface);
+    window.uploads = [];
+    surface.setPageImage = (index, ...rest) => {
+      window.uploads.push({ index, moving: window.book.animating });
+      return setPageImage(index, ...rest);
+    };
+    window.turning = window.book.next();
+  });
+  await page.waitForFunction(() => window.book.animating);
+  await page.evaluate(() => { document.querySelector('#form .block').style.background = 'rgb(30, 30, 200)'; });
+  await page.waitForTimeout(800);  // well past the refresh delay, still mid-turn
+  expect(await page.evaluate(() => window.book.animating)).toBe(true);
+  expect(await page.evaluate(() => window.uploads.filter((u) => u.index === 2))).toEqual([]);
+  await page.evaluate(() => window.turning);
+  await page.waitForFunction(() => window.uploads.some((u) => u.index === 2));
+  expect(await page.evaluate(() => window.uploads.filter((u) => u.index === 2).map((u) => u.moving))).toEqual([false]);
+});

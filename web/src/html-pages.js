@@ -74,6 +74,7 @@ export class HtmlPages {
   /** Shows the open HTML pages live over their places (CSS px of the root); the others go out of sight. */
   place(places) {
     this._moving = false;  // at rest: a playing video is live again
+    if (this._dirty.size > 0) this._scheduleRefresh();  // changes made while leaves moved
     const zoom = this._book.zoom();
     this._resize(this._book.pageSize());
     const open = new Map(places.filter((place) => this._pages.has(place.page)).map((place) => [place.page, place]));
@@ -233,10 +234,17 @@ export class HtmlPages {
     if (!first) for (const index of this._pages.keys()) this._changed(index);  // the content reflowed
   }
 
+  // Content changed: its texture is made again once it has rested, and never during turning frames
+  // (while leaves move the page stays marked, and is drawn when the book lands or before it next moves).
   _changed(index) {
     this._dirty.add(index);
+    this._scheduleRefresh();
+  }
+
+  _scheduleRefresh() {
     clearTimeout(this._timer);
     this._timer = setTimeout(() => {
+      if (this._moving || this._removed) return;
       for (const page of [...this._dirty]) this._book.changed(page);
     }, REFRESH_DELAY_MS);
   }
