@@ -32,6 +32,8 @@ const validCreate = fc.record({
   loadWindow: fc.integer({ min: 1, max: 3 }),
   label: fc.constantFrom('Book', 'Catalogue <img src=x onerror=alert(1)>'),
   antialias: fc.constantFrom('auto', true, false),
+  turnArea: fc.constantFrom('page', 'edges', 'corners', 'none'),
+  htmlPages: flag,  // not an option: the fixture makes every fourth page a live HTML page
 }, { requiredKeys: ['pages', 'duration'] }).map((options) => {
   if (options.startPage !== undefined) options.startPage %= options.pages;
   return options;
