@@ -202,7 +202,8 @@ export class BookController extends EventTarget {
     });
     this._showOpenPages();
     this._store.update();
-    await this.whenIdle();
+    // Ready once the pages on screen are (their neighbours go on loading, and say so in `progress`).
+    await this._store.whenSettled(this._surface.pagesOnScreen());
     this._emit('ready', { page: this.page });
   }
 

@@ -8,7 +8,10 @@ import { PAPER } from './layout.js';
 import { freeEdge, turnGrips } from './turn-area.js';
 
 const REFRESH_DELAY_MS = 150;  // a page's texture is made again once its content has rested this long
-const SNAPSHOT_TIMEOUT_MS = 10000;  // a page the rasteriser cannot draw by then fails (pageerror), the book goes on
+const SNAPSHOT_TIMEOUT_MS = 10000;
+// Changes no mutation reports: form values, and images, videos or fonts in the page that finished loading
+// (listened to in the capture phase: load events do not bubble).
+const CHANGE_EVENTS = ['input', 'change', 'load', 'loadeddata'];  // a page the rasteriser cannot draw by then fails (pageerror), the book goes on
 const OFFSCREEN = 'translate(-100000px, 0)';
 // What a grip hands to the canvas: presses, moves and clicks that turn, and zoom gestures.
 const FORWARDED = ['pointerdown', 'pointermove', 'pointerup', 'pointercancel', 'click', 'dblclick', 'wheel'];
@@ -50,6 +53,9 @@ export class HtmlPages {
     this._moving = false;     // a leaf moves: the live pages are hidden, their textures show
     this._removed = false;
     this._size = null;        // the pages' CSS size at zoom 1, as last laid out
+    // A web font that arrives later changes how every page looks.
+    this._fontsLoaded = () => { for (const index of this._pages.keys()) this._changed(index); };
+    document.fonts?.addEventListener?.('loadingdone', this._fontsLoaded);
     const host = root.getRootNode().host ?? null;  // <cone-flipbook>: its children stay its own, slotted
     entries.forEach((entry, index) => {
       if (!entry.html) return;
@@ -123,9 +129,10 @@ export class HtmlPages {
   remove() {
     this._removed = true;
     clearTimeout(this._timer);
+    document.fonts?.removeEventListener?.('loadingdone', this._fontsLoaded);
     for (const page of this._pages.values()) {
       page.observer.disconnect();
-      for (const type of ['input', 'change']) page.element.removeEventListener(type, page.onInput);
+      for (const type of CHANGE_EVENTS) page.element.removeEventListener(type, page.onInput, true);
       if (page.slotted) page.element.removeAttribute('slot');
       else if (page.home.parent) page.home.parent.insertBefore(page.element, page.home.next?.parentNode === page.home.parent ? page.home.next : null);
       else page.element.remove();
@@ -185,7 +192,7 @@ export class HtmlPages {
       content.append(element);
     }
     const onInput = () => this._changed(index);
-    for (const type of ['input', 'change']) element.addEventListener(type, onInput);
+    for (const type of CHANGE_EVENTS) element.addEventListener(type, onInput, true);
     const observer = new MutationObserver(() => this._changed(index));
     observer.observe(element, { subtree: true, childList: true, attributes: true, characterData: true });
     const page = { element, sheet, content, home, observer, onInput, slotted, grips: [], gripKey: '', canvas: null, videos: [] };
