@@ -202,8 +202,7 @@ export class BookController extends EventTarget {
     });
     this._showOpenPages();
     this._store.update();
-    // Ready once the pages on screen are (their neighbours go on loading, and say so in `progress`).
-    await this._store.whenSettled(this._surface.pagesOnScreen());
+    await this.whenIdle();
     this._emit('ready', { page: this.page });
   }
 

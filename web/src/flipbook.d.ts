@@ -243,8 +243,8 @@ export class BookController extends EventTarget {
 
 export class Flipbook extends BookController {
   /**
-   * Resolves once the pages on screen have loaded or failed (their neighbours go on loading). Rejects
-   * with a TypeError naming a bad option (nothing is left in the container), or with a
+   * Resolves once the first view's pages (those on screen and their neighbours within loadWindow) have
+   * loaded or failed. Rejects with a TypeError naming a bad option (nothing is left in the container), or with a
    * FlipbookCreateError when WebGL2 or the engine is unavailable (its `fallback` shows the pages).
    */
   static create(container: HTMLElement, options: FlipbookOptions): Promise<Flipbook>;

@@ -8,10 +8,10 @@ import { PAPER } from './layout.js';
 import { freeEdge, turnGrips } from './turn-area.js';
 
 const REFRESH_DELAY_MS = 150;  // a page's texture is made again once its content has rested this long
-const SNAPSHOT_TIMEOUT_MS = 10000;
-// Changes no mutation reports: form values, and images, videos or fonts in the page that finished loading
-// (listened to in the capture phase: load events do not bubble).
-const CHANGE_EVENTS = ['input', 'change', 'load', 'loadeddata'];  // a page the rasteriser cannot draw by then fails (pageerror), the book goes on
+const SNAPSHOT_TIMEOUT_MS = 10000;  // a page the rasteriser cannot draw by then fails (pageerror), the book goes on
+// Changes no mutation reports: form values, and images or videos in the page that finished loading
+// (listened to in the capture phase: load events do not bubble). Web fonts: document.fonts.
+const CHANGE_EVENTS = ['input', 'change', 'load', 'loadeddata'];
 const OFFSCREEN = 'translate(-100000px, 0)';
 // What a grip hands to the canvas: presses, moves and clicks that turn, and zoom gestures.
 const FORWARDED = ['pointerdown', 'pointermove', 'pointerup', 'pointercancel', 'click', 'dblclick', 'wheel'];
@@ -47,7 +47,7 @@ export class HtmlPages {
     this._layer.className = 'conecurl-html-pages';
     this._layer.style.cssText = 'position:absolute;inset:0;overflow:hidden;pointer-events:none';
     root.prepend(this._layer);  // positioned, so above the canvas; below the links, which come later
-    this._pages = new Map();  // page index -> { element, sheet, content, home, observer }
+    this._pages = new Map();  // page index -> { element, sheet, content, home, observer, grips, canvas, videos }
     this._dirty = new Set();
     this._timer = 0;
     this._moving = false;     // a leaf moves: the live pages are hidden, their textures show

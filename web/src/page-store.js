@@ -24,8 +24,7 @@ export class PageStore {
     this._owned = new Set();   // images made here (ImageBitmaps from URLs and Blobs): closed when let go
     this._cache = new PageCache(settings.loadWindow, entries.length);
     this._abort = new AbortController();  // fetches still running when the book is destroyed stop
-    this._sharpening = new Map();
-    this._settledWaiters = [];  // whenSettled() calls still waiting  // page -> its reload running now
+    this._sharpening = new Map();  // page -> its reload running now
     this._closed = false;
   }
 
@@ -39,13 +38,6 @@ export class PageStore {
   get progress() { return this._cache.progress; }
   /** Resolves once no page is loading. */
   whenIdle() { return this._cache.whenIdle(); }
-
-  /** Resolves once each of `pages` has loaded or failed (the first view: the pages on screen). */
-  whenSettled(pages) {
-    const settled = () => this._closed || pages.every((page) => ['loaded', 'failed'].includes(this._cache.stateOf(page)));
-    if (settled()) return Promise.resolve();
-    return new Promise((resolve) => this._settledWaiters.push({ settled, resolve }));
-  }
 
   /**
    * Loads the pages wanted now (on screen, then the open spread's neighbours within loadWindow) and
@@ -134,7 +126,6 @@ export class PageStore {
     this._owned.clear();
     this._images.clear();
     this._cache.releaseWaiters();
-    for (const { resolve } of this._settledWaiters.splice(0)) resolve();
   }
 
   _releaseExcess() {
@@ -178,7 +169,6 @@ export class PageStore {
       this._hooks.emit('pageerror', { index, ...failure });
     } finally {
       const progress = this._cache.endLoad();
-      this._settledWaiters = this._settledWaiters.filter(({ settled, resolve }) => !(settled() && (resolve(), true)));
       if (!this._closed) this._hooks.emit('progress', progress);
     }
   }
