@@ -67,6 +67,32 @@ function essay() {
       + 'curl stays smooth and the words come back as words when it lies down again.'));
 }
 
+// A page with what rasterisers find hard: a web font (the headings' Lora), an image, inline SVG and a
+// CSS transform.
+function gallery() {
+  const image = new Image();
+  image.src = drawBookPage(5).toDataURL();
+  image.alt = 'A page of the drawn book';
+  image.className = 'mag-thumb';
+  const svgNs = 'http://www.w3.org/2000/svg';
+  const svg = document.createElementNS(svgNs, 'svg');
+  svg.setAttribute('viewBox', '0 0 120 80');
+  svg.setAttribute('class', 'mag-figure');
+  svg.setAttribute('role', 'img');
+  svg.setAttribute('aria-label', 'A cone and the page wrapped around it');
+  const shape = (name, attributes) => {
+    const node = document.createElementNS(svgNs, name);
+    for (const [key, value] of Object.entries(attributes)) node.setAttribute(key, value);
+    svg.append(node);
+  };
+  shape('path', { d: 'M60 6 L20 74 L100 74 Z', fill: '#e7d7b8', stroke: '#7a2e1d', 'stroke-width': 1.5 });
+  shape('path', { d: 'M60 6 Q88 40 100 74', fill: 'none', stroke: '#2e86c1', 'stroke-width': 2 });
+  const badge = document.createElement('span');
+  badge.className = 'mag-badge';
+  badge.textContent = 'New';
+  return section('Pictures', badge, image, svg, paragraph('An image, a drawing in SVG and a tilted label: the texture keeps them.'));
+}
+
 /** The magazine's pages: drawn covers around live HTML pages. */
 export function magazinePages() {
   pages ??= [
@@ -74,7 +100,8 @@ export function magazinePages() {
     essay(),
     orderForm(),
     animatedCanvas(),
-    section('Colophon', paragraph('Set in DejaVu. Pages are HTML elements given to the book as they are.')),
+    gallery(),
+    section('Colophon', paragraph('Set in DejaVu, headings in Lora (a web font). Pages are HTML elements given to the book as they are.')),
     { src: () => drawBookPage(39), alt: 'Back cover', hard: true },
   ];
   return pages;
