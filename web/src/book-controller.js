@@ -13,10 +13,9 @@ import { createLinkLayer } from './link-layer.js';
 import { freeEdge, inTurnArea } from './turn-area.js';
 import { attachInput } from './book-input.js';
 import { watchSize } from './size-watch.js';
-import { MAX_ZOOM, displayFor, openPages } from './layout.js';
+import { MAX_ZOOM, displayFor, isZoomed, openPages } from './layout.js';
 
 const REFIT_DELAY_MS = 150;  // images are fitted to a new size or zoom once it has come to rest
-const ZOOMED = 1.001;        // scales above this count as zoomed in
 
 export class BookController extends EventTarget {
   /**
@@ -217,10 +216,11 @@ export class BookController extends EventTarget {
       canvas: this._canvas,
       zoom: () => this.zoom,
       pageSize: () => this._store.pageCssSize(),
-      changed: (index) => { this._html?.refreshed(index); this._store.refresh(index); },
+      changed: (index) => this._store.refresh(index),
       pagesOnScreen: () => this._surface?.pagesOnScreen() ?? [],
       // A video's new frame drawn into the page's image: upload it again, if the page is still kept.
-      redrawn: (index, canvas) => { if (this._store.holds(index, canvas)) this._surface.setPageImage(index, canvas, { cover: this._store.cover() }); },
+      // (The snapshot already has the page's texture size: no cover to work out, no layout read a frame.)
+      redrawn: (index, canvas) => { if (this._store.holds(index, canvas)) this._surface.setPageImage(index, canvas); },
     });
     this._layers.unshift(this._html);
   }
@@ -288,7 +288,6 @@ export class BookController extends EventTarget {
 
   // Open HTML pages whose content changed since their textures were made are drawn again before they move.
   _redraw(pages) {
-    for (const index of pages) this._html.refreshed(index);
     return Promise.all(pages.map((index) => this._store.refresh(index)));
   }
 
@@ -379,7 +378,7 @@ export class BookController extends EventTarget {
 
   // ---- zoom ------------------------------------------------------------------------------------
 
-  _zoomed() { return this.zoom > ZOOMED; }
+  _zoomed() { return isZoomed(this.zoom); }
 
   _zoomAboutCentre(scale) {
     const box = this._canvas.getBoundingClientRect();
@@ -394,7 +393,7 @@ export class BookController extends EventTarget {
     const after = this.zoom;
     this._layoutLayers();
     // Zoomed in, a finger pans the view; at 1x the browser may scroll the page across the turn again.
-    this._canvas.style.touchAction = after > ZOOMED ? 'none' : this._restingTouchAction;
+    this._canvas.style.touchAction = isZoomed(after) ? 'none' : this._restingTouchAction;
     if (after === before) return;
     this._refitSoon();  // sharp pages once it rests
     this._emit('zoom', { scale: after });

@@ -181,9 +181,9 @@ export class BookView {
    * turned side first, zoom included.
    */
   openPagePlaces() {
-    const { width } = this.fitCanvas();
+    const { width, height } = this.fitCanvas();
     const toCss = this.canvas.clientWidth / width;
-    return this.book.openPagePlaces(width, this.canvas.height).map(({ page, turned, x, y, width: w, height: h }) => (
+    return this.book.openPagePlaces(width, height).map(({ page, turned, x, y, width: w, height: h }) => (
       { page, turned, x: x * toCss, y: y * toCss, width: w * toCss, height: h * toCss }));
   }
 

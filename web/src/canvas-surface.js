@@ -2,9 +2,7 @@
 // It answers the same surface calls as BookView (see book-controller.js) with layout.js's layout, the
 // engine's own rules in plain JS, so it needs no wasm; a turn cuts straight to the next spread.
 import * as layout from './layout.js';
-import { naturalSize, uploadSizeFor } from './texture-upload.js';
-
-const MAX_IMAGE_SIZE = 16384;  // what a 2D canvas draws from without trouble (the pages' `cover` keeps far below)
+import { MAX_IMAGE_SIZE, naturalSize, uploadSizeFor } from './texture-upload.js';
 
 export class CanvasSurface {
   /**

@@ -64,8 +64,6 @@ export class HtmlPages {
     });
   }
 
-  /** Whether `index` is an HTML page. */
-  has(index) { return this._pages.has(index); }
   /**
    * Of `pages`, the HTML pages whose content changed since their texture was made; a page holding a
    * canvas or video (moving pictures no mutation reports) always counts as changed.
@@ -74,8 +72,6 @@ export class HtmlPages {
     return pages.filter((page) => this._dirty.has(page)
       || (this._pages.has(page) && this._pages.get(page).element.querySelector('canvas, video') !== null));
   }
-  /** The texture of `index` is being made again now: it is fresh from here. */
-  refreshed(index) { this._dirty.delete(index); }
 
   /** Shows the open HTML pages live over their places (CSS px of the root); the others go out of sight. */
   place(places) {

@@ -11,6 +11,8 @@ export const PAPER = `rgb(${PAPER_RED}, ${PAPER_GREEN}, ${PAPER_BLUE})`;
 export const DEFAULT_PAGE_ASPECT = DEFAULT_PAGE_WIDTH / DEFAULT_PAGE_HEIGHT;
 /** Containers wider than this times their height show two pages in display 'auto' (a JS-only rule). */
 export const AUTO_DOUBLE_ASPECT = 1.2;
+/** Whether a view magnification counts as zoomed in (above 1 by more than rounding). */
+export const isZoomed = (scale) => scale > 1.001;
 
 /** 'single' or 'double' for a display option ('single' | 'double' | 'auto') in a container of that size. */
 export function displayFor(option, { width, height }) {

@@ -4,7 +4,7 @@
 // only fetch reports the status; nothing that would taint a canvas gets through.
 
 import { imageSizeOf } from './image-header.js';
-import { uploadSizeFor } from './texture-upload.js';
+import { MAX_IMAGE_SIZE, uploadSizeFor } from './texture-upload.js';
 
 /**
  * Why a page could not be shown: `reason` is 'http' (`status` says which), 'network', 'cors', 'decode'
@@ -27,8 +27,6 @@ export class PageLoadError extends Error {
 export function pageFailure(error) {
   return { error: error instanceof Error ? error : new Error(String(error)), reason: error?.reason || 'upload' };
 }
-
-const MAX_DECODE_SIZE = 16384;  // no browser keeps a bigger texture; BookView fits the GPU's own limit
 
 const makeCanvas = (width, height) => (typeof OffscreenCanvas === 'function'
   ? new OffscreenCanvas(width, height)
@@ -137,7 +135,7 @@ async function answersWithoutCors(url, signal) {
 async function decodeBlob(blob, where, url, size) {
   try {
     const natural = size ? await imageSizeOf(blob) : null;
-    const wanted = natural && uploadSizeFor(natural.width, natural.height, { cover: size, maxTextureSize: MAX_DECODE_SIZE });
+    const wanted = natural && uploadSizeFor(natural.width, natural.height, { cover: size, maxTextureSize: MAX_IMAGE_SIZE });
     if (wanted && wanted.width < natural.width) {
       const image = await createImageBitmap(blob, { resizeWidth: wanted.width, resizeHeight: wanted.height, resizeQuality: 'high' });
       return { image, natural };

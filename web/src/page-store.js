@@ -4,6 +4,7 @@
 import { loadPage, pageFailure } from './page-loader.js';
 import { PageCache } from './page-residency.js';
 import { uploadSizeFor } from './texture-upload.js';
+import { isZoomed } from './layout.js';
 
 const TEXTURE_OVERSAMPLE = 1.5;  // images up to this many pixels per device pixel of the page on screen
 const REFIT_RATIO = 1.25;        // a kept image is handed over again only when this far off the size wanted
@@ -24,7 +25,7 @@ export class PageStore {
     this._owned = new Set();   // images made here (ImageBitmaps from URLs and Blobs): closed when let go
     this._cache = new PageCache(settings.loadWindow, entries.length);
     this._abort = new AbortController();  // fetches still running when the book is destroyed stop
-    this._sharpening = new Map();  // page -> its reload running now
+    this._reloads = new Map();  // page -> its reload running now
     this._closed = false;
   }
 
@@ -96,7 +97,7 @@ export class PageStore {
     const maxTextureSize = surface.maxTextureSize;
     const open = new Set(this._hooks.openPages());
     for (const [index, image] of this._images) {
-      const sharp = open.has(index) && surface.zoom > 1.001;
+      const sharp = open.has(index) && isZoomed(surface.zoom);
       const cover = this.cover({ zoomed: sharp });
       const uploaded = surface.pageImageSize(index);
       const kept = { width: image.naturalWidth || image.width, height: image.naturalHeight || image.height };
@@ -182,13 +183,13 @@ export class PageStore {
   // its function called again (a PDF page rendered anew). The page keeps its present image until the
   // new one is ready; `sharpened` is told when it came for the zoomed view.
   async _reload(index, cover, source, zoomed, { force = false } = {}) {
-    const running = this._sharpening.get(index);
+    const running = this._reloads.get(index);
     if (running) {
       if (!force) return running;
       await running.catch(() => {});  // content changed during the reload: once more after it
     }
     const reload = this._reloadNow(index, cover, source, zoomed);
-    this._sharpening.set(index, reload);
+    this._reloads.set(index, reload);
     return reload;
   }
 
@@ -210,7 +211,7 @@ export class PageStore {
     } catch (error) {
       if (!this._closed) this._hooks.emit('pageerror', { index, ...pageFailure(error) });
     } finally {
-      this._sharpening.delete(index);
+      this._reloads.delete(index);
     }
   }
 

@@ -1,6 +1,8 @@
 // How a page image becomes a texture's pixels: the size it is uploaded at (never up, within the GPU's
 // limit, just covering what the screen needs) and a scaled copy on one shared scratch canvas when needed.
 
+/** The largest image a page is decoded or drawn at; no browser keeps a bigger texture (BookView also fits the GPU's limit). */
+export const MAX_IMAGE_SIZE = 16384;
 const SAME_SIZE = 0.99;  // within 1 % of the size wanted is that size
 
 export function naturalSize(source) {

@@ -1,6 +1,7 @@
 // Zoom and pan input for a book's canvas: Ctrl/⌘ + wheel (and trackpad pinch, which browsers send as
 // Ctrl + wheel), two-finger pinch, double-click, and dragging to pan while zoomed. It only reads the
-// DOM; what a zoom or a pan does is the Flipbook's (through the engine's camera).
+// DOM; what a zoom or a pan does is the book's (book-controller.js, through its surface).
+import { isZoomed } from './layout.js';
 
 const WHEEL_ZOOM_PER_PIXEL = 0.0025;  // zoom factor exp(-deltaY * this): a notch of 100 px is about 1.28x
 const DOUBLE_CLICK_ZOOM = 2;
@@ -25,7 +26,7 @@ export function listenForZoom(canvas, book) {
   const onDoubleClick = (event) => {
     event.preventDefault();
     book.doubleClicked?.();
-    book.zoomAbout(book.scale() > 1.001 ? 1 : DOUBLE_CLICK_ZOOM, event.clientX, event.clientY);
+    book.zoomAbout(isZoomed(book.scale()) ? 1 : DOUBLE_CLICK_ZOOM, event.clientX, event.clientY);
   };
   const onDown = (event) => {
     if (event.pointerType === 'touch') {
@@ -37,7 +38,7 @@ export function listenForZoom(canvas, book) {
         return;
       }
     }
-    if (book.scale() > 1.001 && event.isPrimary && touches.size <= 1) {
+    if (isZoomed(book.scale()) && event.isPrimary && touches.size <= 1) {
       pan = { id: event.pointerId, x: event.clientX, y: event.clientY };
       canvas.setPointerCapture?.(event.pointerId);
     }
