@@ -8,3 +8,4 @@ if [ ! -f build/wasm/CMakeCache.txt ]; then
 fi
 cmake --build build/wasm -j2
 test -f dist/conecurl-engine.wasm && test -f dist/conecurl-engine.mjs && test -f dist/engine-constants.js
+test -f dist/test/conecurl-engine.wasm && test -f dist/test/conecurl-engine.mjs

@@ -78,12 +78,14 @@ bool startTurn(Book& book, val directionValue) {
     return book.startTurn(direction == "forward" ? TurnDirection::Forward : TurnDirection::Backward);
 }
 
+#ifdef CONECURL_TEST_BINDINGS
 val frameToJs(const Book& book) {
     const BookFrame frame = book.frame();
     val leaves = val::array();
     for (int i = 0; i < frame.count; ++i) leaves.call<void>("push", frame.leaves[i]);
     return leaves;
 }
+#endif
 
 // --- dragging: canvas pixels of the drawing buffer, grips as plain JS objects ------------------------
 
@@ -155,6 +157,7 @@ void hintHeld(Book& book, val grip, double amount) {
     book.setHeldPose(hoverHintPose(book, gripFromJs(grip), std::isfinite(amount) ? amount : 0.0));
 }
 
+#ifdef CONECURL_TEST_BINDINGS
 val gripPixelNow(const Book& book, val grip, double width, double height) {
     const glm::dvec2 p = gripPixel(book, cameraOf(book, width, height), gripFromJs(grip), book.heldPose());
     val out = val::array();
@@ -162,6 +165,7 @@ val gripPixelNow(const Book& book, val grip, double width, double height) {
     out.call<void>("push", p.y);
     return out;
 }
+#endif
 
 // Sets x, y, width and height of a canvas rectangle on `out` (a val is a handle: the caller's object).
 val withRect(val out, const PixelRect& r) {
@@ -206,6 +210,7 @@ void panByPixels(Book& book, double dx, double dy, double width, double height) 
     book.setZoom(panBy(book.zoom(), pixelOf(dx, dy), static_cast<int>(width), static_cast<int>(height)));
 }
 
+#ifdef CONECURL_TEST_BINDINGS
 val viewProjection(const Book& book, double width, double height) {
     const BookCamera camera = cameraOf(book, width, height);
     val out = val::global("Float64Array").new_(16);
@@ -214,22 +219,13 @@ val viewProjection(const Book& book, double width, double height) {
     }
     return out;
 }
+#endif
 
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(conecurl_book) {
     using namespace emscripten;
-    value_object<LeafDraw>("LeafDraw")
-        .field("leaf", &LeafDraw::leaf)
-        .field("frontPage", &LeafDraw::frontPage)
-        .field("backPage", &LeafDraw::backPage)
-        .field("curl", &LeafDraw::curl)
-        .field("mirrored", &LeafDraw::mirrored)
-        .field("flippedY", &LeafDraw::flippedY)
-        .field("hard", &LeafDraw::hard)
-        .field("resting", &LeafDraw::resting);
-
-    class_<Book>("Book")
+    const auto& book = class_<Book>("Book")
         .class_function("create", &createBook)
         .function("pageCount", optional_override([](const Book& b) { return b.config().pageCount; }))
         .function("binding", optional_override([](const Book& b) { return std::string(js::toString(b.config().binding)); }))
@@ -260,8 +256,6 @@ EMSCRIPTEN_BINDINGS(conecurl_book) {
         .function("cancelHeldTurn", optional_override([](Book& b) { b.releaseHeldTurn(false); }))
         .function("completeHeldTurn", optional_override([](Book& b) { b.releaseHeldTurn(true); }))
         .function("hintHeldTurn", &hintHeld)
-        .function("gripPixel", &gripPixelNow)
-        .function("viewProjection", &viewProjection)
         .function("restingRect", &restingRectOf)
         .function("openPagePlaces", &openPagePlacesOf)
         .function("zoomAbout", &zoomAboutPixel)
@@ -281,6 +275,23 @@ EMSCRIPTEN_BINDINGS(conecurl_book) {
                   }))
         .function("jumpTo", optional_override([](Book& b, val position) {
                       b.jumpTo(js::wholeNumber(position, "position", 0, b.lastPosition()));
-                  }))
-        .function("frame", &frameToJs);
+                  }));
+#ifdef CONECURL_TEST_BINDINGS
+    // The test build (dist/test/, see CMakeLists.txt): the frame as JS objects for the reference checks,
+    // the camera matrix and a grip's pixel. The package's JS reads none of them.
+    value_object<LeafDraw>("LeafDraw")
+        .field("leaf", &LeafDraw::leaf)
+        .field("frontPage", &LeafDraw::frontPage)
+        .field("backPage", &LeafDraw::backPage)
+        .field("curl", &LeafDraw::curl)
+        .field("mirrored", &LeafDraw::mirrored)
+        .field("flippedY", &LeafDraw::flippedY)
+        .field("hard", &LeafDraw::hard)
+        .field("resting", &LeafDraw::resting);
+    book.function("frame", &frameToJs)
+        .function("viewProjection", &viewProjection)
+        .function("gripPixel", &gripPixelNow);
+#else
+    (void)book;
+#endif
 }

@@ -35,6 +35,7 @@ CurledPoint curlPagePoint(double x, double y, const CurlParams& params) {
     return {p.x, p.y, p.z, toValue(curlNormalAnalytic({x, y}, params))};
 }
 
+#ifdef CONECURL_TEST_BINDINGS
 Vec3Value finiteDifferenceNormal(double x, double y, const CurlParams& params, double delta) {
     return toValue(curlNormalFiniteDifference({x, y}, params, delta));
 }
@@ -49,6 +50,8 @@ Vec3Value leafToWorld(const LeafDraw& draw, const std::string& binding, double p
 Vec3Value leafNormal(const LeafDraw& draw, const std::string& binding, double pageHeight, double x, double y) {
     return toValue(leafNormalToWorld(draw, js::bindingFromString(binding), pageHeight, {x, y}));
 }
+
+#endif
 
 }  // namespace
 
@@ -87,6 +90,8 @@ EMSCRIPTEN_BINDINGS(conecurl_core) {
     function("curlAtWith", &curlAtWith);
     function("sanitizeCurlParams", &sanitize);
     function("curlPoint", &curlPagePoint);
+#ifdef CONECURL_TEST_BINDINGS
+    // The test build only: the references the GPU and Node tests compare with.
     function("curlNormalFiniteDifference", &finiteDifferenceNormal);
     function("coneBeta", &beta);
     function("leafPointToWorld", &leafToWorld);
@@ -94,4 +99,5 @@ EMSCRIPTEN_BINDINGS(conecurl_core) {
     // Bytes of the wasm heap malloc has handed out and not had back: tests hold it flat over many
     // books made and destroyed (the heap's own size, memory.buffer.byteLength, never shrinks).
     function("heapBytesInUse", optional_override([]() { return static_cast<double>(mallinfo().uordblks); }));
+#endif
 }

@@ -69,9 +69,12 @@ void setPageImage(BookRenderer& r, val pageValue, val source, val widthValue, va
     if (!problem.empty()) js::throwError("Error", problem);
 }
 
+#ifdef CONECURL_TEST_BINDINGS
 val copyToFloat32Array(const std::vector<float>& data) {
     return val::global("Float32Array").new_(emscripten::typed_memory_view(data.size(), data.data()));
 }
+
+#endif
 
 val readPixels(BookRenderer& r) {
     const RgbaImage image = r.readPixels();
@@ -87,7 +90,7 @@ val readPixels(BookRenderer& r) {
 
 EMSCRIPTEN_BINDINGS(conecurl_renderer) {
     using namespace emscripten;
-    class_<BookRenderer>("BookRenderer")
+    const auto& renderer = class_<BookRenderer>("BookRenderer")
         .class_function("create", &createRenderer)
         .function("setOptions", &setOptions)
         .function("setPageImage", &setPageImage)
@@ -101,13 +104,6 @@ EMSCRIPTEN_BINDINGS(conecurl_renderer) {
         .function("draw", select_overload<void(const Book&)>(&BookRenderer::draw))
         .function("framesDrawn", &BookRenderer::framesDrawn)
         .function("readPixels", &readPixels)
-        .function("captureLeaf", optional_override([](BookRenderer& r, const Book& book, val index) {
-                      // An index past the frame's leaves is refused, not answered with an empty array.
-                      const int leaves = book.frame().count;
-                      if (leaves == 0) js::throwError("RangeError", "leaf draw index: the book's frame has no leaves");
-                      return copyToFloat32Array(r.captureLeaf(book, js::wholeNumber(index, "leaf draw index", 0, leaves - 1)));
-                  }))
-        .function("gridPoints", optional_override([](BookRenderer& r) { return copyToFloat32Array(r.grid().points); }))
         .function("gridColumns", optional_override([](BookRenderer& r) { return r.grid().columns; }))
         .function("gridRows", optional_override([](BookRenderer& r) { return r.grid().rows; }))
         .function("setGridRows", optional_override([](BookRenderer& r, val rows) {
@@ -116,4 +112,16 @@ EMSCRIPTEN_BINDINGS(conecurl_renderer) {
         .function("gridErrorPixels", &BookRenderer::gridErrorPixels)
         .function("maxTextureSize", &BookRenderer::maxTextureSize)
         .function("recreateGpuObjects", &BookRenderer::recreateGpuObjects);
+#ifdef CONECURL_TEST_BINDINGS
+    // The test build only: the vertex shader's output read back, and the grid's points.
+    renderer.function("captureLeaf", optional_override([](BookRenderer& r, const Book& book, val index) {
+                      // An index past the frame's leaves is refused, not answered with an empty array.
+                      const int leaves = book.frame().count;
+                      if (leaves == 0) js::throwError("RangeError", "leaf draw index: the book's frame has no leaves");
+                      return copyToFloat32Array(r.captureLeaf(book, js::wholeNumber(index, "leaf draw index", 0, leaves - 1)));
+                  }))
+        .function("gridPoints", optional_override([](BookRenderer& r) { return copyToFloat32Array(r.grid().points); }));
+#else
+    (void)renderer;
+#endif
 }

@@ -82,7 +82,8 @@ export interface Book {
   jumpTo(position: number): void;
   /** One page or two from now on, keeping the first visible page; turns in flight land. TypeError for other values. */
   setDisplay(display: 'single' | 'double'): void;
-  frame(): LeafDraw[];
+  /** Test build only (dist/test/, never packed): undefined in the package's engine. */
+  frame?(): LeafDraw[];
   /** Where the resting pages lie on a width x height drawing buffer (pixels), zoom included. */
   restingRect(width: number, height: number): { x: number; y: number; width: number; height: number };
   /**
@@ -143,11 +144,11 @@ export interface BookRenderer {
   readPixels(): { width: number; height: number; data: Uint8ClampedArray };
   /**
    * Per grid vertex of frame leaf `index`: world x y z, then the shader's normal nx ny nz. RangeError
-   * unless `index` is a leaf of book.frame().
+   * unless `index` is a leaf of book.frame(). Test build only (dist/test/, never packed).
    */
-  captureLeaf(book: Book, index: number): Float32Array;
-  /** Flat page coordinates (x, y) of the grid vertices. */
-  gridPoints(): Float32Array;
+  captureLeaf?(book: Book, index: number): Float32Array;
+  /** Flat page coordinates (x, y) of the grid vertices. Test build only. */
+  gridPoints?(): Float32Array;
   gridColumns(): number;
   gridRows(): number;
   /** Verified mesh error of the chosen grid, in pixels at the current canvas (NaN with fixed rows). */
@@ -167,11 +168,12 @@ export interface ConeCurlEngine {
   curlAtWith(t: number, schedule: CurlSchedule, pageHeight: number): CurlParams;
   sanitizeCurlParams(params: CurlParams): CurlParams;
   curlPoint(x: number, y: number, params: CurlParams): CurledPoint;
-  curlNormalFiniteDifference(x: number, y: number, params: CurlParams, delta: number): Vec3;
-  coneBeta(x: number, y: number, params: CurlParams): number;
-  /** C++ reference of where the shader puts page point (x, y) of a leaf, and its +z side's normal. */
-  leafPointToWorld(draw: LeafDraw, binding: 'left' | 'right' | 'top', pageHeight: number, x: number, y: number): Vec3;
-  leafNormalToWorld(draw: LeafDraw, binding: 'left' | 'right' | 'top', pageHeight: number, x: number, y: number): Vec3;
+  /** Test build only (dist/test/, never packed): undefined in the package's engine. */
+  curlNormalFiniteDifference?(x: number, y: number, params: CurlParams, delta: number): Vec3;
+  coneBeta?(x: number, y: number, params: CurlParams): number;
+  /** C++ reference of where the shader puts page point (x, y) of a leaf, and its +z side's normal (test build only). */
+  leafPointToWorld?(draw: LeafDraw, binding: 'left' | 'right' | 'top', pageHeight: number, x: number, y: number): Vec3;
+  leafNormalToWorld?(draw: LeafDraw, binding: 'left' | 'right' | 'top', pageHeight: number, x: number, y: number): Vec3;
   Book: { create(options: BookOptions): Book };
   FrameLoop: new (book: Book, renderer: BookRenderer) => FrameLoop;
   /** FrameLoop.tick bits: time still changes the frame; nothing moves and no leaf is held; the pages on screen changed; a frame was drawn. */
@@ -189,8 +191,8 @@ export interface ConeCurlEngine {
      */
     create(canvasTarget: string, antialias?: boolean): BookRenderer;
   };
-  /** Bytes of the wasm heap allocated and not freed (malloc's in-use count): for leak tests. */
-  heapBytesInUse(): number;
+  /** Bytes of the wasm heap allocated and not freed (malloc's in-use count): for leak tests (test build only). */
+  heapBytesInUse?(): number;
   /** Emscripten's map from target names to elements; BookView registers canvases here. */
   specialHTMLTargets: Record<string, EventTarget>;
 }
