@@ -43,6 +43,13 @@ function countCalls() {
     const drawImage = Context.prototype.drawImage;
     Context.prototype.drawImage = function countedDrawImage(...args) { counts.drawImage++; return drawImage.apply(this, args); };
   }
+  // Every ImageBitmap made, to count those still open (a closed one reads 0 x 0).
+  window.__bitmaps = [];
+  const createImageBitmap = window.createImageBitmap;
+  window.createImageBitmap = (...args) => createImageBitmap.apply(window, args).then((bitmap) => {
+    window.__bitmaps.push(bitmap);
+    return bitmap;
+  });
   const wrap = (fn) => function countedWasm(...args) { counts.wasm++; return fn.apply(this, args); };
   // Embind calls wasm through the function table; the glue calls the exports.
   const wrappedEntries = new WeakMap();
@@ -218,4 +225,57 @@ test('browser: large encoded pages are decoded at the size they are drawn, off t
   }
   expect(result.zoomedWidth).toBeGreaterThan(2 * result.sizes[0].width);
   expect(result.sharpened.map((s) => s.index).sort()).toEqual([1, 2]);
+});
+
+test('browser: decoded pages are not held twice: the ImageBitmaps decoded for textures are closed once uploaded, and after a lost context the pages are decoded again (counts, pixels)', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    // Eight PNG pages (Blobs), page i filled with its own grey 20 + 25 i.
+    const canvas = Object.assign(document.createElement('canvas'), { width: 200, height: 250 });
+    const g = canvas.getContext('2d');
+    const pages = [];
+    for (let i = 0; i < 8; i++) {
+      g.fillStyle = `rgb(${20 + 25 * i}, ${20 + 25 * i}, ${20 + 25 * i})`;
+      g.fillRect(0, 0, 200, 250);
+      pages.push(await new Promise((resolve) => canvas.toBlob(resolve, 'image/png')));
+    }
+    await window.openBook({ pages, display: 'double', startPage: 3, loadWindow: 2, lighting: false, shadows: false, gutter: false });
+    await window.settle();
+    const book = window.book;
+    const open = () => window.__bitmaps.filter((bitmap) => bitmap.width > 0).length;
+    // The grey at the middle of each open page, as page numbers.
+    const shown = () => {
+      book.surface.drawNow();
+      const pixels = book.surface.readPixels();
+      return book.openPagePlaces().map((place) => {
+        const x = Math.round(place.x + place.width / 2);
+        const y = Math.round(place.y + place.height / 2);  // readPixels rows run top to bottom
+        return (pixels.data[(y * pixels.width + x) * 4] - 20) / 25;
+      });
+    };
+    const before = { decoded: window.__bitmaps.length, open: open(), resident: book.residentPages.length, shown: shown() };
+    const gl = book.surface.canvas.getContext('webgl2');
+    const lose = gl.getExtension('WEBGL_lose_context');
+    const event = (name) => new Promise((resolve) => book.surface.canvas.addEventListener(name, resolve, { once: true }));
+    const lost = event('webglcontextlost');
+    lose.loseContext();
+    await lost;
+    await new Promise((resolve) => setTimeout(resolve, 50));  // Chrome ignores a restore in the same task
+    const restored = event('webglcontextrestored');
+    lose.restoreContext();
+    await restored;
+    await new Promise((resolve) => setTimeout(resolve, 300));
+    await book.whenIdle();
+    return { before, after: { decoded: window.__bitmaps.length, open: open(), textures: book.surface.renderer.residentPageImages(), shown: shown() } };
+  });
+  console.log(`decoded pages: ${JSON.stringify(result)}`);
+  expect(result.before.resident).toBeGreaterThanOrEqual(6);
+  expect(result.before.decoded).toBeGreaterThanOrEqual(result.before.resident);
+  expect(result.before.open).toBe(0);
+  expect(result.before.shown.map(Math.round)).toEqual([3, 4]);
+  // Restored: every resident page decoded again, closed again, and the open pages drawn from them.
+  expect(result.after.decoded).toBeGreaterThanOrEqual(result.before.decoded + result.before.resident);
+  expect(result.after.open).toBe(0);
+  expect(result.after.textures).toBe(result.before.resident);
+  expect(result.after.shown.map(Math.round)).toEqual([3, 4]);
 });

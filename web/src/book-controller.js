@@ -192,6 +192,8 @@ export class BookController extends EventTarget {
     this._surface = this._makeSurface(displayFor(this._settings.display, this._layoutSize));
     // While leaves move, the pages they show change (turns that waited start late): the surface says when.
     this._surface.onPagesChanged = () => { if (!this._destroyed) this._store.update(); };
+    // After a lost context, pages whose images the store closed once uploaded are decoded again.
+    this._surface.onImagesLost = (pages) => { if (!this._destroyed) this._store.reloadLost(pages); };
     this._surface.jumpTo(this._surface.positionOfPage(this._settings.startPage));
     this._attachInput();
     this._stopWatchingSize = watchSize(this._shell.root, this._layoutSize, (size) => {

@@ -91,6 +91,10 @@ export class BookView {
   sizeChanged(): void;
   /** Called after a frame whose pages on screen changed (a leaf lifted or landed). */
   onPagesChanged: (() => void) | null;
+  /** True: textures are copies, so an ImageBitmap given to setPageImage may be closed once set. */
+  readonly copiesImages: boolean;
+  /** Called after a lost context is restored with the pages whose ImageBitmap was closed: set them again. */
+  onImagesLost: ((pages: number[]) => void) | null;
   /** Exact frame of a turn from the settled position at progress t, with no clock running. */
   showTurn(direction: 'forward' | 'backward', t: number): boolean;
   /** Draws at once (same task as a following readPixels()). */

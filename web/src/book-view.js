@@ -11,6 +11,9 @@ export { uploadSizeFor };
 
 const BINDING_OF_DIRECTION = { ltr: 'left', rtl: 'right', vertical: 'top' };
 const TURN_REFUSED = 2;  // FrameLoop.requestTurn: 0 started, 1 queued, 2 refused
+
+// A closed ImageBitmap reads 0 x 0 and cannot be uploaded again.
+const isClosed = (source) => typeof ImageBitmap !== 'undefined' && source instanceof ImageBitmap && source.width === 0;
 let nextTargetId = 1;
 
 export class BookView {
@@ -56,6 +59,7 @@ export class BookView {
     this._ticks = { moving: engine.TICK_MOVING, settled: engine.TICK_SETTLED, pagesChanged: engine.TICK_PAGES_CHANGED };
     /** Called after a frame whose pages on screen changed (a leaf lifted or landed): residency follows. */
     this.onPagesChanged = null;
+    this.onImagesLost = null;  // (pages) after a context restore, for pages whose image was closed
     /** The book's share of the page's WebGL contexts (context-budget.js), told when the view wants to draw. */
     this.contextLease = null;
     this._uploads = [];          // page images waiting for a frame while leaves move: one a frame
@@ -78,6 +82,8 @@ export class BookView {
 
   /** Which surface this is (book-controller.js drives a 'webgl' or a 'canvas' one). */
   get kind() { return 'webgl'; }
+  /** Textures are copies: a page's image may be closed once set (see onImagesLost). */
+  get copiesImages() { return true; }
   get pageCount() { return this.book.pageCount(); }
   /** 'single' or 'double'. */
   get display() { return this.book.isSingle() ? 'single' : 'double'; }
@@ -299,6 +305,7 @@ export class BookView {
     // The canvas has its WebGL2 context already: getContext hands back that one, it makes no new one.
     const gl = releaseContext ? this.canvas.getContext('webgl2') : null;
     this.onPagesChanged = null;
+    this.onImagesLost = null;
     this._loop.delete();  // it points at the book and the renderer: it goes first
     this.renderer.delete();
     this.book.delete();
@@ -381,7 +388,12 @@ export class BookView {
     this._lost = false;
     // Every GL object is rebuilt from CPU-side state; page images from the sources kept here.
     this.renderer.recreateGpuObjects();
-    for (const [page, { source, cover }] of this._sources) this.setPageImage(page, source, { cover });
+    const lost = [];
+    for (const [page, { source, cover }] of this._sources) {
+      if (isClosed(source)) lost.push(page);  // closed after upload by its owner: only the owner can make it again
+      else this.setPageImage(page, source, { cover });
+    }
     this.requestRender();
+    if (lost.length) this.onImagesLost?.(lost);
   }
 }

@@ -23,6 +23,8 @@ export class CanvasSurface {
   }
 
   get kind() { return 'canvas'; }
+  /** It draws from the images themselves: they must stay open while set. */
+  get copiesImages() { return false; }
   get pageCount() { return this._book.pageCount; }
   get display() { return this._book.display; }
   get position() { return this._position; }

@@ -20,7 +20,9 @@ export class PageStore {
     this.entries = entries;
     this._settings = settings;
     this._hooks = hooks;
-    this._images = new Map();  // page -> image, while the surface holds it
+    // page -> image, while the surface holds it; only its { width, height, dropped: true } where the
+    // surface copied it (a texture) and the image was ours: the decoded pixels are not held twice.
+    this._images = new Map();
     this._naturals = new Map();  // page -> size its source holds, where the image kept was decoded smaller
     this._owned = new Set();   // images made here (ImageBitmaps from URLs and Blobs): closed when let go
     this._cache = new PageCache(settings.loadWindow, entries.length);
@@ -88,6 +90,17 @@ export class PageStore {
   }
 
   /**
+   * The surface lost these pages' images (a WebGL context restored, and their images were closed after
+   * upload): they are decoded again from their sources. The pages show plain paper until then.
+   */
+  reloadLost(pages) {
+    if (this._closed) return;
+    for (const index of pages) {
+      if (this._images.has(index)) this._reload(index, this.cover(), this.entries[index].src, false, { force: true });
+    }
+  }
+
+  /**
    * The size on screen or the zoom changed: kept images far off the size now wanted are handed to the
    * surface again, and zoomed-in open pages get a sharper source where they have one.
    */
@@ -108,7 +121,8 @@ export class PageStore {
       if (ratio > REFIT_RATIO && wanted.width > kept.width * REFIT_RATIO) {
         this._reload(index, cover, entry.src, sharp);  // the source holds more than was decoded: decode it again
       } else if (ratio > REFIT_RATIO || ratio < 1 / REFIT_RATIO) {
-        surface.setPageImage(index, image, { cover });
+        if (image.dropped) this._reload(index, cover, entry.src, sharp);  // ours, closed after upload: decode again
+        else surface.setPageImage(index, image, { cover });
       }
       // Zoomed in past what the source holds: a sharper source, where the page has one.
       const sharper = typeof entry.src === 'function' ? entry.src : entry.zoomSrc;  // a function is told `cover`
@@ -156,7 +170,7 @@ export class PageStore {
       }
       await this._hooks.surface().queuePageImage(index, image, { cover: this.cover() });  // mid-turn: one a frame
       if (this._closed) return;
-      this._images.set(index, image);
+      this._keep(index, image);
       this._keepNatural(index, natural);
       this._cache.setState(index, 'loaded');
       this._releaseExcess();
@@ -204,7 +218,7 @@ export class PageStore {
       const surface = this._hooks.surface();
       const previous = this._images.get(index);
       surface.setPageImage(index, image, { cover });
-      this._images.set(index, image);
+      this._keep(index, image);
       if (source === this.entries[index].src) this._keepNatural(index, natural);
       if (previous !== image) this._closeIfOwned(previous);
       if (zoomed) this._hooks.emit('sharpened', { index, width: surface.pageImageSize(index).width });
@@ -212,6 +226,17 @@ export class PageStore {
       if (!this._closed) this._hooks.emit('pageerror', { index, ...pageFailure(error) });
     } finally {
       this._reloads.delete(index);
+    }
+  }
+
+  // What is kept of a page's image once the surface holds it: the image, or where the surface made its
+  // own copy and the image is ours (an ImageBitmap decoded here), only its size: it is closed now.
+  _keep(index, image) {
+    if (this._hooks.surface().copiesImages && this._owned.has(image)) {
+      this._images.set(index, { width: image.width, height: image.height, dropped: true });
+      this._closeIfOwned(image);
+    } else {
+      this._images.set(index, image);
     }
   }
 
