@@ -209,10 +209,11 @@ test('browser: large encoded pages are decoded at the size they are drawn, off t
     const draws = window.__counts.drawImage - drawsBefore;
     // Zoomed in, the open pages are decoded again from their source, larger.
     const sharpened = [];
-    book.addEventListener('sharpened', (e) => sharpened.push(e.detail));
+    const bothSharp = new Promise((resolve) => book.addEventListener('sharpened', (e) => {
+      if (sharpened.push(e.detail) === 2) resolve();
+    }));
     book.zoom = 4;
-    await new Promise((resolve) => setTimeout(resolve, 400));
-    await book.whenIdle();
+    await bothSharp;  // the open pages, decoded again once the zoom rests (the test's timeout bounds it)
     return { sizes, draws, resident: book.residentPages.length, zoomedWidth: book.surface.pageImageSize(1).width, sharpened };
   });
   console.log(`large pages: textures ${JSON.stringify(result.sizes[0])} for 2000x2500 sources; canvas draws ${result.draws}; `
@@ -278,4 +279,39 @@ test('browser: decoded pages are not held twice: the ImageBitmaps decoded for te
   expect(result.after.open).toBe(0);
   expect(result.after.textures).toBe(result.before.resident);
   expect(result.after.shown.map(Math.round)).toEqual([3, 4]);
+});
+
+test('browser: a page texture set while the book rests draws a frame only if that page is on screen (the neighbours loading around the spread cost none; counts)', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const frames = await page.evaluate(async () => {
+    await window.openBook({ pages: 12, display: 'double', startPage: 3 });
+    await window.settle();
+    const view = window.book.surface;
+    const image = Object.assign(document.createElement('canvas'), { width: 40, height: 50 });
+    const twoFrames = () => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve)));
+    const drawnAfter = async (change) => {
+      const before = view.framesDrawn;
+      change();
+      await twoFrames();
+      return view.framesDrawn - before;
+    };
+    // Until no frame is drawn for four in a row: the frames the last arrivals asked for are done.
+    for (let quiet = 0; quiet < 4;) {
+      const before = view.framesDrawn;
+      await new Promise((resolve) => requestAnimationFrame(resolve));
+      quiet = view.framesDrawn === before ? quiet + 1 : 0;
+    }
+    return {
+      onScreen: view.pagesOnScreen(),
+      nothing: await drawnAfter(() => {}),
+      offScreenSet: await drawnAfter(() => view.setPageImage(9, image)),
+      offScreenReleased: await drawnAfter(() => view.releasePageImage(9)),
+      onScreenSet: await drawnAfter(() => view.setPageImage(3, image)),
+    };
+  });
+  expect(frames.onScreen).toEqual([3, 4]);
+  expect(frames.nothing).toBe(0);
+  expect(frames.offScreenSet).toBe(0);
+  expect(frames.offScreenReleased).toBe(0);
+  expect(frames.onScreenSet).toBe(1);
 });

@@ -124,7 +124,7 @@ export class BookView {
     }
     this._sources.set(page, { source, cover });
     this._uploaded.set(page, size);
-    this.requestRender();
+    this._redrawIfShown(page);
   }
 
   /**
@@ -161,7 +161,13 @@ export class BookView {
     this.renderer.releasePageImage(page);
     this._sources.delete(page);
     this._uploaded.delete(page);
-    this.requestRender();
+    this._redrawIfShown(page);
+  }
+
+  // A page's texture changed: a frame only if the page is drawn now. The pages loaded around the open
+  // spread arrive one by one; each would otherwise cost a whole frame that shows nothing new.
+  _redrawIfShown(page) {
+    if (this.pagesOnScreen().includes(page)) this.requestRender();
   }
 
   /** Pixel size of page `page`'s texture as uploaded, or null without one. */
