@@ -83,6 +83,13 @@ function evaluateTargets(runs, configs, summary, ratios, loadBytes) {
     mainRatios.every((v) => v.value <= 0.5));
   const gpuRatios = ratioValues('gpuCpuMsPerFrame');
   add('gpu', 'GPU-process CPU per frame, conecurl / best peer', '<= 0.8x', gpuRatios, gpuRatios.every((v) => v.value <= 0.8));
+  const turnRatios = ratioValues('turnSeconds');
+  add('turn', 'wall time of one turn (the same duration asked of every library), conecurl / best peer', '<= 1.05x', turnRatios,
+    turnRatios.every((v) => v.value <= 1.05));
+  const memoryRatios = ratioValues('rendererPssMB');
+  add('memory', 'renderer process memory (PSS), conecurl / best peer', '<= 1.0x', memoryRatios, memoryRatios.every((v) => v.value <= 1.0));
+  const readyRatios = ratioValues('firstFrameMs');
+  add('ready', 'navigation to first rendered book, conecurl / best peer', '<= 1.0x', readyRatios, readyRatios.every((v) => v.value <= 1.0));
   const idle = perConfig('idleCpuPercent', (c) => summary[c.id].conecurl.idleCpuPercent?.median ?? NaN);
   add('idle', 'idle CPU of conecurl, renderer + GPU process', '<= 2% of a core', idle, idle.every((v) => v.value <= 2));
   // Worst run, not the median: the target says no interval at all.

@@ -37,10 +37,10 @@ test('node: bench ratios to the best peer come from the same repetition, not fro
   // Repetition 1 is slow for everyone, repetition 2 fast: per-repetition ratios are 0.4 and 0.4,
   // while the ratio of medians across repetitions would mix the two machines' states.
   const runs = [
-    { rep: 1, config: 'double-20', lib: 'conecurl', result: fakeResult({ frameMs: 40, mainMs: 4, gpuMs: 80 }) },
+    { rep: 1, config: 'double-20', lib: 'conecurl', result: fakeResult({ frameMs: 40, mainMs: 4, gpuMs: 80, first: 1200 }) },
     { rep: 1, config: 'double-20', lib: 'page-flip', result: fakeResult({ frameMs: 100, mainMs: 10, gpuMs: 100 }) },
     { rep: 1, config: 'double-20', lib: 'turnjs', result: fakeResult({ frameMs: 200, mainMs: 20, gpuMs: 50 }) },
-    { rep: 2, config: 'double-20', lib: 'conecurl', result: fakeResult({ frameMs: 4, mainMs: 0.4, gpuMs: 8 }) },
+    { rep: 2, config: 'double-20', lib: 'conecurl', result: fakeResult({ frameMs: 4, mainMs: 0.4, gpuMs: 8, first: 1200 }) },
     { rep: 2, config: 'double-20', lib: 'page-flip', result: fakeResult({ frameMs: 10, mainMs: 1, gpuMs: 10 }) },
     { rep: 2, config: 'double-20', lib: 'turnjs', result: fakeResult({ frameMs: 20, mainMs: 2, gpuMs: 5 }) },
   ];
@@ -52,7 +52,9 @@ test('node: bench ratios to the best peer come from the same repetition, not fro
   // The best peer is chosen per metric: turn.js for GPU time (50 and 5), so 80/50 and 8/5.
   assert.equal(ratios['double-20'].gpuCpuMsPerFrame.bestPeer.median, 1.6);
   const verdict = Object.fromEntries(targets.map((t) => [t.id, t.holds]));
-  assert.deepEqual(verdict, { 'main-thread': true, gpu: false, idle: true, smooth: true, bytes: false });
+  // Turns and memory equal to the peers' (1.0x) hold; ready 1.2x does not.
+  assert.deepEqual(verdict, { 'main-thread': true, gpu: false, turn: true, memory: true, ready: false, idle: true, smooth: true, bytes: false });
+  assert.equal(targets.find((t) => t.id === 'ready').values[0].value, 1.2);
 });
 
 test('node: bench 1000-page targets compare first frames and resident textures within a repetition', () => {
