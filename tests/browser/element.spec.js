@@ -108,7 +108,7 @@ test('browser: <cone-flipbook> re-dispatches ready, progress, pageerror, turnsta
   expect(result.sameDetail).toBe(true);  // the element passes on the Flipbook's detail object itself
 });
 
-test('browser: lighting, shadows and gutter attributes change the frame of the same live book; other attributes rebuild it at the current page', async ({ page }) => {
+test('browser: lighting, shadows, gutter and display attributes change the same live book; other attributes rebuild it at the current page', async ({ page }) => {
   const problems = await openReady(page, FIXTURE);
   const result = await page.evaluate(async () => {
     const pages = Array.from({ length: 8 }, (_, i) => window.pageUrl(i)).join(' ');
@@ -126,21 +126,24 @@ test('browser: lighting, shadows and gutter attributes change the frame of the s
     element.removeAttribute('gutter');
     const litAgain = frameAt();
     const changed = (a, b) => { let n = 0; for (let i = 0; i < a.length; i += 4) if (Math.abs(a[i] - b[i]) + Math.abs(a[i + 1] - b[i + 1]) + Math.abs(a[i + 2] - b[i + 2]) > 12) n++; return n / (a.length / 4); };
-    const live = { same: element.book === book, effectsOff: changed(lit, flat), effectsBack: changed(lit, litAgain) };
+    element.setAttribute('display', 'single');
+    const single = element.display;
+    const live = { same: element.book === book, effectsOff: changed(lit, flat), effectsBack: changed(lit, litAgain), single };
 
     await element.flip(5, { animate: false });
     const rebuilt = new Promise((resolve) => element.addEventListener('ready', (e) => resolve(e.detail), { once: true }));
-    element.setAttribute('display', 'single');
+    element.setAttribute('direction', 'rtl');
     const detail = await rebuilt;
     return {
       live,
-      rebuild: { detail, page: element.page, display: element.display, newBook: element.book !== book, oldDestroyed: book.surface === null, canvases: element.shadowRoot.querySelectorAll('canvas').length },
+      rebuild: { detail, page: element.page, display: element.display, direction: element.book.options.direction, newBook: element.book !== book, oldDestroyed: book.surface === null, canvases: element.shadowRoot.querySelectorAll('canvas').length },
     };
   });
   expect(result.live.same).toBe(true);
   expect(result.live.effectsOff).toBeGreaterThan(0.05);  // shading and shadow touch well over 5% of the frame
   expect(result.live.effectsBack).toBe(0);
-  expect(result.rebuild).toEqual({ detail: { page: 5 }, page: 5, display: 'single', newBook: true, oldDestroyed: true, canvases: 1 });
+  expect(result.live.single).toBe('single');
+  expect(result.rebuild).toEqual({ detail: { page: 5 }, page: 5, display: 'single', direction: 'rtl', newBook: true, oldDestroyed: true, canvases: 1 });
   expect(problems).toEqual([]);
 });
 

@@ -1,11 +1,11 @@
-// Browser: Flipbook.setOptions, the live switch of the effects that <cone-flipbook>'s lighting, shadows
-// and gutter attributes use; every other option needs a new book and is refused by name.
+// Browser: Flipbook.setOptions, the live switch of the effects (<cone-flipbook>'s lighting, shadows and
+// gutter attributes) and of display; every other option needs a new book and is refused by name.
 import { test, expect } from '@playwright/test';
 import { openReady } from './helpers.js';
 
 const FIXTURE = '/tests/browser/fixtures/flipbook-fixture.html';
 
-test('browser: Flipbook.setOptions switches lighting, shadows and gutter on the live book and refuses other options with a TypeError naming them', async ({ page }) => {
+test('browser: Flipbook.setOptions switches lighting, shadows and gutter on the live book and refuses fixed options with a TypeError naming them', async ({ page }) => {
   await openReady(page, FIXTURE);
   const result = await page.evaluate(async () => {
     const container = document.getElementById('container');
@@ -23,7 +23,7 @@ test('browser: Flipbook.setOptions switches lighting, shadows and gutter on the 
     book.setOptions({ shadows: true });
     const shadowOnly = frameAt();
     const refusals = [];
-    for (const options of [{ display: 'single' }, { lighting: 'no' }, { colour: 'red' }, null, { lighting: true, duration: 10 }]) {
+    for (const options of [{ direction: 'rtl' }, { lighting: 'no' }, { colour: 'red' }, null, { lighting: true, duration: 10 }]) {
       try { book.setOptions(options); refusals.push('no error'); } catch (e) { refusals.push(`${e.name}: ${e.message}`); }
     }
     book.setOptions({ shadows: true });  // sends all three settings to the renderer again
@@ -32,10 +32,40 @@ test('browser: Flipbook.setOptions switches lighting, shadows and gutter on the 
   });
   expect(result.effectsOff).toBeGreaterThan(0.05);
   expect(result.shadowBack).toBeGreaterThan(0.005);  // the lifted leaf's shadow falls on the resting pages
-  const names = ["'display'", "'lighting'", "'colour'", 'options must be an object', "'duration'"];
+  const names = ["'direction'", "'lighting'", "'colour'", 'options must be an object', "'duration'"];
   result.refusals.forEach((message, i) => {
     expect(message).toMatch(/^TypeError: conecurl: /);
     expect(message).toContain(names[i]);
   });
   expect(result.unchangedByRefusals).toBe(0);  // a refused call changes nothing, not even its valid part
+});
+
+test('browser: Flipbook.setOptions({ display }) switches single and double on the live book: same canvas and textures, same page, a resize event', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    const container = document.getElementById('container');
+    const pages = Array.from({ length: 8 }, (_, i) => window.makeNumberedPage(i));
+    const book = await window.Flipbook.create(container, { pages, display: 'double', startPage: 3 });
+    window.book = book;  // for settle()
+    const canvas = book.surface.canvas;
+    const resizes = [];
+    book.addEventListener('resize', (e) => resizes.push(e.detail.display));
+    const before = { display: book.display, open: book.openPages, textures: book.surface.renderer.residentPageImages() };
+    book.setOptions({ display: 'single' });
+    await window.settle();
+    const single = { display: book.display, page: book.page, open: book.openPages, option: book.options.display };
+    book.setOptions({ display: 'double' });
+    await window.settle();
+    return {
+      before, single, double: { display: book.display, open: book.openPages },
+      sameCanvas: book.surface.canvas === canvas, textures: book.surface.renderer.residentPageImages(), resizes,
+    };
+  });
+  expect(result.before).toEqual({ display: 'double', open: [3, 4], textures: result.before.textures });
+  expect(result.single).toEqual({ display: 'single', page: 3, open: [3], option: 'single' });
+  expect(result.double.display).toBe('double');
+  expect(result.double.open).toContain(3);
+  expect(result.sameCanvas).toBe(true);
+  expect(result.textures).toBeGreaterThanOrEqual(result.before.textures);
+  expect(result.resizes).toEqual(['single', 'double']);
 });

@@ -74,12 +74,16 @@ export const createCommand = fc.oneof(
 
 // ---- setOptions ---------------------------------------------------------------------------------
 
-const liveOption = fc.constantFrom('lighting', 'shadows', 'gutter');
-const validSetOptions = fc.dictionary(liveOption, flag, { maxKeys: 3 }).map((options) => ({ options, culprit: null }));
+const effectOption = fc.constantFrom('lighting', 'shadows', 'gutter');
+const validSetOptions = fc.record({
+  effects: fc.dictionary(effectOption, flag, { maxKeys: 3 }),
+  display: fc.option(fc.constantFrom('single', 'double', 'auto'), { nil: undefined }),
+}).map(({ effects, display }) => ({ options: display === undefined ? effects : { ...effects, display }, culprit: null }));
 const invalidSetOptions = fc.oneof(
-  fc.tuple(liveOption, fc.constantFrom('yes', 1, null, 0, Number.NaN)).map(([key, value]) => ({ options: { [key]: value }, culprit: key })),
+  fc.tuple(effectOption, fc.constantFrom('yes', 1, null, 0, Number.NaN)).map(([key, value]) => ({ options: { [key]: value }, culprit: key })),
+  fc.constantFrom('triple', 2, null).map((value) => ({ options: { display: value }, culprit: 'display' })),
   // Options fixed for a book's life: valid values, refused because the book is live.
-  fc.constantFrom(['duration', 500], ['display', 'single'], ['direction', 'rtl'], ['startPage', 0], ['loadWindow', 2],
+  fc.constantFrom(['duration', 500], ['direction', 'rtl'], ['startPage', 0], ['loadWindow', 2],
     ['label', 'New'], ['hardCovers', true]).map(([key, value]) => ({ options: { [key]: value, lighting: true }, culprit: key })),
   fc.constant({ options: { colour: 'red' }, culprit: 'colour' }),
   fc.constantFrom(null, 'lighting', 42).map((options) => ({ options, culprit: 'options' })),

@@ -103,9 +103,11 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses({ pages, display: 'x'.repeat(500) }, `option 'display' must be 'single', 'double' or 'auto', got "${'x'.repeat(57)}..."`);
 });
 
-test('node: setOptions takes only lighting, shadows and gutter, checked; flip options are { animate: boolean }', () => {
+test('node: setOptions takes only lighting, shadows, gutter and display, checked; flip options are { animate: boolean }', () => {
   assert.deepEqual(checkLiveOptions({ lighting: false }, pages), { lighting: false });
-  assert.throws(() => checkLiveOptions({ display: 'single' }, pages), /option 'display' cannot change on a live book \(only lighting, shadows, gutter\)/);
+  assert.deepEqual(checkLiveOptions({ display: 'single' }, pages), { display: 'single' });
+  assert.throws(() => checkLiveOptions({ display: 'triple' }, pages), /option 'display' must be 'single', 'double' or 'auto'/);
+  assert.throws(() => checkLiveOptions({ direction: 'rtl' }, pages), /option 'direction' cannot change on a live book \(only lighting, shadows, gutter, display\)/);
   assert.throws(() => checkLiveOptions({ shadows: NaN }, pages), /option 'shadows' must be true or false, got NaN/);
   assert.throws(() => checkLiveOptions(undefined, pages), /options must be an object, got undefined/);
   assert.deepEqual(checkFlipOptions(undefined), { animate: true });

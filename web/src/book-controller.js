@@ -150,12 +150,16 @@ export class BookController extends EventTarget {
     }
   }
 
-  /** Switches lighting, shadows and gutter shading on a live book; other options need a new book. */
+  /**
+   * Switches lighting, shadows, gutter shading and display on a live book (same surface, same page);
+   * other options need a new book.
+   */
   setOptions(options) {
     this._alive();
     Object.assign(this._settings, checkLiveOptions(options, this._settings.pages));
     const { lighting, shadows, gutter } = this._settings;
     this._surface.setOptions({ lighting, shadows, gutter });
+    if ('display' in options) this._relayout();
   }
 
   destroy() {

@@ -3,8 +3,11 @@
 // HTML page), and are what a browser without JavaScript shows.
 import { Flipbook } from './flipbook.js';
 import { BOOK_EVENTS } from './book-events.js';
+import { DEFAULTS } from './options.js';
 
 const TAG = 'cone-flipbook';
+// On a server (no DOM) the module still imports: the class has no element to be, and nothing is defined.
+const ElementBase = globalThis.HTMLElement ?? class {};
 const NOT_PAGES = ['script', 'style', 'template', 'link', 'meta', 'noscript'];  // children that are never pages
 
 const parseText = (raw) => raw;
@@ -47,7 +50,7 @@ const ATTRIBUTES = {
   'pdf-worker-src': ['pdfWorkerSrc', parseText],
 };
 const ATTRIBUTE_OF_OPTION = Object.fromEntries(Object.entries(ATTRIBUTES).map(([name, [option]]) => [option, name]));
-const LIVE_ATTRIBUTES = ['lighting', 'shadows', 'gutter'];  // applied to the running book, no rebuild
+const LIVE_ATTRIBUTES = ['lighting', 'shadows', 'gutter', 'display'];  // applied to the running book, no rebuild
 
 function attributeError(attribute, expected, raw) {
   return new TypeError(`conecurl: <${TAG}> attribute '${attribute}' must be ${expected}, got "${raw}"`);
@@ -83,7 +86,7 @@ const TEMPLATE = `
 <div class="book" part="book"></div>
 <div class="failed" part="error" role="alert" hidden><p></p><slot></slot></div>`;
 
-export class ConeFlipbookElement extends HTMLElement {
+export class ConeFlipbookElement extends ElementBase {
   static get observedAttributes() { return Object.keys(ATTRIBUTES); }
 
   constructor() {
@@ -165,7 +168,8 @@ export class ConeFlipbookElement extends HTMLElement {
     if (name === 'start-page') this._reopenAt = null;  // a new start page wins over the page kept
     if (LIVE_ATTRIBUTES.includes(name) && this._book && !this._waiter) {
       try {
-        this._book.setOptions({ [ATTRIBUTES[name][0]]: value === null ? true : parseBoolean(value, name) });
+        const [option, parse] = ATTRIBUTES[name];
+        this._book.setOptions({ [option]: value === null ? DEFAULTS[option] : parse(value, name) });
       } catch (error) {
         this._report(error);  // the book keeps its previous setting and keeps working
       }
@@ -312,4 +316,4 @@ export class ConeFlipbookElement extends HTMLElement {
   }
 }
 
-if (!customElements.get(TAG)) customElements.define(TAG, ConeFlipbookElement);
+if (globalThis.customElements && !customElements.get(TAG)) customElements.define(TAG, ConeFlipbookElement);

@@ -227,8 +227,8 @@ export class BookController extends EventTarget {
    * takes over: an animated flip still under way stops turning and resolves.
    */
   flip(index: number, options?: { animate?: boolean }): Promise<void>;
-  /** Switches the effects on a live book; any other option is a TypeError (it needs a new book). */
-  setOptions(options: Pick<FlipbookOptions, 'lighting' | 'shadows' | 'gutter'>): void;
+  /** Switches the effects or the display on a live book (same page); any other option is a TypeError (it needs a new book). */
+  setOptions(options: Pick<FlipbookOptions, 'lighting' | 'shadows' | 'gutter' | 'display'>): void;
   /**
    * Stops everything at once, mid-turn or mid-drag too: no animation frame, listener, observer, GL
    * object or wasm object is left, the WebGL context is released, page loads are aborted. Turns in

@@ -32,7 +32,7 @@ export const DEFAULTS = {
   antialias: 'auto',
 };
 /** Options a live book takes through setOptions(); the others need a new book. */
-export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter'];
+export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter', 'display'];
 const PAGE_ENTRY_KEYS = ['src', 'html', 'alt', 'hard', 'zoomSrc', 'links'];
 const PAGE_SOURCES = 'a URL string, HTMLImageElement, HTMLCanvasElement, ImageBitmap, Blob, '
   + 'a function returning one of these (or a Promise of one), or an HTML element (an HTML page)';
