@@ -86,3 +86,23 @@ test('node: strict TypeScript (bundler and node16 resolution) typechecks a consu
     fs.rmSync(work, { recursive: true, force: true });
   }
 });
+
+test('node: strict TypeScript (bundler and node16 resolution) typechecks a consumer of the packed conecurl/react and conecurl/vue, with React\'s and Vue\'s own types', () => {
+  // Inside the repository (build/ is ignored), so that react, @types/react and vue resolve from its node_modules.
+  fs.mkdirSync(path.join(repositoryRoot, 'build'), { recursive: true });
+  const work = fs.mkdtempSync(path.join(repositoryRoot, 'build/ts-frameworks-'));
+  try {
+    const app = copyTemplate('typescript-frameworks', path.join(work, 'app'));
+    installTarball(packTo(work), app);
+    const tsc = path.join(repositoryRoot, 'node_modules/.bin/tsc');
+    for (const config of ['tsconfig.bundler.json', 'tsconfig.node16.json']) {
+      try {
+        execFileSync(tsc, ['-p', config, '--noEmit', '--strict'], { cwd: app, encoding: 'utf8', stdio: 'pipe' });
+      } catch (error) {
+        assert.fail(`tsc -p ${config} failed:\n${error.stdout}${error.stderr}`);
+      }
+    }
+  } finally {
+    fs.rmSync(work, { recursive: true, force: true });
+  }
+});

@@ -26,6 +26,8 @@ const OPTION_CHECKS = {
   on: (v) => (isPlainEntry(v) && Object.entries(v).every(([type, f]) => BOOK_EVENTS.includes(type) && typeof f === 'function'))
     || `an object of listeners by event name (${BOOK_EVENTS.join(', ')})`,
 };
+/** Every option validateOptions() knows (Flipbook.create also takes pdf and pdfWorkerSrc in place of pages). */
+export const OPTION_NAMES = Object.keys(OPTION_CHECKS);
 export const DEFAULTS = {
   display: 'auto', direction: 'ltr', startPage: 0, duration: 1000, hardCovers: false,
   lighting: true, shadows: true, gutter: true, loadWindow: 4, label: 'Book', fallback: true,

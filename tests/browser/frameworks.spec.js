@@ -1,0 +1,176 @@
+// Browser: conecurl/react and conecurl/vue in real apps built by Vite from the packed tarball
+// (tests/consumers/react-app, vue-app; React and Vue come from the repository's devDependencies). The
+// books show the right pages (screenshots), props apply live without a new canvas, the ref and
+// useFlipbook/exposed methods turn, children are pages, and StrictMode mounts leave one book and no leak.
+import { test, expect } from '@playwright/test';
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+import { serveDirectory } from '../../scripts/serve.mjs';
+import { copyTemplate, installTarball, packTo, repositoryRoot, writePageImages } from '../consumers/package-tools.mjs';
+import { pageAtColor } from './fixtures/test-pages.js';
+import { decodePng } from './png.js';
+
+const PAGE_COUNT = 6;
+const SHOWN = 0.2;   // a page image fills about 30% of a 640x400 book showing it
+const ABSENT = 0.005;
+let work;
+const sites = {};
+
+test.describe.configure({ mode: 'serial' });  // one tarball, two builds, two servers
+test.use({ viewport: { width: 800, height: 900 } });
+
+test.beforeAll(async () => {
+  // Inside the repository (build/ is ignored), so that the apps find React and Vue in its node_modules.
+  fs.mkdirSync(path.join(repositoryRoot, 'build'), { recursive: true });
+  work = fs.mkdtempSync(path.join(repositoryRoot, 'build/frameworks-'));
+  const tarball = packTo(work);
+  for (const app of ['react-app', 'vue-app']) {
+    const dir = copyTemplate(app, path.join(work, app));
+    writePageImages(path.join(dir, 'public/pages'), PAGE_COUNT);
+    installTarball(tarball, dir);
+    execFileSync(path.join(repositoryRoot, 'node_modules/.bin/vite'), ['build', dir, '--logLevel', 'warn'], { cwd: dir, stdio: 'pipe' });
+    sites[app] = await serveDirectory(path.join(dir, 'dist'));
+  }
+});
+
+test.afterAll(async () => {
+  for (const site of Object.values(sites)) site.server.close();
+  if (work) fs.rmSync(work, { recursive: true, force: true });
+});
+
+function watchProblems(page) {
+  const problems = [];
+  page.on('pageerror', (error) => problems.push(`uncaught: ${error.message}`));
+  page.on('console', (message) => {
+    if (message.type() === 'error' || /WebGL/.test(message.text())) problems.push(`console ${message.type()}: ${message.text()}`);
+  });
+  page.on('response', (response) => { if (response.status() >= 400) problems.push(`${response.status()}: ${response.url()}`); });
+  return problems;
+}
+
+/** Share of a book's on-screen pixels that show each test page's colour. */
+async function pageShares(locator) {
+  const { width, height, data } = decodePng(await locator.screenshot());
+  const counts = new Array(PAGE_COUNT).fill(0);
+  let samples = 0;
+  for (let y = 0; y < height; y += 2) {
+    for (let x = 0; x < width; x += 2) {
+      const i = (y * width + x) * 4;
+      const index = pageAtColor([data[i], data[i + 1], data[i + 2]], PAGE_COUNT);
+      if (index >= 0) counts[index]++;
+      samples++;
+    }
+  }
+  return counts.map((count) => count / samples);
+}
+
+/** Share of a book's pixels near the HTML page's green. */
+async function greenShare(locator) {
+  const { width, height, data } = decodePng(await locator.screenshot());
+  let green = 0;
+  for (let i = 0; i < width * height * 4; i += 4) {
+    if (Math.abs(data[i] - 30) < 25 && Math.abs(data[i + 1] - 160) < 25 && Math.abs(data[i + 2] - 90) < 25) green++;
+  }
+  return green / (width * height);
+}
+
+const shownPages = (shares) => shares.map((share, i) => (share > SHOWN ? i : -1)).filter((i) => i >= 0);
+
+async function openApp(page, app) {
+  const problems = watchProblems(page);
+  await page.goto(sites[app].url);
+  await page.waitForFunction(() => document.body.dataset.ready || document.body.dataset.error);
+  expect(await page.evaluate(() => document.body.dataset.error || null), 'the app reported an error').toBeNull();
+  // Both books built; the second one's pages come from its children.
+  await page.waitForFunction(() => document.querySelectorAll('#children-book canvas, #children-book *').length > 0);
+  return problems;
+}
+
+// Waits until the book's state (through the app's window hooks) says `predicate`.
+const waitFor = (page, predicate, arg) => page.waitForFunction(predicate, arg, { timeout: 10_000 });
+
+test('browser (React): a controlled <Flipbook> under StrictMode is one book on one canvas; useFlipbook controls elsewhere turn it, page and display props apply live, children are its pages', async ({ page }) => {
+  const problems = await openApp(page, 'react-app');
+  const book = page.locator('#book');
+  expect(await book.locator('canvas').count()).toBe(1);  // StrictMode mounted it twice: one book left
+  await waitFor(page, () => window.app.flipbook.ready);
+  expect(shownPages(await pageShares(book))).toEqual([1, 2]);  // page={2}: the spread 1, 2
+  expect(await page.locator('#page').textContent()).toBe('page 2 of 6');
+  await page.evaluate(() => { window.firstCanvas = document.querySelector('#book canvas'); });
+
+  await page.click('#next');  // useFlipbook().next(), a control outside the book
+  await waitFor(page, () => window.app.page === 3 && !window.app.flipbook.book.animating);
+  expect(shownPages(await pageShares(book))).toEqual([3, 4]);
+  expect(await page.locator('#page').textContent()).toBe('page 4 of 6');
+
+  await page.evaluate(() => window.app.setPage(0));  // the controlled prop turns the book back
+  await waitFor(page, () => window.app.flipbook.page === 0 && !window.app.flipbook.book.animating);
+  expect(shownPages(await pageShares(book))).toEqual([0]);
+
+  await page.evaluate(() => window.app.setDisplay('single'));
+  await waitFor(page, () => window.app.flipbook.display === 'single');
+  expect(await page.evaluate(() => document.querySelector('#book canvas') === window.firstCanvas)).toBe(true);
+  await page.evaluate(() => window.app.flipbook.flip(4, { animate: false }));
+  await waitFor(page, () => window.app.page === 4);
+  expect(shownPages(await pageShares(book))).toEqual([4]);
+  expect(await page.evaluate(() => window.events.filter(([type]) => type === 'ready').length)).toBe(1);
+
+  // Children: an <img>, an HTML <section> (React keeps rendering it), an <img>.
+  const children = page.locator('#children-book');
+  expect(shownPages(await pageShares(children))).toEqual([0]);
+  await children.locator('canvas').click({ position: { x: 440, y: 200 } });  // focus: the cover, mid-page
+  await page.keyboard.press('ArrowRight');
+  await page.waitForTimeout(1500);
+  expect(await greenShare(children)).toBeGreaterThan(0.15);
+  expect(await page.locator('#html-page h2').textContent()).toBe('An HTML page');
+  expect(problems).toEqual([]);
+});
+
+test('browser (React): 50 StrictMode mounts and unmounts leave no canvas, no WebGL context warning and a flat JS heap', async ({ page }) => {
+  const problems = await openApp(page, 'react-app');
+  const cdp = await page.context().newCDPSession(page);
+  const heap = async () => {
+    await cdp.send('HeapProfiler.collectGarbage');
+    return (await cdp.send('Runtime.getHeapUsage')).usedSize;
+  };
+  await page.evaluate(() => window.cycle(5));  // warm up: code compiled, caches filled
+  const before = await heap();
+  const canvases = await page.evaluate(() => document.querySelectorAll('canvas').length);
+  await page.evaluate(() => window.cycle(50));
+  const after = await heap();
+  console.log(`React StrictMode 50 mounts: JS heap ${before} -> ${after} bytes (${after - before})`);
+  expect(await page.evaluate(() => document.querySelectorAll('canvas').length)).toBe(canvases);
+  expect(after - before).toBeLessThan(1_000_000);
+  expect(problems).toEqual([]);
+});
+
+test('browser (Vue): v-model:page and display apply live on one canvas, the exposed next() turns, and the default slot holds the pages', async ({ page }) => {
+  const problems = await openApp(page, 'vue-app');
+  const book = page.locator('#book');
+  expect(await book.locator('canvas').count()).toBe(1);
+  await waitFor(page, () => window.app.book.value?.ready);
+  expect(shownPages(await pageShares(book))).toEqual([1, 2]);
+  await page.evaluate(() => { window.firstCanvas = document.querySelector('#book canvas'); });
+
+  await page.click('#next');  // the exposed next()
+  await waitFor(page, () => window.app.page.value === 3 && !window.app.book.value.book.animating);
+  expect(shownPages(await pageShares(book))).toEqual([3, 4]);
+  expect(await page.locator('#page').textContent()).toBe('page 4');
+
+  await page.evaluate(() => { window.app.page.value = 0; });
+  await waitFor(page, () => window.app.book.value.page === 0 && !window.app.book.value.book.animating);
+  expect(shownPages(await pageShares(book))).toEqual([0]);
+
+  await page.evaluate(() => { window.app.display.value = 'single'; });
+  await waitFor(page, () => window.app.book.value.display === 'single');
+  expect(await page.evaluate(() => document.querySelector('#book canvas') === window.firstCanvas)).toBe(true);
+
+  const children = page.locator('#children-book');
+  expect(shownPages(await pageShares(children))).toEqual([0]);
+  await children.locator('canvas').click({ position: { x: 440, y: 200 } });
+  await page.keyboard.press('ArrowRight');
+  await page.waitForTimeout(1500);
+  expect(await greenShare(children)).toBeGreaterThan(0.15);
+  expect(problems).toEqual([]);
+});

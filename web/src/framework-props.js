@@ -1,0 +1,51 @@
+// What the React and Vue components share: which props are book options, which of those change on the
+// live book and which need a new one, the handler of each book event, pages compared by content, and
+// the pages a component's children make. Read from options.js and book-events.js, never copied.
+import { BOOK_EVENTS } from './book-events.js';
+import { LIVE_OPTIONS, OPTION_NAMES } from './options.js';
+
+/** Options a component passes through as props: startPage comes from page/defaultPage, `on` from the handlers. */
+export const OPTION_PROPS = [...OPTION_NAMES.filter((name) => name !== 'startPage' && name !== 'on'), 'pdf', 'pdfWorkerSrc'];
+/** Props applied to the running book (setOptions); a change of any other option builds a new book at the page shown. */
+export const LIVE_PROPS = LIVE_OPTIONS;
+export const FIXED_PROPS = OPTION_PROPS.filter((name) => !LIVE_PROPS.includes(name) && name !== 'pages');
+
+const HANDLER_WORDS = { pageerror: 'PageError', turnstart: 'TurnStart', turncancel: 'TurnCancel' };
+/** 'turned' -> 'onTurned', 'pageerror' -> 'onPageError', ... for every book event. */
+export const EVENT_HANDLERS = Object.fromEntries(BOOK_EVENTS.map((type) => [
+  type, `on${HANDLER_WORDS[type] ?? type[0].toUpperCase() + type.slice(1)}`,
+]));
+
+const plainObject = (value) => value !== null && typeof value === 'object' && Object.getPrototypeOf(value) === Object.prototype;
+
+// Two page entries are the same page when they are the same value, or plain objects ({ src, alt, ... })
+// whose fields are: an array written inline in a render is not a new book.
+function samePage(a, b) {
+  if (Object.is(a, b)) return true;
+  if (!plainObject(a) || !plainObject(b)) return false;
+  const keys = Object.keys(a);
+  return keys.length === Object.keys(b).length && keys.every((key) => key !== 'links' ? Object.is(a[key], b[key])
+    : JSON.stringify(a.links) === JSON.stringify(b.links));
+}
+
+/** Whether two `pages` arrays (or undefined) list the same pages. */
+export function samePages(a, b) {
+  if (a === b) return true;
+  if (!Array.isArray(a) || !Array.isArray(b) || a.length !== b.length) return false;
+  return a.every((page, i) => samePage(page, b[i]));
+}
+
+/** Whether the options that need a new book differ between two sets of props. */
+export function fixedOptionsDiffer(a, b) {
+  return FIXED_PROPS.some((name) => !Object.is(a[name], b[name])) || !samePages(a.pages, b.pages);
+}
+
+/** The book options in a component's props (those given), `pages` included. */
+export function optionsOf(props) {
+  const options = {};
+  for (const name of OPTION_PROPS) if (props[name] !== undefined) options[name] = props[name];
+  return options;
+}
+
+/** Page `index` clamped into a book of `count` pages. */
+export const clampPage = (index, count) => Math.max(0, Math.min(Number.isInteger(index) ? index : 0, Math.max(0, count - 1)));

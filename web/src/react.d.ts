@@ -1,0 +1,51 @@
+// Types of conecurl/react (react.js): the <Flipbook> component's props, its ref handle, useFlipbook().
+import type { CSSProperties, ForwardRefExoticComponent, ReactNode, Ref, RefAttributes } from 'react';
+import type { FlipbookEventMap } from './flipbook.js';
+import type { FlipbookHandle, FlipbookOptionProps, FlipbookState } from './framework-props.js';
+
+export type { FlipbookHandle, FlipbookOptionProps, FlipbookState } from './framework-props.js';
+
+/** Every book event as a handler prop, given the event itself: onTurned, onTurnStart, onPageError, ... */
+export interface FlipbookEventProps {
+  onReady?: (event: FlipbookEventMap['ready']) => void;
+  onProgress?: (event: FlipbookEventMap['progress']) => void;
+  onPageError?: (event: FlipbookEventMap['pageerror']) => void;
+  onTurnStart?: (event: FlipbookEventMap['turnstart']) => void;
+  onTurned?: (event: FlipbookEventMap['turned']) => void;
+  onTurnCancel?: (event: FlipbookEventMap['turncancel']) => void;
+  onResize?: (event: FlipbookEventMap['resize']) => void;
+  onZoom?: (event: FlipbookEventMap['zoom']) => void;
+  onSharpened?: (event: FlipbookEventMap['sharpened']) => void;
+  onLink?: (event: FlipbookEventMap['link']) => void;
+  /** The book could not be built, or a prop was refused (a TypeError naming it); without it, the console hears. */
+  onError?: (event: CustomEvent<{ error: Error }>) => void;
+}
+
+export interface FlipbookProps extends FlipbookOptionProps, FlipbookEventProps {
+  /** Controlled: the page to show; a change turns the book there. Pair it with onPageChange. */
+  page?: number;
+  /** Uncontrolled: the page to open at. */
+  defaultPage?: number;
+  /** The page shown changed (a turn landed, a jump). */
+  onPageChange?: (page: number) => void;
+  /** The pages, when `pages` is not given: an <img> is an image page (src, alt), any other element a live HTML page. */
+  children?: ReactNode;
+  id?: string;
+  className?: string;
+  /** The box the book fills: width 100% and aspect-ratio 16 / 10 unless given here. */
+  style?: CSSProperties;
+}
+
+/** The flipbook as a React component; on a server it renders its empty, sized box. */
+export declare const Flipbook: ForwardRefExoticComponent<FlipbookProps & RefAttributes<FlipbookHandle>>;
+
+/** State and calls of a <Flipbook ref={flipbook.ref}> placed anywhere in the tree. */
+export interface UseFlipbook extends FlipbookState {
+  ref: Ref<FlipbookHandle>;
+  next(): Promise<boolean>;
+  prev(): Promise<boolean>;
+  flip(index: number, options?: { animate?: boolean }): Promise<void>;
+  setZoom(scale: number): void;
+  readonly book: FlipbookHandle['book'];
+}
+export declare function useFlipbook(): UseFlipbook;

@@ -1,0 +1,78 @@
+// conecurl/vue: <Flipbook> for Vue 3. Props are the book's options and apply while it runs
+// (book-mount.js), `v-model:page` follows the page shown, book events are emitted by their names, the
+// default slot can hold the pages, and next/prev/flip/page/zoom are exposed. Nothing here needs a DOM
+// until the component is mounted, so it renders on a server as a sized, empty box.
+import { Teleport, defineComponent, getCurrentInstance, h, onBeforeUnmount, onMounted, onUpdated, ref } from 'vue';
+import { BOOK_EVENTS } from './book-events.js';
+import { BookMount } from './book-mount.js';
+import { OPTION_PROPS } from './framework-props.js';
+
+// The box the book fills, as <cone-flipbook> sizes itself; a `style` attribute overrides any of it.
+const BOX_STYLE = { display: 'block', position: 'relative', width: '100%', aspectRatio: '16 / 10' };
+
+// Pages from the default slot: an <img> is an image page ({ src, alt }); any other element is an HTML
+// page, rendered by Vue into a box of its own (a Teleport) that the book lays over the page's place.
+function pagesFromSlot(vnodes, hosts) {
+  const pages = [];
+  const teleports = [];
+  const used = new Set();
+  const elements = vnodes.flatMap((vnode) => (Array.isArray(vnode.children) && typeof vnode.type === 'symbol' ? vnode.children : [vnode]))
+    .filter((vnode) => typeof vnode.type === 'string' || typeof vnode.type === 'object');
+  elements.forEach((vnode, i) => {
+    if (vnode.type === 'img') {
+      const { src, alt } = vnode.props ?? {};
+      pages.push(alt ? { src, alt } : src);
+      return;
+    }
+    const key = vnode.key ?? i;
+    let host = hosts.get(key);
+    if (!host) {
+      host = document.createElement('div');
+      host.style.height = '100%';
+      hosts.set(key, host);
+    }
+    used.add(key);
+    pages.push(host);
+    teleports.push(h(Teleport, { to: host, key }, [vnode]));
+  });
+  for (const key of hosts.keys()) if (!used.has(key)) hosts.delete(key);
+  return { pages, teleports };
+}
+
+export const Flipbook = defineComponent({
+  name: 'Flipbook',
+  // Untyped on purpose: Vue casts an absent Boolean prop to false, and an absent option must mean its default.
+  props: [...OPTION_PROPS, 'page', 'defaultPage'],
+  emits: [...BOOK_EVENTS, 'update:page'],
+  setup(props, { emit, expose, slots }) {
+    const listeners = getCurrentInstance().vnode.props ?? {};  // @error given? else errors go to the console
+    const mount = new BookMount((type, event) => {
+      emit(type, event);
+      if (type === 'error' && !listeners.onError) console.error(event.detail.error);
+    }, (page) => emit('update:page', page));
+    expose(mount.handle);
+    const container = ref(null);
+    const mounted = ref(false);
+    const hosts = new Map();
+    let current = {};
+    let built = false;
+    onMounted(() => { mounted.value = true; });
+    onUpdated(() => {
+      if (!built) {
+        built = true;
+        mount.mount(container.value, current);
+      } else {
+        mount.update(current);
+      }
+    });
+    onBeforeUnmount(() => mount.unmount());
+    return () => {
+      const fromSlot = mounted.value && props.pages === undefined && props.pdf === undefined && slots.default;
+      const { pages, teleports } = fromSlot ? pagesFromSlot(slots.default(), hosts) : { pages: props.pages, teleports: [] };
+      current = { ...props, pages };
+      return h('div', { ref: container, style: BOX_STYLE }, teleports);
+    };
+  },
+});
+
+export default Flipbook;
