@@ -270,3 +270,37 @@ test('browser: removing <cone-flipbook> destroys its book and releases its canva
   await expect.poll(() => page.evaluate(() => window.liveCanvases())).toBe(result.before);
   expect(problems).toEqual([]);
 });
+
+test('browser: every option is a property too, as Svelte and Angular set them: pages as an array (over children), scalars written to their attributes, display live, a bad pages value named', async ({ page }) => {
+  const problems = await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    const element = document.createElement('cone-flipbook');
+    element.append(Object.assign(document.createElement('img'), { src: window.pageUrl(5), alt: 'ignored: the pages property wins' }));
+    element.pages = [window.pageUrl(0), { src: window.pageUrl(1), alt: 'One' }, window.pageUrl(2), window.pageUrl(3)];
+    element.startPage = 2;
+    element.lighting = false;
+    element.duration = 300;
+    const attributes = ['start-page', 'lighting', 'duration'].map((name) => element.getAttribute(name));
+    document.getElementById('stage').append(element);
+    const book = await element.whenReady();
+    const built = { pageCount: book.pageCount, page: element.page, lighting: book.options.lighting, duration: book.options.duration,
+      startPage: element.startPage, pages: element.pages.length };
+    element.display = 'single';
+    const live = { same: element.book === book, display: element.display, attribute: element.getAttribute('display') };
+    const rebuilt = new Promise((resolve) => element.addEventListener('ready', resolve, { once: true }));
+    element.pages = [window.pageUrl(0), window.pageUrl(1)];
+    await rebuilt;
+    const after = { pageCount: element.book.pageCount, newBook: element.book !== book };
+    const errors = [];
+    element.addEventListener('error', (event) => errors.push(event.detail.error.message));
+    element.pages = 42;
+    return { attributes, built, live, after, errors };
+  });
+  expect(result.attributes).toEqual(['2', 'false', '300']);
+  expect(result.built).toEqual({ pageCount: 4, page: 1, lighting: false, duration: 300, startPage: 2, pages: 4 });
+  expect(result.live).toEqual({ same: true, display: 'single', attribute: 'single' });
+  expect(result.after).toEqual({ pageCount: 2, newBook: true });
+  expect(result.errors).toHaveLength(1);
+  expect(result.errors[0]).toMatch(/property 'pages' must be an array of pages or a string of URLs, got number/);
+  expect(problems.filter((p) => !/property 'pages'/.test(p))).toEqual([]);
+});

@@ -1,6 +1,6 @@
 // Types of <cone-flipbook> (element.js): the element class, its events, and its tag in
 // HTMLElementTagNameMap so document.querySelector('cone-flipbook') is typed.
-import type { Flipbook, FlipbookCreateError, FlipbookEventMap } from './flipbook.js';
+import type { Flipbook, FlipbookCreateError, FlipbookEventMap, PageEntry, PageSource } from './flipbook.js';
 import type { StaticBook } from './static-book.js';
 
 export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' | keyof FlipbookEventMap>,
@@ -30,8 +30,30 @@ export class ConeFlipbookElement extends HTMLElement {
   readonly page: number;
   /** 0 until `ready`. */
   readonly pageCount: number;
-  /** Pages shown side by side; null until `ready`. */
-  readonly display: 'single' | 'double' | null;
+  /** Pages shown side by side; null until `ready`. Setting it sets the display attribute (applied live). */
+  get display(): 'single' | 'double' | null;
+  set display(value: 'single' | 'double' | 'auto' | null | undefined);
+  /**
+   * Every option is a property too (frameworks that set properties, such as Svelte and Angular): the
+   * pages as an array (over the pages attribute and the child elements; a string sets the attribute),
+   * a PDF as a URL or its bytes; the others read their attribute, parsed, and writing one sets the
+   * attribute (null removes it) with the attribute's effect (live, or a rebuild at the current page).
+   */
+  get pages(): PageSource[] | (PageEntry | PageSource)[] | string[] | undefined;
+  set pages(value: (PageEntry | PageSource | HTMLElement)[] | string | null | undefined);
+  get pdf(): string | ArrayBuffer | Uint8Array | undefined;
+  set pdf(value: string | ArrayBuffer | Uint8Array | null | undefined);
+  direction: 'ltr' | 'rtl' | 'vertical' | undefined;
+  startPage: number | undefined;
+  duration: number | undefined;
+  hardCovers: boolean | undefined;
+  lighting: boolean | undefined;
+  shadows: boolean | undefined;
+  gutter: boolean | undefined;
+  antialias: boolean | 'auto' | undefined;
+  loadWindow: number | undefined;
+  wasmUrl: string | undefined;
+  pdfWorkerSrc: string | undefined;
   /**
    * Waits for the book being built (the StaticBook fallback without WebGL2 or the engine); rejects
    * with its error, or at once if not in the document or destroyed.

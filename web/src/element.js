@@ -4,57 +4,13 @@
 import { Flipbook } from './flipbook.js';
 import { BOOK_EVENTS } from './book-events.js';
 import { DEFAULTS } from './options.js';
+import {
+  ATTRIBUTES, ATTRIBUTE_OF_OPTION, LIVE_ATTRIBUTES, PROPERTY_OPTIONS, TAG, defineOptionProperties, setOptionAttribute,
+} from './element-attributes.js';
 
-const TAG = 'cone-flipbook';
 // On a server (no DOM) the module still imports: the class has no element to be, and nothing is defined.
 const ElementBase = globalThis.HTMLElement ?? class {};
 const NOT_PAGES = ['script', 'style', 'template', 'link', 'meta', 'noscript'];  // children that are never pages
-
-const parseText = (raw) => raw;
-function parseNumber(raw, attribute) {
-  const value = Number(raw);
-  if (raw.trim() === '' || !Number.isFinite(value)) throw attributeError(attribute, 'a number', raw);
-  return value;
-}
-function parseBoolean(raw, attribute) {
-  if (raw === '' || raw === 'true') return true;  // a bare boolean attribute counts as "true"
-  if (raw === 'false') return false;
-  throw attributeError(attribute, '"true" or "false"', raw);
-}
-function parseAntialias(raw, attribute) {
-  if (raw === 'auto') return 'auto';
-  if (raw === '' || raw === 'true' || raw === 'false') return raw !== 'false';
-  throw attributeError(attribute, '"auto", "true" or "false"', raw);
-}
-function parseList(raw, attribute) {
-  const urls = raw.split(/\s+/).filter(Boolean);
-  if (urls.length === 0) throw attributeError(attribute, 'image URLs separated by spaces', raw);
-  return urls;
-}
-
-// attribute -> [Flipbook option, parser]; the parsers check syntax, Flipbook.create the values.
-const ATTRIBUTES = {
-  pages: ['pages', parseList],
-  display: ['display', parseText],
-  direction: ['direction', parseText],
-  'start-page': ['startPage', parseNumber],
-  duration: ['duration', parseNumber],
-  'hard-covers': ['hardCovers', parseBoolean],
-  lighting: ['lighting', parseBoolean],
-  shadows: ['shadows', parseBoolean],
-  gutter: ['gutter', parseBoolean],
-  'load-window': ['loadWindow', parseNumber],
-  'wasm-url': ['wasmUrl', parseText],
-  antialias: ['antialias', parseAntialias],
-  pdf: ['pdf', parseText],
-  'pdf-worker-src': ['pdfWorkerSrc', parseText],
-};
-const ATTRIBUTE_OF_OPTION = Object.fromEntries(Object.entries(ATTRIBUTES).map(([name, [option]]) => [option, name]));
-const LIVE_ATTRIBUTES = ['lighting', 'shadows', 'gutter', 'display'];  // applied to the running book, no rebuild
-
-function attributeError(attribute, expected, raw) {
-  return new TypeError(`conecurl: <${TAG}> attribute '${attribute}' must be ${expected}, got "${raw}"`);
-}
 
 /** Flipbook's TypeErrors name options ('startPage'); an element's user knows attributes ('start-page'). */
 function inAttributeTerms(error, element) {
@@ -103,8 +59,9 @@ export class ConeFlipbookElement extends ElementBase {
     this._scheduled = false;
     this._reopenAt = null;       // page to open at when the book is built again
     this._destroyed = false;
+    this._held = {};             // pages (an array) and pdf (bytes) given as properties: over attributes and children
     this._children = new MutationObserver((records) => {
-      if (!this.hasAttribute('pages') && records.some((record) => this._touchesChildPages(record))) this._schedule();
+      if (!this.hasAttribute('pages') && !this._held.pages && records.some((record) => this._touchesChildPages(record))) this._schedule();
     });
   }
 
@@ -119,8 +76,32 @@ export class ConeFlipbookElement extends ElementBase {
   }
   /** Number of pages; 0 until `ready`. */
   get pageCount() { return this._book ? this._book.pageCount : 0; }
-  /** 'single' or 'double' as shown; null until `ready`. */
+  /** 'single' or 'double' as shown; null until `ready`. Setting it sets the display attribute (live). */
   get display() { return this._book ? this._book.display : null; }
+  set display(value) { setOptionAttribute(this, 'display', value); }
+
+  /**
+   * The pages: an array as Flipbook takes (URLs, images, canvases, Blobs, elements, { src, alt, ... }),
+   * over the pages attribute and the child elements; a string sets the attribute. null: neither.
+   */
+  get pages() { return this._held.pages ?? this.getAttribute('pages')?.split(/\s+/).filter(Boolean); }
+  set pages(value) { this._setHeldProperty('pages', value, Array.isArray(value)); }
+  /** A PDF: a URL (the pdf attribute) or its bytes (an ArrayBuffer or Uint8Array). */
+  get pdf() { return this._held.pdf ?? this.getAttribute('pdf') ?? undefined; }
+  set pdf(value) { this._setHeldProperty('pdf', value, value instanceof ArrayBuffer || value instanceof Uint8Array); }
+
+  _setHeldProperty(option, value, held) {
+    if (held) {
+      this._held[option] = value;
+      this._schedule();
+      return;
+    }
+    const had = option in this._held;
+    delete this._held[option];
+    if (typeof value === 'string' || value === null || value === undefined) setOptionAttribute(this, option, value);
+    else this._fail(new TypeError(`conecurl: <${TAG}> property '${option}' must be ${option === 'pages' ? 'an array of pages or a string of URLs' : 'a URL string, an ArrayBuffer or a Uint8Array'}, got ${typeof value}`));
+    if (had) this._schedule();
+  }
 
   /**
    * Resolves with the Flipbook once it is ready, waiting for a build that is scheduled or running.
@@ -149,6 +130,13 @@ export class ConeFlipbookElement extends ElementBase {
   }
 
   connectedCallback() {
+    // Properties a framework set before this element was defined are own properties: pass them on.
+    for (const option of PROPERTY_OPTIONS) {
+      if (!Object.prototype.hasOwnProperty.call(this, option)) continue;
+      const value = this[option];
+      delete this[option];
+      this[option] = value;
+    }
     this._destroyed = false;
     this._children.observe(this, { childList: true, subtree: true, attributes: true, attributeFilter: ['src', 'alt'] });
     if (!this._book && !this._waiter) this._schedule();  // else: moved within the document, the book lives on
@@ -229,6 +217,7 @@ export class ConeFlipbookElement extends ElementBase {
       const raw = this.getAttribute(attribute);
       if (raw !== null) options[option] = parse(raw, attribute);
     }
+    Object.assign(options, this._held);
     if (options.pdf === undefined) options.pages ??= this._childPages();  // a PDF brings its own pages
     if (this._reopenAt !== null) {
       options.startPage = options.pages ? Math.min(this._reopenAt, options.pages.length - 1) : this._reopenAt;
@@ -315,5 +304,7 @@ export class ConeFlipbookElement extends ElementBase {
     this._container.replaceChildren();
   }
 }
+
+defineOptionProperties(ConeFlipbookElement.prototype);
 
 if (globalThis.customElements && !customElements.get(TAG)) customElements.define(TAG, ConeFlipbookElement);

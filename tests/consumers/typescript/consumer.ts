@@ -58,6 +58,12 @@ export async function useElement(): Promise<string | null> {
   await created.flip(1);
   // @ts-expect-error: page is read-only
   created.page = 3;
+  created.pages = ['a.jpg', { src: 'b.jpg', alt: 'B' }];  // options as properties (Svelte, Angular)
+  created.display = 'auto';
+  created.lighting = false;
+  created.startPage = 1;
+  // @ts-expect-error: direction is one of three
+  created.direction = 'diagonal';
   created.destroy();
   return book.pageCount > 0 ? element.display : null;
 }

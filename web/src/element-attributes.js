@@ -1,0 +1,80 @@
+// <cone-flipbook>'s attributes: each one's Flipbook option and parser, which apply live, and the option
+// properties frameworks set (element.js uses them; the element's behaviour stays there).
+import { LIVE_OPTIONS } from './options.js';
+
+export const TAG = 'cone-flipbook';
+
+const parseText = (raw) => raw;
+function parseNumber(raw, attribute) {
+  const value = Number(raw);
+  if (raw.trim() === '' || !Number.isFinite(value)) throw attributeError(attribute, 'a number', raw);
+  return value;
+}
+function parseBoolean(raw, attribute) {
+  if (raw === '' || raw === 'true') return true;  // a bare boolean attribute counts as "true"
+  if (raw === 'false') return false;
+  throw attributeError(attribute, '"true" or "false"', raw);
+}
+function parseAntialias(raw, attribute) {
+  if (raw === 'auto') return 'auto';
+  if (raw === '' || raw === 'true' || raw === 'false') return raw !== 'false';
+  throw attributeError(attribute, '"auto", "true" or "false"', raw);
+}
+function parseList(raw, attribute) {
+  const urls = raw.split(/\s+/).filter(Boolean);
+  if (urls.length === 0) throw attributeError(attribute, 'image URLs separated by spaces', raw);
+  return urls;
+}
+
+// attribute -> [Flipbook option, parser]; the parsers check syntax, Flipbook.create the values.
+export const ATTRIBUTES = {
+  pages: ['pages', parseList],
+  display: ['display', parseText],
+  direction: ['direction', parseText],
+  'start-page': ['startPage', parseNumber],
+  duration: ['duration', parseNumber],
+  'hard-covers': ['hardCovers', parseBoolean],
+  lighting: ['lighting', parseBoolean],
+  shadows: ['shadows', parseBoolean],
+  gutter: ['gutter', parseBoolean],
+  'load-window': ['loadWindow', parseNumber],
+  'wasm-url': ['wasmUrl', parseText],
+  antialias: ['antialias', parseAntialias],
+  pdf: ['pdf', parseText],
+  'pdf-worker-src': ['pdfWorkerSrc', parseText],
+};
+export const ATTRIBUTE_OF_OPTION = Object.fromEntries(Object.entries(ATTRIBUTES).map(([name, [option]]) => [option, name]));
+/** Attributes applied to the running book (Flipbook.setOptions), no rebuild. */
+export const LIVE_ATTRIBUTES = LIVE_OPTIONS.map((option) => ATTRIBUTE_OF_OPTION[option]);
+
+function attributeError(attribute, expected, raw) {
+  return new TypeError(`conecurl: <${TAG}> attribute '${attribute}' must be ${expected}, got "${raw}"`);
+}
+
+/** Writes an option to its attribute (String(value)); null or undefined removes it. */
+export function setOptionAttribute(element, option, value) {
+  const attribute = ATTRIBUTE_OF_OPTION[option];
+  if (value === null || value === undefined) element.removeAttribute(attribute);
+  else element.setAttribute(attribute, String(value));
+}
+
+// Every other option is a property too (Svelte, Angular and others set properties when an element has
+// them): reading gives the attribute's value, parsed; writing sets or (null) removes the attribute.
+export const PROPERTY_OPTIONS = Object.values(ATTRIBUTES).map(([option]) => option);
+
+/** Defines the option properties `prototype` does not define itself (display, pages and pdf it does). */
+export function defineOptionProperties(prototype) {
+  for (const [attribute, [option, parse]] of Object.entries(ATTRIBUTES)) {
+    if (option in prototype) continue;
+    Object.defineProperty(prototype, option, {
+      configurable: true,
+      get() {
+        const raw = this.getAttribute(attribute);
+        if (raw === null) return undefined;
+        try { return parse(raw, attribute); } catch { return raw; }  // a bad value is reported by the build
+      },
+      set(value) { setOptionAttribute(this, option, value); },
+    });
+  }
+}
+
