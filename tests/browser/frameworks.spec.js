@@ -1,10 +1,12 @@
-// Browser: conecurl/react and conecurl/vue in real apps built by Vite from the packed tarball
-// (tests/consumers/react-app, vue-app; React and Vue come from the repository's devDependencies). The
+// Browser: conecurl/react and conecurl/vue in real apps built from the packed tarball: Vite apps
+// (tests/consumers/react-app, vue-app) and a server-rendered Next.js app-router app (next-app, a
+// production build served by `next start`); React, Vue and Next come from the devDependencies. The
 // books show the right pages (screenshots), props apply live without a new canvas, the ref and
 // useFlipbook/exposed methods turn, children are pages, and StrictMode mounts leave one book and no leak.
 import { test, expect } from '@playwright/test';
-import { execFileSync } from 'node:child_process';
+import { execFileSync, spawn } from 'node:child_process';
 import fs from 'node:fs';
+import net from 'node:net';
 import path from 'node:path';
 import { serveDirectory } from '../../scripts/serve.mjs';
 import { copyTemplate, installTarball, packTo, repositoryRoot, writePageImages } from '../consumers/package-tools.mjs';
@@ -16,6 +18,29 @@ const SHOWN = 0.2;   // a page image fills about 30% of a 640x400 book showing i
 const ABSENT = 0.005;
 let work;
 const sites = {};
+let nextServer;
+
+// A port free now, for `next start`.
+const freePort = () => new Promise((resolve) => {
+  const server = net.createServer().listen(0, '127.0.0.1', () => {
+    const { port } = server.address();
+    server.close(() => resolve(port));
+  });
+});
+
+async function startNext(dir) {
+  const port = await freePort();
+  const child = spawn(path.join(repositoryRoot, 'node_modules/.bin/next'), ['start', '-p', String(port), '-H', '127.0.0.1'],
+    { cwd: dir, env: { ...process.env, NEXT_TELEMETRY_DISABLED: '1' }, stdio: 'ignore' });
+  const url = `http://127.0.0.1:${port}/`;
+  for (let tries = 0; ; tries++) {
+    try {
+      if ((await fetch(url)).ok) return { child, url };
+    } catch { /* not listening yet */ }
+    if (tries > 100) throw new Error('next start did not answer in 20 s');
+    await new Promise((resolve) => setTimeout(resolve, 200));
+  }
+}
 
 test.describe.configure({ mode: 'serial' });  // one tarball, two builds, two servers
 test.use({ viewport: { width: 800, height: 900 } });
@@ -32,9 +57,16 @@ test.beforeAll(async () => {
     execFileSync(path.join(repositoryRoot, 'node_modules/.bin/vite'), ['build', dir, '--logLevel', 'warn'], { cwd: dir, stdio: 'pipe' });
     sites[app] = await serveDirectory(path.join(dir, 'dist'));
   }
+  const next = copyTemplate('next-app', path.join(work, 'next-app'));
+  writePageImages(path.join(next, 'public/pages'), PAGE_COUNT);
+  installTarball(tarball, next);
+  execFileSync(path.join(repositoryRoot, 'node_modules/.bin/next'), ['build'],
+    { cwd: next, stdio: 'pipe', env: { ...process.env, NEXT_TELEMETRY_DISABLED: '1' } });
+  nextServer = await startNext(next);
 });
 
 test.afterAll(async () => {
+  nextServer?.child.kill();
   for (const site of Object.values(sites)) site.server.close();
   if (work) fs.rmSync(work, { recursive: true, force: true });
 });
@@ -79,11 +111,9 @@ const shownPages = (shares) => shares.map((share, i) => (share > SHOWN ? i : -1)
 
 async function openApp(page, app) {
   const problems = watchProblems(page);
-  await page.goto(sites[app].url);
+  await page.goto(app === 'next-app' ? nextServer.url : sites[app].url);
   await page.waitForFunction(() => document.body.dataset.ready || document.body.dataset.error);
   expect(await page.evaluate(() => document.body.dataset.error || null), 'the app reported an error').toBeNull();
-  // Both books built; the second one's pages come from its children.
-  await page.waitForFunction(() => document.querySelectorAll('#children-book canvas, #children-book *').length > 0);
   return problems;
 }
 
@@ -173,4 +203,28 @@ test('browser (Vue): v-model:page and display apply live on one canvas, the expo
   await page.waitForTimeout(1500);
   expect(await greenShare(children)).toBeGreaterThan(0.15);
   expect(problems).toEqual([]);
+});
+
+test('browser (Next.js): the server-rendered page hydrates with no warning, the book turns through ref.current.next(), and a display prop change applies to the same canvas', async ({ page }) => {
+  // The server's HTML holds the book's box, sized and empty (the page as the browser first gets it).
+  const html = await (await fetch(nextServer.url)).text();
+  expect(html).toMatch(/<div id="book" style="display:block;position:relative;width:640px;aspect-ratio:auto;height:400px"><\/div>/);
+  const problems = await openApp(page, 'next-app');
+  const book = page.locator('#book');
+  expect(await book.locator('canvas').count()).toBe(1);
+  expect(shownPages(await pageShares(book))).toEqual([0]);
+  await page.evaluate(() => { window.firstCanvas = document.querySelector('#book canvas'); });
+
+  expect(await page.evaluate(() => window.app.book.current.next())).toBe(true);
+  await waitFor(page, () => !window.app.book.current.book.animating);
+  expect(shownPages(await pageShares(book))).toEqual([1, 2]);
+  await page.click('#next');
+  await waitFor(page, () => window.app.book.current.page === 3 && !window.app.book.current.book.animating);
+  expect(shownPages(await pageShares(book))).toEqual([3, 4]);
+
+  await page.evaluate(() => window.app.setDisplay('single'));
+  await waitFor(page, () => window.app.book.current.display === 'single');
+  expect(await page.evaluate(() => document.querySelector('#book canvas') === window.firstCanvas)).toBe(true);
+  expect(shownPages(await pageShares(book))).toEqual([3]);
+  expect(problems).toEqual([]);  // no hydration warning, no error, no failed request
 });
