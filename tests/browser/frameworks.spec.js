@@ -146,6 +146,13 @@ test('browser (React): a controlled <Flipbook> under StrictMode is one book on o
   expect(shownPages(await pageShares(book))).toEqual([4]);
   expect(await page.evaluate(() => window.events.filter(([type]) => type === 'ready').length)).toBe(1);
 
+  // Pages replaced by a longer list: a new book in the same box, at the page shown.
+  await page.evaluate(() => window.app.setPages([...window.app.pages, 'pages/page-1.svg']));
+  await waitFor(page, () => window.app.flipbook.ready && window.app.flipbook.pageCount === 7);
+  expect(await page.evaluate(() => window.app.flipbook.page)).toBe(4);
+  expect(shownPages(await pageShares(book))).toEqual([4]);
+  expect(await book.locator('canvas').count()).toBe(1);
+
   // Children: an <img>, an HTML <section> (React keeps rendering it), an <img>.
   const children = page.locator('#children-book');
   expect(shownPages(await pageShares(children))).toEqual([0]);
@@ -157,7 +164,17 @@ test('browser (React): a controlled <Flipbook> under StrictMode is one book on o
   expect(problems).toEqual([]);
 });
 
-test('browser (React): 50 StrictMode mounts and unmounts leave no canvas, no WebGL context warning and a flat JS heap', async ({ page }) => {
+test('browser (React): 50 StrictMode mounts and unmounts leave no canvas, no live WebGL context, no context warning and a flat JS heap', async ({ page }) => {
+  await page.addInitScript(() => {
+    // Every WebGL2 context made, to count those still live afterwards.
+    window.contexts = [];
+    const getContext = HTMLCanvasElement.prototype.getContext;
+    HTMLCanvasElement.prototype.getContext = function counted(type, ...rest) {
+      const context = getContext.call(this, type, ...rest);
+      if (type === 'webgl2' && context && !window.contexts.includes(context)) window.contexts.push(context);
+      return context;
+    };
+  });
   const problems = await openApp(page, 'react-app');
   const cdp = await page.context().newCDPSession(page);
   const heap = async () => {
@@ -169,8 +186,11 @@ test('browser (React): 50 StrictMode mounts and unmounts leave no canvas, no Web
   const canvases = await page.evaluate(() => document.querySelectorAll('canvas').length);
   await page.evaluate(() => window.cycle(50));
   const after = await heap();
-  console.log(`React StrictMode 50 mounts: JS heap ${before} -> ${after} bytes (${after - before})`);
+  const contexts = await page.evaluate(() => ({ made: window.contexts.length, live: window.contexts.filter((c) => !c.isContextLost()).length }));
+  console.log(`React StrictMode 50 mounts: JS heap ${before} -> ${after} bytes (${after - before}); WebGL contexts made ${contexts.made}, live ${contexts.live}`);
   expect(await page.evaluate(() => document.querySelectorAll('canvas').length)).toBe(canvases);
+  expect(contexts.made).toBeGreaterThanOrEqual(55);  // every mount made a book
+  expect(contexts.live).toBeLessThanOrEqual(2);      // the app's own two books
   expect(after - before).toBeLessThan(1_000_000);
   expect(problems).toEqual([]);
 });

@@ -12,15 +12,16 @@ function App() {
   const [display, setDisplay] = useState('double');
   const [page, setPage] = useState(2);
   const [lighting, setLighting] = useState(true);
+  const [bookPages, setPages] = useState(pages);
   const flipbook = useFlipbook();
-  window.app = { setDisplay, setPage, setLighting, flipbook, page, display };
+  window.app = { setDisplay, setPage, setLighting, setPages, pages, flipbook, page, display };
   return h('div', null,
     h('div', { id: 'controls' },
       h('button', { id: 'prev', onClick: () => flipbook.prev() }, 'Previous'),
       h('output', { id: 'page' }, flipbook.ready ? `page ${flipbook.page + 1} of ${flipbook.pageCount}` : 'loading'),
       h('button', { id: 'next', onClick: () => flipbook.next() }, 'Next')),
     h(Flipbook, {
-      ref: flipbook.ref, id: 'book', pages, display, lighting, page, style: { width: 640, height: 400, aspectRatio: 'auto' },
+      ref: flipbook.ref, id: 'book', pages: bookPages, display, lighting, page, style: { width: 640, height: 400, aspectRatio: 'auto' },
       onPageChange: setPage,
       onReady: (event) => { events.push(['ready', event.detail]); document.body.dataset.ready = 'true'; },
       onTurned: (event) => events.push(['turned', event.detail]),
