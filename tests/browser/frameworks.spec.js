@@ -161,6 +161,10 @@ test('browser (React): a controlled <Flipbook> under StrictMode is one book on o
   await page.waitForTimeout(1500);
   expect(await greenShare(children)).toBeGreaterThan(0.15);
   expect(await page.locator('#html-page h2').textContent()).toBe('An HTML page');
+
+  // A bad prop is an error the app hears, naming it; the other books go on.
+  await waitFor(page, () => window.badBookError);
+  expect(await page.evaluate(() => window.badBookError)).toMatch(/option 'duration' must be a positive number/);
   expect(problems).toEqual([]);
 });
 

@@ -80,7 +80,9 @@ export class BookMount {
     const wanted = this._page ?? props.page ?? props.defaultPage ?? 0;
     options.startPage = Array.isArray(options.pages) ? clampPage(wanted, options.pages.length) : wanted;
     // Listeners by option: what the book says while it is made is heard too (book-events.js).
+    let errorHeard = false;
     options.on = Object.fromEntries(BOOK_EVENTS.map((type) => [type, (event) => {
+      if (type === 'error') errorHeard = true;
       if (build === this._builds) this._onBookEvent(type, event);
     }]));
     const adopt = (book) => {
@@ -94,10 +96,14 @@ export class BookMount {
       this._changed();
     };
     Flipbook.create(this._container, options).then(adopt, (error) => {
-      // Without WebGL2 or the engine the still book that took its place is the book; anything else was
-      // told by the error event, which create() dispatches before it rejects.
-      if (error.fallback) adopt(error.fallback);
-      else if (build === this._builds) for (const waiter of this._waiters.splice(0)) waiter.reject(error);
+      // Without WebGL2 or the engine the still book that took its place is the book.
+      if (error.fallback) {
+        adopt(error.fallback);
+        return;
+      }
+      if (build !== this._builds) return;
+      if (!errorHeard) this._report(error);  // refused before a book existed (a bad option): no event told it
+      for (const waiter of this._waiters.splice(0)) waiter.reject(error);
     });
   }
 

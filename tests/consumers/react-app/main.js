@@ -27,6 +27,10 @@ function App() {
       onTurned: (event) => events.push(['turned', event.detail]),
       onError: (event) => { document.body.dataset.error = event.detail.error.message; },
     }),
+    h(Flipbook, {
+      id: 'bad-book', pages, duration: -5, style: { width: 200, height: 125, aspectRatio: 'auto' },
+      onError: (event) => { window.badBookError = event.detail.error.message; },
+    }),
     h(Flipbook, { id: 'children-book', display: 'double', style: { width: 640, height: 400, aspectRatio: 'auto' } },
       h('img', { src: 'pages/page-0.svg', alt: 'Cover' }),
       h('section', { id: 'html-page', style: { background: 'rgb(30, 160, 90)', height: '100%' } }, h('h2', null, 'An HTML page')),
