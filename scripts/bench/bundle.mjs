@@ -26,7 +26,7 @@ function libraryOnlyPlugin() {
   };
 }
 
-async function viteBuild(input, outDir, plugins = []) {
+export async function viteBuild(input, outDir, plugins = [], external = []) {
   return build({
     configFile: false,
     root,
@@ -41,6 +41,7 @@ async function viteBuild(input, outDir, plugins = []) {
       reportCompressedSize: false,
       rollupOptions: {
         input,
+        external,
         preserveEntrySignatures: 'exports-only',
         output: { entryFileNames: '[name].js', assetFileNames: '[name][extname]', chunkFileNames: '[name]-[hash].js' },
       },
@@ -48,11 +49,11 @@ async function viteBuild(input, outDir, plugins = []) {
   });
 }
 
-const gzipSize = (bytes) => zlib.gzipSync(bytes, { level: 9 }).length;
+export const gzipSize = (bytes) => zlib.gzipSync(bytes, { level: 9 }).length;
 
 // The files a page loads up front: the entry chunks, what they import statically, and the assets
 // (the wasm). Chunks reached only through import() (pdf.js, for PDF books) load on demand.
-function upFrontFiles(result) {
+export function upFrontFiles(result) {
   const output = (Array.isArray(result) ? result[0] : result).output;
   const byName = new Map(output.map((item) => [item.fileName, item]));
   const upFront = new Set(output.filter((item) => item.type === 'asset').map((item) => item.fileName));
