@@ -10,10 +10,10 @@ import { serveDirectory } from '../../scripts/serve.mjs';
 import {
   copyTemplate, installTarball, packTo, repositoryRoot, unpackTo, writePageImages,
 } from '../consumers/package-tools.mjs';
-import { pageAtColor } from './fixtures/test-pages.js';
-import { decodePng } from './png.js';
+import { ABSENT, SHOWN, pageShares as sharesOf, watchProblems } from './consumer-checks.js';
 
 const PAGE_COUNT = 6;
+const pageShares = (locator) => sharesOf(locator, PAGE_COUNT);
 let work;
 let viteApp;
 let viteSite;
@@ -45,39 +45,11 @@ test.afterAll(async () => {
   if (work) fs.rmSync(work, { recursive: true, force: true });
 });
 
-/** Console errors, uncaught exceptions and failed requests of a page, collected from the start. */
-function watchProblems(page) {
-  const problems = [];
-  page.on('pageerror', (error) => problems.push(`uncaught: ${error.message}`));
-  page.on('console', (message) => { if (message.type() === 'error') problems.push(`console: ${message.text()}`); });
-  page.on('response', (response) => { if (response.status() >= 400) problems.push(`${response.status()}: ${response.url()}`); });
-  return problems;
-}
-
-/** Share of an element's on-screen pixels that show each test page's colour. */
-async function pageShares(locator) {
-  const { width, height, data } = decodePng(await locator.screenshot());
-  const counts = new Array(PAGE_COUNT).fill(0);
-  let samples = 0;
-  for (let y = 0; y < height; y += 2) {
-    for (let x = 0; x < width; x += 2) {
-      const i = (y * width + x) * 4;
-      const index = pageAtColor([data[i], data[i + 1], data[i + 2]], PAGE_COUNT);
-      if (index >= 0) counts[index]++;
-      samples++;
-    }
-  }
-  return counts.map((count) => count / samples);
-}
-
 async function waitForFlag(page) {
   await page.waitForFunction(() => document.body.dataset.ready || document.body.dataset.error);
   expect(await page.evaluate(() => document.body.dataset.error || null), 'the page reported an error').toBeNull();
 }
 
-// A page image fills about 30% of a 640x400 book showing it; its number and corner mark take a little.
-const SHOWN = 0.2;
-const ABSENT = 0.005;
 
 test('browser: a Vite app built from the packed tarball shows a Flipbook from conecurl and a <cone-flipbook> from conecurl/element, with the wasm in its build', async ({ page }) => {
   const assets = fs.readdirSync(path.join(viteApp, 'dist/assets'));

@@ -10,12 +10,11 @@ import net from 'node:net';
 import path from 'node:path';
 import { serveDirectory } from '../../scripts/serve.mjs';
 import { copyTemplate, installTarball, packTo, repositoryRoot, writePageImages } from '../consumers/package-tools.mjs';
-import { pageAtColor } from './fixtures/test-pages.js';
+import { SHOWN, pageShares as sharesOf, watchProblems } from './consumer-checks.js';
 import { decodePng } from './png.js';
 
 const PAGE_COUNT = 6;
-const SHOWN = 0.2;   // a page image fills about 30% of a 640x400 book showing it
-const ABSENT = 0.005;
+const pageShares = (locator) => sharesOf(locator, PAGE_COUNT);
 let work;
 const sites = {};
 let nextServer;
@@ -71,32 +70,6 @@ test.afterAll(async () => {
   if (work) fs.rmSync(work, { recursive: true, force: true });
 });
 
-function watchProblems(page) {
-  const problems = [];
-  page.on('pageerror', (error) => problems.push(`uncaught: ${error.message}`));
-  page.on('console', (message) => {
-    if (message.type() === 'error' || /WebGL/.test(message.text())) problems.push(`console ${message.type()}: ${message.text()}`);
-  });
-  page.on('response', (response) => { if (response.status() >= 400) problems.push(`${response.status()}: ${response.url()}`); });
-  return problems;
-}
-
-/** Share of a book's on-screen pixels that show each test page's colour. */
-async function pageShares(locator) {
-  const { width, height, data } = decodePng(await locator.screenshot());
-  const counts = new Array(PAGE_COUNT).fill(0);
-  let samples = 0;
-  for (let y = 0; y < height; y += 2) {
-    for (let x = 0; x < width; x += 2) {
-      const i = (y * width + x) * 4;
-      const index = pageAtColor([data[i], data[i + 1], data[i + 2]], PAGE_COUNT);
-      if (index >= 0) counts[index]++;
-      samples++;
-    }
-  }
-  return counts.map((count) => count / samples);
-}
-
 /** Share of a book's pixels near the HTML page's green. */
 async function greenShare(locator) {
   const { width, height, data } = decodePng(await locator.screenshot());
@@ -110,7 +83,7 @@ async function greenShare(locator) {
 const shownPages = (shares) => shares.map((share, i) => (share > SHOWN ? i : -1)).filter((i) => i >= 0);
 
 async function openApp(page, app) {
-  const problems = watchProblems(page);
+  const problems = watchProblems(page, { webglWarnings: true });
   await page.goto(app === 'next-app' ? nextServer.url : sites[app].url);
   await page.waitForFunction(() => document.body.dataset.ready || document.body.dataset.error);
   expect(await page.evaluate(() => document.body.dataset.error || null), 'the app reported an error').toBeNull();
