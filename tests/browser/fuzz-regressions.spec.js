@@ -107,3 +107,24 @@ test('browser: a page that loads while a hover hint lifts a corner does not leav
   expect(await said()).toBe(before);
   expect(problems).toEqual([]);
 });
+
+test('browser: an HTML page drawn while the book is squeezed to 3x1 px gets a texture of at least one pixel, not a pageerror (its snapshot canvas had no pixels)', async ({ page }) => {
+  const problems = await openReady(page, '/tests/browser/fixtures/html-fixture.html');
+  const result = await page.evaluate(async () => {
+    const pages = Array.from({ length: 9 }, (_, i) => (i === 7 ? window.makeHtmlPage() : window.makeNumberedPage(i)));
+    window.container.style.width = '640px';
+    const book = await window.Flipbook.create(window.container, { pages, display: 'auto', direction: 'vertical', startPage: 0, loadWindow: 1, duration: 20 });
+    const errors = [];
+    book.addEventListener('pageerror', (event) => errors.push(`${event.detail.index}: ${event.detail.error?.message ?? event.detail.reason}`));
+    window.container.style.width = '3px';
+    window.container.style.height = '1px';
+    await new Promise((resolve) => setTimeout(resolve, 300));  // the size watcher and the refit delay
+    await book.flip(8, { animate: false });
+    await book.whenIdle();
+    await new Promise((resolve) => setTimeout(resolve, 500));
+    return { errors, state: book.pageState(7).state };
+  });
+  expect(result.errors).toEqual([]);
+  expect(result.state).toBe('loaded');
+  expect(problems).toEqual([]);
+});

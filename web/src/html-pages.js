@@ -147,7 +147,9 @@ export class HtmlPages {
     // A slotted child is drawn itself (a clone of the slot would hold nothing); a moved one with its box.
     const target = page.slotted ? page.element : page.content;
     // Videos are left to us (the rasteriser can wait for ever on a stream): their frames are drawn in.
-    const drawing = domToCanvas(target, { width, height, scale: size.width / width, backgroundColor: PAPER,
+    // Scaled so that the canvas is the texture's size, and never under a pixel high.
+    const scale = Math.max(size.width / width, 1 / height);
+    const drawing = domToCanvas(target, { width, height, scale, backgroundColor: PAPER,
       filter: (node) => node.localName !== 'video' });
     let timer = 0;
     const late = new Promise((resolve, reject) => {
@@ -227,9 +229,11 @@ export class HtmlPages {
 
   // Every sheet is the page's CSS size at zoom 1 (a zoom scales it, never reflows it).
   _resize(size) {
-    if (this._size && size.width === this._size.width && size.height === this._size.height) return;
+    if (this._size && Math.max(1, size.width) === this._size.width && Math.max(1, size.height) === this._size.height) return;
     const first = this._size === null;
-    this._size = { width: size.width, height: size.height };
+    // At least a pixel each way: a book squeezed to a few pixels still draws its pages (a 0 px sheet
+    // made a canvas with no pixels, a pageerror).
+    this._size = { width: Math.max(1, size.width), height: Math.max(1, size.height) };
     for (const page of this._pages.values()) {
       page.sheet.style.width = `${size.width}px`;
       page.sheet.style.height = `${size.height}px`;
