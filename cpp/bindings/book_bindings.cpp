@@ -28,7 +28,7 @@ double positiveNumber(const val& options, const char* name, double fallback) {
 }
 
 // { pageCount, display: 'single'|'double', binding: 'left'|'right'|'top', pageWidth, pageHeight,
-//   turnSeconds, hardPages: [page indices] }
+//   turnSeconds, hardPages: [page indices], schedule: 'paper'|'smooth' }
 Book createBook(val options) {
     if (!options.isUndefined() && options.typeOf().as<std::string>() != "object") {
         js::throwError("TypeError", "book options must be an object");
@@ -53,6 +53,12 @@ Book createBook(val options) {
     config.pageWidth = positiveNumber(options, "pageWidth", config.pageWidth);
     config.pageHeight = positiveNumber(options, "pageHeight", config.pageHeight);
     config.turnSeconds = positiveNumber(options, "turnSeconds", config.turnSeconds);
+    const val schedule = options["schedule"];
+    if (!schedule.isUndefined()) {
+        const std::string name = schedule.isString() ? schedule.as<std::string>() : "";
+        if (name != "paper" && name != "smooth") js::throwError("TypeError", "schedule must be 'paper' or 'smooth'");
+        config.schedule.smooth = name == "smooth";
+    }
     const val hard = options["hardPages"];
     if (!hard.isUndefined()) {
         if (!val::global("Array").call<bool>("isArray", hard)) js::throwError("TypeError", "hardPages must be an array of page indices");

@@ -75,7 +75,8 @@ EMSCRIPTEN_BINDINGS(conecurl_core) {
         .field("thetaEasePhase1", &CurlSchedule::thetaEasePhase1)
         .field("apexEasePhase1", &CurlSchedule::apexEasePhase1)
         .field("thetaEasePhase3", &CurlSchedule::thetaEasePhase3)
-        .field("apexEasePhase3", &CurlSchedule::apexEasePhase3);
+        .field("apexEasePhase3", &CurlSchedule::apexEasePhase3)
+        .field("smooth", &CurlSchedule::smooth);
 
     value_object<Vec3Value>("Vec3").field("x", &Vec3Value::x).field("y", &Vec3Value::y).field("z", &Vec3Value::z);
 

@@ -30,12 +30,19 @@ struct CurlSchedule {
     double apexEasePhase1 = 0.5;
     double thetaEasePhase3 = 10.0;
     double apexEasePhase3 = 2.0;
+
+    // false: the paper's three phases (values continuous, slopes not: theta and Ay jolt at phase1End
+    // and phase2End). true: the same four key poses (rest, phase 1 end, phase 2 end, rest) joined by
+    // monotone cubic Hermite curves, so theta and Ay also have continuous slopes, zero at both rests,
+    // and never leave the range between neighbouring key poses. rho = pi t either way.
+    bool smooth = false;
 };
 
 // Sinusoidal easing of the paper: sin(pi/2 * dt^k), dt clamped to [0, 1].
 double easeSine(double dt, double k);
 
-// Cone parameters at time t (clamped to [0, 1]) for a page `pageHeight` units tall.
+// Cone parameters at time t (clamped to [0, 1]) for a page `pageHeight` units tall; schedule.smooth
+// picks the smooth joins (see CurlSchedule).
 CurlParams curlAt(double t, const CurlSchedule& schedule = CurlSchedule{}, double pageHeight = 1.0);
 
 }  // namespace conecurl

@@ -315,3 +315,75 @@ TEST(CurlSchedule, EaseSineFixesEndpointsAndIsMonotone) {
 }
 
 }  // namespace
+
+// --- the smooth schedule (schedule: 'smooth') ---------------------------------------------------------
+
+namespace {
+CurlSchedule smoothSchedule() {
+    CurlSchedule s;
+    s.smooth = true;
+    return s;
+}
+}  // namespace
+
+// The smooth schedule goes through the paper's four key poses exactly, and rho is the paper's.
+TEST(SmoothCurlSchedule, PassesThroughThePapersKeyPoses) {
+    const CurlSchedule paper;
+    const CurlSchedule smooth = smoothSchedule();
+    for (const double t : {0.0, paper.phase1End, paper.phase2End, 1.0}) {
+        const CurlParams a = curlAt(t, paper, 1.25);
+        const CurlParams b = curlAt(t, smooth, 1.25);
+        EXPECT_NEAR(a.theta, b.theta, 1e-12) << "t=" << t;
+        EXPECT_NEAR(a.apexY, b.apexY, 1e-12) << "t=" << t;
+        EXPECT_DOUBLE_EQ(a.rho, b.rho);
+    }
+    for (int i = 0; i <= 100; ++i) EXPECT_DOUBLE_EQ(curlAt(i / 100.0, smooth).rho, curlAt(i / 100.0, paper).rho);
+}
+
+// One-sided slopes (finite differences just below and above) at a time t.
+static std::pair<double, double> slopesAt(const CurlSchedule& s, double t, double CurlParams::*field) {
+    const double h = 1e-7;
+    const double below = (curlAt(t, s).*field - curlAt(t - h, s).*field) / h;
+    const double above = (curlAt(t + h, s).*field - curlAt(t, s).*field) / h;
+    return {below, above};
+}
+
+// At the joins the smooth schedule's slopes match from both sides (continuous first derivative); the
+// paper's do not (this is what the smooth one is for), and the smooth one starts and ends at rest.
+TEST(SmoothCurlSchedule, SlopesAreEqualAtTheJoinsWhereThePapersJump) {
+    const CurlSchedule paper;
+    const CurlSchedule smooth = smoothSchedule();
+    for (const double join : {paper.phase1End, paper.phase2End}) {
+        for (double CurlParams::*field : {&CurlParams::theta, &CurlParams::apexY}) {
+            const auto [below, above] = slopesAt(smooth, join, field);
+            EXPECT_NEAR(below, above, 1e-3 * (1.0 + std::abs(below))) << "join " << join;
+            const auto [paperBelow, paperAbove] = slopesAt(paper, join, field);
+            // theta's slope jumps by 0.14 rad per unit of t (6-8 degrees over phase 2), Ay's by 4 page heights.
+            EXPECT_GT(std::abs(paperBelow - paperAbove), 0.1) << "the paper's slope jumps at " << join;
+        }
+    }
+    // At rest (t = 0 and 1) the slope is zero: over a step of 1e-8 the pose moves by < 1e-5 of it.
+    const double h = 1e-8;
+    for (double CurlParams::*field : {&CurlParams::theta, &CurlParams::apexY}) {
+        EXPECT_NEAR((curlAt(h, smooth).*field - curlAt(0.0, smooth).*field) / h, 0.0, 1e-3);
+        EXPECT_NEAR((curlAt(1.0, smooth).*field - curlAt(1.0 - h, smooth).*field) / h, 0.0, 1e-3);
+    }
+}
+
+// Between two key poses the smooth schedule stays between them: it never curls tighter, nor lifts the
+// apex further, than the paper's poses do (within the paper's envelope).
+TEST(SmoothCurlSchedule, StaysBetweenNeighbouringKeyPoses) {
+    const CurlSchedule s = smoothSchedule();
+    const double keys[4] = {0.0, s.phase1End, s.phase2End, 1.0};
+    const double thetas[4] = {s.thetaRest, s.thetaPhase1, s.thetaPhase2, s.thetaRest};
+    const double apexes[4] = {s.apexRest, s.apexPhase1, s.apexPhase2, s.apexRest};
+    for (int i = 0; i <= 4000; ++i) {
+        const double t = i / 4000.0;
+        const int piece = t <= keys[1] ? 0 : (t <= keys[2] ? 1 : 2);
+        const CurlParams p = curlAt(t, s);
+        EXPECT_GE(p.theta, std::min(thetas[piece], thetas[piece + 1]) - 1e-12) << "t=" << t;
+        EXPECT_LE(p.theta, std::max(thetas[piece], thetas[piece + 1]) + 1e-12) << "t=" << t;
+        EXPECT_GE(p.apexY, std::min(apexes[piece], apexes[piece + 1]) - 1e-12) << "t=" << t;
+        EXPECT_LE(p.apexY, std::max(apexes[piece], apexes[piece + 1]) + 1e-12) << "t=" << t;
+    }
+}

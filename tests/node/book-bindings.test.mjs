@@ -108,3 +108,20 @@ test('node: numbers crossing into the engine are checked: NaN, strings, fraction
   assert.equal(book.startTurn('forward'), true);
   book.delete();
 });
+
+test('node: Book.create takes schedule \'paper\' or \'smooth\' and refuses others by name; curlAtWith honours a smooth schedule (same key poses, other poses between them)', () => {
+  const smoothBook = engine.Book.create({ pageCount: 4, schedule: 'smooth' });
+  smoothBook.delete();
+  engine.Book.create({ pageCount: 4, schedule: 'paper' }).delete();
+  assert.throws(() => engine.Book.create({ pageCount: 4, schedule: 'wavy' }), /schedule must be 'paper' or 'smooth'/);
+  const paper = engine.defaultSchedule();
+  assert.equal(paper.smooth, false);
+  const smooth = { ...paper, smooth: true };
+  for (const t of [0, 0.15, 0.4, 1]) {
+    assert.ok(Math.abs(engine.curlAtWith(t, smooth, 1).theta - engine.curlAtWith(t, paper, 1).theta) < 1e-12, `theta at ${t}`);
+    assert.ok(Math.abs(engine.curlAtWith(t, smooth, 1).apexY - engine.curlAtWith(t, paper, 1).apexY) < 1e-12, `apexY at ${t}`);
+  }
+  const mid = engine.curlAtWith(0.08, smooth, 1);
+  assert.ok(Math.abs(mid.theta - engine.curlAtWith(0.08, paper, 1).theta) > 1e-3, 'the smooth schedule is another curve between the keys');
+  assert.ok(mid.theta <= paper.thetaRest && mid.theta >= paper.thetaPhase1);
+});

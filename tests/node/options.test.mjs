@@ -22,6 +22,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     direction: "'ltr', 'rtl' or 'vertical'",
     startPage: 'a page index (a whole number from 0)',
     duration: 'a positive number of milliseconds',
+    schedule: "'paper' or 'smooth'",
     hardCovers: 'true or false',
     lighting: 'true or false',
     shadows: 'true or false',
@@ -38,6 +39,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     direction: ['LTR', -1, undefined, {}],
     startPage: [NaN, -1, 1.5, '1', Infinity, null],
     duration: [NaN, -1, 0, Infinity, '300', null],
+    schedule: ['Smooth', 'eased', 1, null, true],
     hardCovers: ['true', 1, NaN, null],
     lighting: ['yes', 0, NaN],
     shadows: ['false', -1],
@@ -92,7 +94,7 @@ test('node: pages must be a non-empty array of page sources; each entry is check
 test('node: options that are not an object, unknown keys, and a start page past the end are refused by name', () => {
   refuses(null, 'options must be an object, got null');
   refuses('pages', 'options must be an object, got "pages"');
-  refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, direction, startPage, duration, hardCovers, "
+  refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, direction, startPage, duration, schedule, hardCovers, "
     + 'lighting, shadows, gutter, loadWindow, wasmUrl, label, fallback, antialias, turnArea, on)');
   refuses({ pages, antialias: 'yes' }, "option 'antialias' must be 'auto', true or false, got \"yes\"");
   refuses({ pages, startPage: 3 }, "option 'startPage' must be below the page count 3, got 3");
@@ -124,4 +126,11 @@ test('node: turnArea is one of page, edges, corners, none; its default is edges 
     { name: 'TypeError', message: "conecurl: option 'turnArea' must be 'page', 'edges', 'corners' or 'none', got \"middle\"" });
   assert.throws(() => validateOptions({ pages: [{ html: 'a <b>string</b>' }] }),
     { name: 'TypeError', message: /option 'pages\[0\]\.html' must be an HTML element .*strings are never parsed as HTML/ });
+});
+
+test('node: schedule is \'paper\' (default) or \'smooth\'', () => {
+  assert.equal(validateOptions({ pages: ['a.jpg'] }).schedule, 'paper');
+  assert.equal(validateOptions({ pages: ['a.jpg'], schedule: 'smooth' }).schedule, 'smooth');
+  assert.throws(() => validateOptions({ pages: ['a.jpg'], schedule: 'bouncy' }),
+    { name: 'TypeError', message: "conecurl: option 'schedule' must be 'paper' or 'smooth', got \"bouncy\"" });
 });

@@ -16,6 +16,8 @@ export interface BookViewOptions extends LoadEngineOptions, RenderOptions {
   turnSeconds?: number;
   /** Indices of hard pages (covers): they turn rigidly. */
   hardPages?: number[];
+  /** 'paper' (default): the paper's three phases; 'smooth': the same key poses with continuous slopes. */
+  schedule?: 'paper' | 'smooth';
   /** Multisampled edges (the WebGL context's antialias); default true. */
   antialias?: boolean;
 }

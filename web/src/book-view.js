@@ -42,6 +42,7 @@ export class BookView {
       pageHeight: options.pageHeight,
       turnSeconds: options.turnSeconds,
       hardPages: options.hardPages,
+      schedule: options.schedule,
     });
     this._target = `!conecurl-canvas-${nextTargetId++}`;
     engine.specialHTMLTargets[this._target] = canvas;

@@ -33,6 +33,7 @@ export const ATTRIBUTES = {
   direction: ['direction', parseText],
   'start-page': ['startPage', parseNumber],
   duration: ['duration', parseNumber],
+  schedule: ['schedule', parseText],
   'hard-covers': ['hardCovers', parseBoolean],
   lighting: ['lighting', parseBoolean],
   shadows: ['shadows', parseBoolean],

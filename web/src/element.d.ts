@@ -46,6 +46,7 @@ export class ConeFlipbookElement extends HTMLElement {
   direction: 'ltr' | 'rtl' | 'vertical' | undefined;
   startPage: number | undefined;
   duration: number | undefined;
+  schedule: 'paper' | 'smooth' | undefined;
   hardCovers: boolean | undefined;
   lighting: boolean | undefined;
   shadows: boolean | undefined;

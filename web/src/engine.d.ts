@@ -24,6 +24,8 @@ export interface CurlSchedule {
   apexEasePhase1: number;
   thetaEasePhase3: number;
   apexEasePhase3: number;
+  /** The same key poses joined with continuous slopes (schedule: 'smooth') instead of the paper's phases. */
+  smooth?: boolean;
 }
 
 export interface Vec3 { x: number; y: number; z: number; }
@@ -57,6 +59,8 @@ export interface BookOptions {
   turnSeconds?: number;
   /** Indices of hard pages (covers): they turn rigidly. */
   hardPages?: number[];
+  /** 'paper' (default, Nuon's three phases) or 'smooth' (the same key poses, C1 joins). */
+  schedule?: 'paper' | 'smooth';
 }
 
 /** Book state and animation (C++). Invalid options throw a TypeError naming the option. Call delete(). */

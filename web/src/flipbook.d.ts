@@ -68,6 +68,11 @@ export interface FlipbookOptions {
   startPage?: number;
   /** Milliseconds per turn; default 1000. */
   duration?: number;
+  /**
+   * The curl's schedule: 'paper' (default; the paper's three phases, Nuon's constants exactly) or
+   * 'smooth' (the same key poses joined with continuous slopes: no jolt at t = 0.15 and 0.4).
+   */
+  schedule?: 'paper' | 'smooth';
   /** The first and last pages turn rigidly; default false. */
   hardCovers?: boolean;
   lighting?: boolean;

@@ -103,6 +103,7 @@ export class Flipbook extends BookController {
       direction: settings.direction,
       hardPages,
       turnSeconds: settings.duration / 1000,
+      schedule: settings.schedule,
       // 'auto': smooth edges unless WebGL runs in software, where multisampling costs ~30% a frame.
       antialias: settings.antialias === 'auto' ? !softwareWebGL() : settings.antialias,
       lighting: settings.lighting,

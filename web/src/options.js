@@ -13,6 +13,7 @@ const OPTION_CHECKS = {
   direction: (v) => ['ltr', 'rtl', 'vertical'].includes(v) || "'ltr', 'rtl' or 'vertical'",
   startPage: (v) => (Number.isInteger(v) && v >= 0) || 'a page index (a whole number from 0)',
   duration: (v) => (Number.isFinite(v) && v > 0) || 'a positive number of milliseconds',
+  schedule: (v) => ['paper', 'smooth'].includes(v) || "'paper' or 'smooth'",
   hardCovers: BOOLEAN,
   lighting: BOOLEAN,
   shadows: BOOLEAN,
@@ -29,7 +30,7 @@ const OPTION_CHECKS = {
 /** Every option validateOptions() knows (Flipbook.create also takes pdf and pdfWorkerSrc in place of pages). */
 export const OPTION_NAMES = Object.keys(OPTION_CHECKS);
 export const DEFAULTS = {
-  display: 'auto', direction: 'ltr', startPage: 0, duration: 1000, hardCovers: false,
+  display: 'auto', direction: 'ltr', startPage: 0, duration: 1000, schedule: 'paper', hardCovers: false,
   lighting: true, shadows: true, gutter: true, loadWindow: 4, label: 'Book', fallback: true,
   antialias: 'auto',
 };
