@@ -1,6 +1,7 @@
 // Browser: the demo page served by `npm start` loads without errors, shows the book (a Flipbook), turns
 // pages with its buttons, the keyboard and a corner drag, and opens frozen at an exact frame with ?t=.
 import { test, expect } from '@playwright/test';
+import AxeBuilder from '@axe-core/playwright';
 import { openReady } from './helpers.js';
 
 test('browser: demo loads with no console error and shows the cover', async ({ page }) => {
@@ -51,6 +52,20 @@ test('browser: demo switches display and direction without errors', async ({ pag
   expect(problems).toEqual([]);
 });
 
+test('browser: demo switches the schedule to smooth: the plot and readout follow it and the book turns with it', async ({ page }) => {
+  const problems = await openReady(page, '/web/demo/?t=0.07');
+  const paper = await page.locator('#readout').textContent();
+  await page.selectOption('#schedule', 'smooth');
+  await page.waitForFunction(() => window.conecurlDemo.book.options.schedule === 'smooth');
+  const smooth = await page.locator('#readout').textContent();
+  expect(paper).toMatch(/^t 0\.070/);
+  expect(smooth).toMatch(/^t 0\.070/);
+  expect(smooth).not.toBe(paper);  // another theta and Ay between the key poses
+  await page.click('#next');
+  await expect(page.locator('#where')).toContainText('Pages 2–3 of 40');
+  expect(problems).toEqual([]);
+});
+
 test('browser: demo book turns when its corner is dragged across the spine', async ({ page }) => {
   await openReady(page, '/web/demo/?page=9');
   await page.selectOption('#speed', '0.5');
@@ -75,4 +90,14 @@ test('browser: demo shows its PDF example through pdf.js, and the contents links
   await contentsLinks.nth(4).click();  // "5. Cones, not cylinders", on page 7
   await expect(page.locator('#where')).toHaveText('Pages 6–7 of 12', { timeout: 30000 });
   expect(problems).toEqual([]);
+});
+
+test('browser: the demo passes axe-core with no serious or critical violation (contrast, names matching visible text, ...)', async ({ page }) => {
+  await page.goto('/web/demo/');
+  await page.waitForFunction(() => document.querySelector('#book canvas') !== null, null, { timeout: 20_000 });
+  await page.waitForTimeout(500);  // the plot and the readout drawn
+  const { violations } = await new AxeBuilder({ page }).analyze();
+  const serious = violations.filter((v) => v.impact === 'serious' || v.impact === 'critical')
+    .map((v) => `${v.impact} ${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
+  expect(serious).toEqual([]);
 });

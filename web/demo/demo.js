@@ -23,6 +23,9 @@ const PAGES = Array.from({ length: DEMO_PAGE_COUNT }, (_, index) => ({
   hard: isHardPage(index),
 }));
 
+// The schedule chosen (the paper's three phases, or the same key poses joined smoothly), for the plot.
+const curlAt = (t) => engine.curlAtWith(t, { ...engine.defaultSchedule(), smooth: $('schedule').value === 'smooth' }, 1);
+
 function plotSchedule(t) {
   const canvas = $('plot');
   const g = canvas.getContext('2d');
@@ -32,17 +35,18 @@ function plotSchedule(t) {
   for (const edge of [0.15, 0.4]) {
     g.beginPath(); g.moveTo(edge * w, 0); g.lineTo(edge * w, h); g.stroke();
   }
+  const colour = (name) => getComputedStyle(document.documentElement).getPropertyValue(`--${name}`).trim();  // demo.css
   const curves = [
-    ['#c0392b', (p) => p.theta / (Math.PI / 2)],
-    ['#2e86c1', (p) => -p.apexY / 15],
-    ['#27ae60', (p) => p.rho / Math.PI],
+    [colour('theta'), (p) => p.theta / (Math.PI / 2)],
+    [colour('apex'), (p) => -p.apexY / 15],
+    [colour('rho'), (p) => p.rho / Math.PI],
   ];
   for (const [color, value] of curves) {
     g.strokeStyle = color;
     g.lineWidth = 2;
     g.beginPath();
     for (let i = 0; i <= w; i++) {
-      const y = h - 8 - value(engine.curlAt(i / w)) * (h - 16);
+      const y = h - 8 - value(curlAt(i / w)) * (h - 16);
       if (i === 0) g.moveTo(i, y); else g.lineTo(i, y);
     }
     g.stroke();
@@ -52,7 +56,7 @@ function plotSchedule(t) {
 }
 
 function showSchedule(t) {
-  const p = engine.curlAt(t);
+  const p = curlAt(t);
   $('scrub').value = String(t);
   $('readout').textContent =
     `t ${t.toFixed(3)}  θ ${(p.theta * deg).toFixed(1)}°  Ay ${p.apexY.toFixed(2)}  ρ ${(p.rho * deg).toFixed(1)}°`;
@@ -66,7 +70,7 @@ function showWhere() {
   $('where').textContent = first === last ? `Page ${first + 1} of ${count}` : `Pages ${first + 1}–${last + 1} of ${count}`;
 }
 
-// Display, direction and speed are fixed for a book's life: changing one makes a new book at the page.
+// Direction, schedule and speed are fixed for a book's life: changing one makes a new book at the page.
 function buildBook(startPage) {
   building = building.then(async () => {
     book?.destroy();
@@ -80,6 +84,7 @@ function buildBook(startPage) {
       display: $('display').value,
       direction: $('direction').value,
       duration: Number($('speed').value) * 1000,
+      schedule: $('schedule').value,
       lighting: $('lighting').checked,
       shadows: $('shadows').checked,
       gutter: $('gutter').checked,
@@ -115,9 +120,11 @@ async function main() {
     book.previewTurn('forward', t);
     showSchedule(t);
   });
-  for (const id of ['source', 'display', 'direction', 'speed']) {
+  for (const id of ['source', 'direction', 'schedule', 'speed']) {
     $(id).addEventListener('change', () => buildBook(book.page));
   }
+  $('schedule').addEventListener('change', () => showSchedule(Number($('scrub').value)));
+  $('display').addEventListener('change', () => book.setOptions({ display: $('display').value }));  // live
   for (const id of ['lighting', 'shadows', 'gutter']) {
     $(id).addEventListener('change', () => book.setOptions({ [id]: $(id).checked }));
   }
