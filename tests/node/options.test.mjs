@@ -31,6 +31,8 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     wasmUrl: 'a URL string',
     label: 'a non-empty string',
     fallback: 'true or false',
+    hash: 'true or false',
+    rememberPage: 'a non-empty string (the key it is kept under)',
     antialias: "'auto', true or false",
     on: 'an object of listeners by event name (ready, progress, pageerror, turnstart, turned, turncancel, resize, zoom, sharpened, link, error)',
   };
@@ -48,6 +50,8 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     wasmUrl: [42, null, {}, NaN],
     label: ['', '   ', 42, null, NaN],
     fallback: ['no', 0, NaN],
+    hash: ['true', 1, null],
+    rememberPage: ['', '  ', 3, null, true],
     antialias: ['AUTO', 'on', 1, null, NaN],
     on: [null, [], () => {}, { turnd: () => {} }, { turned: 'log' }, { ready: null }],
   };
@@ -56,7 +60,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     for (const value of values) refuses({ pages, [option]: value }, `option '${option}' must be ${allowed[option]}, got ${describeValue(value)}`);
   }
   // Every option but `pages` has a default, so the table above covers them all.
-  assert.deepEqual(Object.keys(DEFAULTS).sort(), Object.keys(allowed).filter((k) => k !== 'wasmUrl' && k !== 'on').sort());
+  assert.deepEqual(Object.keys(DEFAULTS).sort(), Object.keys(allowed).filter((k) => k !== 'wasmUrl' && k !== 'on' && k !== 'rememberPage').sort());
 });
 
 test('node: pages must be a non-empty array of page sources; each entry is checked by index, src, alt, hard and key', () => {
@@ -95,7 +99,7 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses(null, 'options must be an object, got null');
   refuses('pages', 'options must be an object, got "pages"');
   refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, direction, startPage, duration, schedule, hardCovers, "
-    + 'lighting, shadows, gutter, loadWindow, wasmUrl, label, fallback, antialias, turnArea, on)');
+    + 'lighting, shadows, gutter, loadWindow, wasmUrl, label, fallback, hash, rememberPage, antialias, turnArea, on)');
   refuses({ pages, antialias: 'yes' }, "option 'antialias' must be 'auto', true or false, got \"yes\"");
   refuses({ pages, startPage: 3 }, "option 'startPage' must be below the page count 3, got 3");
   // A value whose own toString throws or is huge is described, not called.

@@ -5,6 +5,7 @@
 // each surface; the calls a surface answers are listed in docs/architecture.md.
 // Over 350 lines because it is the whole public API of both book classes, each member documented;
 // the work behind them is in the modules it imports.
+import { followPage, openingPage } from './page-memory.js';
 import { createShell } from './book-shell.js';
 import { BookEvents } from './book-events.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
@@ -176,6 +177,7 @@ export class BookController extends EventTarget {
     for (const layer of this._layers) layer.remove();
     this._input?.stop();
     this._stopWatchingSize?.();
+    this._stopFollowingPage?.();
     clearTimeout(this._refitTimer);
     this._surface?.destroy({ releaseContext: true });  // the canvas goes: give its WebGL context up now
     this._surface = null;
@@ -198,7 +200,7 @@ export class BookController extends EventTarget {
     this._surface.onPagesChanged = () => { if (!this._destroyed) this._store.update(); };
     // After a lost context, pages whose images the store closed once uploaded are decoded again.
     this._surface.onImagesLost = (pages) => { if (!this._destroyed) this._store.reloadLost(pages); };
-    this._surface.jumpTo(this._surface.positionOfPage(this._settings.startPage));
+    this._surface.jumpTo(this._surface.positionOfPage(openingPage(this._settings, this.pageCount)));
     this._attachInput();
     this._stopWatchingSize = watchSize(this._shell.root, this._layoutSize, (size) => {
       if (this._destroyed) return;
@@ -207,6 +209,7 @@ export class BookController extends EventTarget {
     });
     this._showOpenPages();
     this._store.update();
+    this._stopFollowingPage = followPage(this, this._settings);  // #page=N and the remembered page
     await this.whenIdle();
     this._emit('ready', { page: this.page });
   }

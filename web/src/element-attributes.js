@@ -39,6 +39,8 @@ export const ATTRIBUTES = {
   shadows: ['shadows', parseBoolean],
   gutter: ['gutter', parseBoolean],
   'load-window': ['loadWindow', parseNumber],
+  hash: ['hash', parseBoolean],
+  'remember-page': ['rememberPage', parseText],
   'wasm-url': ['wasmUrl', parseText],
   antialias: ['antialias', parseAntialias],
   pdf: ['pdf', parseText],

@@ -53,6 +53,8 @@ export class ConeFlipbookElement extends HTMLElement {
   gutter: boolean | undefined;
   antialias: boolean | 'auto' | undefined;
   loadWindow: number | undefined;
+  hash: boolean | undefined;
+  rememberPage: string | undefined;
   wasmUrl: string | undefined;
   pdfWorkerSrc: string | undefined;
   /**

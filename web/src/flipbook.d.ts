@@ -69,6 +69,13 @@ export interface FlipbookOptions {
   /** Milliseconds per turn; default 1000. */
   duration?: number;
   /**
+   * Keep #page=N (N from 1) in the address: a link to it opens the book there, each turn adds a history
+   * entry, and the back and forward buttons turn the book. Default false; one book per page should use it.
+   */
+  hash?: boolean;
+  /** Remember the page in localStorage under this key and open there next time (#page=N wins). */
+  rememberPage?: string;
+  /**
    * The curl's schedule: 'paper' (default; the paper's three phases, Nuon's constants exactly) or
    * 'smooth' (the same key poses joined with continuous slopes: no jolt at t = 0.15 and 0.4).
    */

@@ -22,6 +22,8 @@ const OPTION_CHECKS = {
   wasmUrl: (v) => typeof v === 'string' || 'a URL string',
   label: (v) => (typeof v === 'string' && v.trim() !== '') || 'a non-empty string',
   fallback: BOOLEAN,
+  hash: BOOLEAN,
+  rememberPage: (v) => (typeof v === 'string' && v.trim() !== '') || 'a non-empty string (the key it is kept under)',
   antialias: (v) => typeof v === 'boolean' || v === 'auto' || "'auto', true or false",
   turnArea: (v) => TURN_AREAS.includes(v) || TURN_AREAS.map((a) => `'${a}'`).join(', ').replace(/, ([^,]*)$/, ' or $1'),
   on: (v) => (isPlainEntry(v) && Object.entries(v).every(([type, f]) => BOOK_EVENTS.includes(type) && typeof f === 'function'))
@@ -31,7 +33,7 @@ const OPTION_CHECKS = {
 export const OPTION_NAMES = Object.keys(OPTION_CHECKS);
 export const DEFAULTS = {
   display: 'auto', direction: 'ltr', startPage: 0, duration: 1000, schedule: 'paper', hardCovers: false,
-  lighting: true, shadows: true, gutter: true, loadWindow: 4, label: 'Book', fallback: true,
+  lighting: true, shadows: true, gutter: true, loadWindow: 4, label: 'Book', fallback: true, hash: false,
   antialias: 'auto',
 };
 /** Options a live book takes through setOptions(); the others need a new book. */

@@ -1,0 +1,60 @@
+// Where a book opens and what remembers its page: `hash: true` keeps #page=N (N counted from 1) in the
+// address, so a link opens the book there and the back and forward buttons turn it; `rememberPage:
+// 'key'` keeps the page in localStorage and opens there next time. The address wins over the memory.
+const HASH = /^#page=(\d+)$/;
+const storageKey = (key) => `conecurl:page:${key}`;
+
+function hashPage() {
+  const match = HASH.exec(globalThis.location?.hash ?? '');
+  return match ? Number(match[1]) - 1 : null;
+}
+
+function storedPage(key) {
+  try {
+    const raw = globalThis.localStorage?.getItem(storageKey(key));
+    return raw === null || raw === undefined ? null : Number(raw);
+  } catch {
+    return null;  // storage switched off (private mode, a sandboxed frame): nothing remembered
+  }
+}
+
+/** The page to open at: the address's #page=N, else the remembered page, else startPage; within the book. */
+export function openingPage(settings, pageCount) {
+  const wanted = [settings.hash ? hashPage() : null, settings.rememberPage ? storedPage(settings.rememberPage) : null]
+    .find((page) => Number.isInteger(page) && page >= 0 && page < pageCount);
+  return wanted ?? settings.startPage;
+}
+
+/**
+ * Follows the book's page into the address and the memory, and the address (back, forward, a link
+ * to #page=N) into the book. `book` has page, pageCount, flip() and turned events; returns the detach.
+ */
+export function followPage(book, settings) {
+  if (!settings.hash && !settings.rememberPage) return () => {};
+  // Flips the address asked for (a hash change fires popstate and hashchange: two) are not written back
+  // as new entries while any is under way.
+  let fromAddress = 0;
+  const onTurned = () => {
+    const page = book.page;
+    if (settings.rememberPage) {
+      try { globalThis.localStorage?.setItem(storageKey(settings.rememberPage), String(page)); } catch { /* off */ }
+    }
+    if (settings.hash && fromAddress === 0 && hashPage() !== page) history.pushState(null, '', `#page=${page + 1}`);
+  };
+  const onAddress = () => {
+    const page = hashPage();
+    if (page === null || page >= book.pageCount) return;
+    fromAddress++;
+    book.flip(page).catch(() => {}).finally(() => { fromAddress--; });
+  };
+  book.addEventListener('turned', onTurned);
+  if (settings.hash) {
+    addEventListener('popstate', onAddress);
+    addEventListener('hashchange', onAddress);
+  }
+  return () => {
+    book.removeEventListener('turned', onTurned);
+    removeEventListener('popstate', onAddress);
+    removeEventListener('hashchange', onAddress);
+  };
+}
