@@ -280,10 +280,12 @@ test('browser: every option is a property too, as Svelte and Angular set them: p
     element.startPage = 2;
     element.lighting = false;
     element.duration = 300;
+    element.setAttribute('autoplay', '60000');  // parsed as { interval }
     const attributes = ['start-page', 'lighting', 'duration'].map((name) => element.getAttribute(name));
     document.getElementById('stage').append(element);
     const book = await element.whenReady();
     const built = { pageCount: book.pageCount, page: element.page, lighting: book.options.lighting, duration: book.options.duration,
+      autoplay: book.options.autoplay,
       startPage: element.startPage, pages: element.pages.length };
     element.display = 'single';
     const live = { same: element.book === book, display: element.display, attribute: element.getAttribute('display') };
@@ -297,7 +299,7 @@ test('browser: every option is a property too, as Svelte and Angular set them: p
     return { attributes, built, live, after, errors };
   });
   expect(result.attributes).toEqual(['2', 'false', '300']);
-  expect(result.built).toEqual({ pageCount: 4, page: 1, lighting: false, duration: 300, startPage: 2, pages: 4 });
+  expect(result.built).toEqual({ pageCount: 4, page: 1, lighting: false, duration: 300, autoplay: { interval: 60000 }, startPage: 2, pages: 4 });
   expect(result.live).toEqual({ same: true, display: 'single', attribute: 'single' });
   expect(result.after).toEqual({ pageCount: 2, newBook: true });
   expect(result.errors).toHaveLength(1);

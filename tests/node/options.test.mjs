@@ -32,6 +32,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     label: 'a non-empty string',
     fallback: 'true or false',
     hash: 'true or false',
+    autoplay: 'true, false or { interval: milliseconds, loop: true or false }',
     rememberPage: 'a non-empty string (the key it is kept under)',
     antialias: "'auto', true or false",
     on: 'an object of listeners by event name (ready, progress, pageerror, turnstart, turned, turncancel, resize, zoom, sharpened, link, error)',
@@ -51,6 +52,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     label: ['', '   ', 42, null, NaN],
     fallback: ['no', 0, NaN],
     hash: ['true', 1, null],
+    autoplay: ['yes', 3000, null, { interval: 0 }, { interval: NaN }, { loop: 'yes' }, { speed: 2 }],
     rememberPage: ['', '  ', 3, null, true],
     antialias: ['AUTO', 'on', 1, null, NaN],
     on: [null, [], () => {}, { turnd: () => {} }, { turned: 'log' }, { ready: null }],
@@ -99,7 +101,7 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses(null, 'options must be an object, got null');
   refuses('pages', 'options must be an object, got "pages"');
   refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, direction, startPage, duration, schedule, hardCovers, "
-    + 'lighting, shadows, gutter, loadWindow, wasmUrl, label, fallback, hash, rememberPage, antialias, turnArea, on)');
+    + 'lighting, shadows, gutter, loadWindow, wasmUrl, label, fallback, hash, autoplay, rememberPage, antialias, turnArea, on)');
   refuses({ pages, antialias: 'yes' }, "option 'antialias' must be 'auto', true or false, got \"yes\"");
   refuses({ pages, startPage: 3 }, "option 'startPage' must be below the page count 3, got 3");
   // A value whose own toString throws or is huge is described, not called.

@@ -6,6 +6,7 @@
 // Over 350 lines because it is the whole public API of both book classes, each member documented;
 // the work behind them is in the modules it imports.
 import { followPage, openingPage } from './page-memory.js';
+import { autoplaySettings, startAutoplay } from './autoplay.js';
 import { createShell } from './book-shell.js';
 import { BookEvents } from './book-events.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
@@ -178,6 +179,7 @@ export class BookController extends EventTarget {
     this._input?.stop();
     this._stopWatchingSize?.();
     this._stopFollowingPage?.();
+    this._stopAutoplay?.();
     clearTimeout(this._refitTimer);
     this._surface?.destroy({ releaseContext: true });  // the canvas goes: give its WebGL context up now
     this._surface = null;
@@ -210,6 +212,8 @@ export class BookController extends EventTarget {
     this._showOpenPages();
     this._store.update();
     this._stopFollowingPage = followPage(this, this._settings);  // #page=N and the remembered page
+    const autoplay = autoplaySettings(this._settings.autoplay);
+    if (autoplay) this._stopAutoplay = startAutoplay(this, this._shell.root, autoplay);
     await this.whenIdle();
     this._emit('ready', { page: this.page });
   }

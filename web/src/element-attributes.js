@@ -20,6 +20,12 @@ function parseAntialias(raw, attribute) {
   if (raw === '' || raw === 'true' || raw === 'false') return raw !== 'false';
   throw attributeError(attribute, '"auto", "true" or "false"', raw);
 }
+function parseAutoplay(raw, attribute) {
+  if (raw === '' || raw === 'true' || raw === 'false') return raw !== 'false';
+  const interval = Number(raw);
+  if (raw.trim() !== '' && Number.isFinite(interval) && interval > 0) return { interval };
+  throw attributeError(attribute, '"true", "false" or the milliseconds between turns', raw);
+}
 function parseList(raw, attribute) {
   const urls = raw.split(/\s+/).filter(Boolean);
   if (urls.length === 0) throw attributeError(attribute, 'image URLs separated by spaces', raw);
@@ -40,6 +46,7 @@ export const ATTRIBUTES = {
   gutter: ['gutter', parseBoolean],
   'load-window': ['loadWindow', parseNumber],
   hash: ['hash', parseBoolean],
+  autoplay: ['autoplay', parseAutoplay],
   'remember-page': ['rememberPage', parseText],
   'wasm-url': ['wasmUrl', parseText],
   antialias: ['antialias', parseAntialias],

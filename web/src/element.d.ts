@@ -54,6 +54,7 @@ export class ConeFlipbookElement extends HTMLElement {
   antialias: boolean | 'auto' | undefined;
   loadWindow: number | undefined;
   hash: boolean | undefined;
+  autoplay: boolean | { interval: number } | undefined;
   rememberPage: string | undefined;
   wasmUrl: string | undefined;
   pdfWorkerSrc: string | undefined;

@@ -76,6 +76,11 @@ export interface FlipbookOptions {
   /** Remember the page in localStorage under this key and open there next time (#page=N wins). */
   rememberPage?: string;
   /**
+   * Turn on its own every `interval` ms (true: 4000), waiting while the pointer is over the book,
+   * while it has focus and while the tab is hidden; stop at the last page unless `loop`. Default false.
+   */
+  autoplay?: boolean | { interval?: number; loop?: boolean };
+  /**
    * The curl's schedule: 'paper' (default; the paper's three phases, Nuon's constants exactly) or
    * 'smooth' (the same key poses joined with continuous slopes: no jolt at t = 0.15 and 0.4).
    */

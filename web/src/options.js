@@ -23,6 +23,10 @@ const OPTION_CHECKS = {
   label: (v) => (typeof v === 'string' && v.trim() !== '') || 'a non-empty string',
   fallback: BOOLEAN,
   hash: BOOLEAN,
+  autoplay: (v) => typeof v === 'boolean' || (isPlainEntry(v) && Object.keys(v).every((k) => k === 'interval' || k === 'loop')
+    && (v.interval === undefined || (Number.isFinite(v.interval) && v.interval > 0))
+    && (v.loop === undefined || typeof v.loop === 'boolean'))
+    || 'true, false or { interval: milliseconds, loop: true or false }',
   rememberPage: (v) => (typeof v === 'string' && v.trim() !== '') || 'a non-empty string (the key it is kept under)',
   antialias: (v) => typeof v === 'boolean' || v === 'auto' || "'auto', true or false",
   turnArea: (v) => TURN_AREAS.includes(v) || TURN_AREAS.map((a) => `'${a}'`).join(', ').replace(/, ([^,]*)$/, ' or $1'),
@@ -33,7 +37,7 @@ const OPTION_CHECKS = {
 export const OPTION_NAMES = Object.keys(OPTION_CHECKS);
 export const DEFAULTS = {
   display: 'auto', direction: 'ltr', startPage: 0, duration: 1000, schedule: 'paper', hardCovers: false,
-  lighting: true, shadows: true, gutter: true, loadWindow: 4, label: 'Book', fallback: true, hash: false,
+  lighting: true, shadows: true, gutter: true, loadWindow: 4, label: 'Book', fallback: true, hash: false, autoplay: false,
   antialias: 'auto',
 };
 /** Options a live book takes through setOptions(); the others need a new book. */
