@@ -4,8 +4,8 @@
 // (StrictMode mounts twice); its events go to the handler props, its state to subscribers.
 import { Flipbook } from './flipbook.js';
 import { BOOK_EVENTS } from './book-events.js';
-import { DEFAULTS } from './options.js';
-import { EVENT_HANDLERS, LIVE_PROPS, clampPage, fixedOptionsDiffer, optionsOf } from './framework-props.js';
+import { DEFAULTS, LIVE_OPTIONS } from './options.js';
+import { clampPage, fixedOptionsDiffer, optionsOf } from './framework-props.js';
 
 export class BookMount {
   /**
@@ -43,7 +43,7 @@ export class BookMount {
       return;
     }
     const live = {};
-    for (const name of LIVE_PROPS) if (!Object.is(before[name], props[name])) live[name] = props[name] ?? DEFAULTS[name];
+    for (const name of LIVE_OPTIONS) if (!Object.is(before[name], props[name])) live[name] = props[name] ?? DEFAULTS[name];
     if (this._book && Object.keys(live).length > 0) {
       try {
         this._book.setOptions(live);
@@ -172,6 +172,3 @@ export class BookMount {
     };
   }
 }
-
-/** The handler prop named for a book event ('turned' -> 'onTurned'). */
-export const handlerOf = (type) => EVENT_HANDLERS[type];

@@ -166,9 +166,10 @@ export class BookView {
   }
 
   // A page's texture changed: a frame only if the page is drawn now. The pages loaded around the open
-  // spread arrive one by one; each would otherwise cost a whole frame that shows nothing new.
+  // spread arrive one by one; each would otherwise cost a whole frame that shows nothing new. While
+  // leaves move the next frame comes anyway: no call into the engine to ask (uploads land mid-turn).
   _redrawIfShown(page) {
-    if (this.pagesOnScreen().includes(page)) this.requestRender();
+    if (!this._moving && this.pagesOnScreen().includes(page)) this.requestRender();
   }
 
   /** Pixel size of page `page`'s texture as uploaded, or null without one. */

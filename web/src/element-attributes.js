@@ -10,18 +10,20 @@ function parseNumber(raw, attribute) {
   if (raw.trim() === '' || !Number.isFinite(value)) throw attributeError(attribute, 'a number', raw);
   return value;
 }
+// "true" or a bare attribute: true; "false": false; anything else: undefined.
+const flag = (raw) => (raw === '' || raw === 'true' ? true : raw === 'false' ? false : undefined);
 function parseBoolean(raw, attribute) {
-  if (raw === '' || raw === 'true') return true;  // a bare boolean attribute counts as "true"
-  if (raw === 'false') return false;
-  throw attributeError(attribute, '"true" or "false"', raw);
+  const value = flag(raw);
+  if (value === undefined) throw attributeError(attribute, '"true" or "false"', raw);
+  return value;
 }
 function parseAntialias(raw, attribute) {
-  if (raw === 'auto') return 'auto';
-  if (raw === '' || raw === 'true' || raw === 'false') return raw !== 'false';
-  throw attributeError(attribute, '"auto", "true" or "false"', raw);
+  const value = raw === 'auto' ? 'auto' : flag(raw);
+  if (value === undefined) throw attributeError(attribute, '"auto", "true" or "false"', raw);
+  return value;
 }
 function parseAutoplay(raw, attribute) {
-  if (raw === '' || raw === 'true' || raw === 'false') return raw !== 'false';
+  if (flag(raw) !== undefined) return flag(raw);
   const interval = Number(raw);
   if (raw.trim() !== '' && Number.isFinite(interval) && interval > 0) return { interval };
   throw attributeError(attribute, '"true", "false" or the milliseconds between turns', raw);
@@ -61,6 +63,14 @@ function attributeError(attribute, expected, raw) {
   return new TypeError(`conecurl: <${TAG}> attribute '${attribute}' must be ${expected}, got "${raw}"`);
 }
 
+/** An option's attribute on `element`, parsed (undefined when absent; as written when it does not parse). */
+export function readOptionAttribute(element, option) {
+  const attribute = ATTRIBUTE_OF_OPTION[option];
+  const raw = element.getAttribute(attribute);
+  if (raw === null) return undefined;
+  try { return ATTRIBUTES[attribute][1](raw, attribute); } catch { return raw; }  // a bad value is reported by the build
+}
+
 /** Writes an option to its attribute (String(value)); null or undefined removes it. */
 export function setOptionAttribute(element, option, value) {
   const attribute = ATTRIBUTE_OF_OPTION[option];
@@ -74,15 +84,11 @@ export const PROPERTY_OPTIONS = Object.values(ATTRIBUTES).map(([option]) => opti
 
 /** Defines the option properties `prototype` does not define itself (display, pages and pdf it does). */
 export function defineOptionProperties(prototype) {
-  for (const [attribute, [option, parse]] of Object.entries(ATTRIBUTES)) {
+  for (const [option] of Object.values(ATTRIBUTES)) {
     if (option in prototype) continue;
     Object.defineProperty(prototype, option, {
       configurable: true,
-      get() {
-        const raw = this.getAttribute(attribute);
-        if (raw === null) return undefined;
-        try { return parse(raw, attribute); } catch { return raw; }  // a bad value is reported by the build
-      },
+      get() { return readOptionAttribute(this, option); },
       set(value) { setOptionAttribute(this, option, value); },
     });
   }

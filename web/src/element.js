@@ -5,7 +5,7 @@ import { Flipbook } from './flipbook.js';
 import { BOOK_EVENTS } from './book-events.js';
 import { DEFAULTS } from './options.js';
 import {
-  ATTRIBUTES, ATTRIBUTE_OF_OPTION, LIVE_ATTRIBUTES, PROPERTY_OPTIONS, TAG, defineOptionProperties, setOptionAttribute,
+  ATTRIBUTES, ATTRIBUTE_OF_OPTION, LIVE_ATTRIBUTES, PROPERTY_OPTIONS, TAG, defineOptionProperties, readOptionAttribute, setOptionAttribute,
 } from './element-attributes.js';
 
 // On a server (no DOM) the module still imports: the class has no element to be, and nothing is defined.
@@ -84,10 +84,10 @@ export class ConeFlipbookElement extends ElementBase {
    * The pages: an array as Flipbook takes (URLs, images, canvases, Blobs, elements, { src, alt, ... }),
    * over the pages attribute and the child elements; a string sets the attribute. null: neither.
    */
-  get pages() { return this._held.pages ?? this.getAttribute('pages')?.split(/\s+/).filter(Boolean); }
+  get pages() { return this._held.pages ?? readOptionAttribute(this, 'pages'); }
   set pages(value) { this._setHeldProperty('pages', value, Array.isArray(value)); }
   /** A PDF: a URL (the pdf attribute) or its bytes (an ArrayBuffer or Uint8Array). */
-  get pdf() { return this._held.pdf ?? this.getAttribute('pdf') ?? undefined; }
+  get pdf() { return this._held.pdf ?? readOptionAttribute(this, 'pdf'); }
   set pdf(value) { this._setHeldProperty('pdf', value, value instanceof ArrayBuffer || value instanceof Uint8Array); }
 
   _setHeldProperty(option, value, held) {

@@ -6,9 +6,8 @@ import { LIVE_OPTIONS, OPTION_NAMES } from './options.js';
 
 /** Options a component passes through as props: startPage comes from page/defaultPage, `on` from the handlers. */
 export const OPTION_PROPS = [...OPTION_NAMES.filter((name) => name !== 'startPage' && name !== 'on'), 'pdf', 'pdfWorkerSrc'];
-/** Props applied to the running book (setOptions); a change of any other option builds a new book at the page shown. */
-export const LIVE_PROPS = LIVE_OPTIONS;
-export const FIXED_PROPS = OPTION_PROPS.filter((name) => !LIVE_PROPS.includes(name) && name !== 'pages');
+/** Props a change of which builds a new book at the page shown; LIVE_OPTIONS go to the running book (setOptions). */
+export const FIXED_PROPS = OPTION_PROPS.filter((name) => !LIVE_OPTIONS.includes(name) && name !== 'pages');
 
 const HANDLER_WORDS = { pageerror: 'PageError', turnstart: 'TurnStart', turncancel: 'TurnCancel' };
 /** 'turned' -> 'onTurned', 'pageerror' -> 'onPageError', ... for every book event. */
@@ -49,3 +48,25 @@ export function optionsOf(props) {
 
 /** Page `index` clamped into a book of `count` pages. */
 export const clampPage = (index, count) => Math.max(0, Math.min(Number.isInteger(index) ? index : 0, Math.max(0, count - 1)));
+
+/**
+ * The box an HTML page child renders into (a React portal's or Vue Teleport's target), one per child
+ * key in `hosts`, made once and kept while the key is; `keep(keys)` lets go of the others.
+ */
+export function pageBoxes() {
+  const hosts = new Map();
+  return {
+    box(key) {
+      let host = hosts.get(key);
+      if (!host) {
+        host = document.createElement('div');
+        host.style.height = '100%';
+        hosts.set(key, host);
+      }
+      return host;
+    },
+    keep(keys) {
+      for (const key of hosts.keys()) if (!keys.has(key)) hosts.delete(key);
+    },
+  };
+}

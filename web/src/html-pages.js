@@ -228,12 +228,13 @@ export class HtmlPages {
   }
 
   // Every sheet is the page's CSS size at zoom 1 (a zoom scales it, never reflows it).
-  _resize(size) {
-    if (this._size && Math.max(1, size.width) === this._size.width && Math.max(1, size.height) === this._size.height) return;
-    const first = this._size === null;
+  _resize(pageSize) {
     // At least a pixel each way: a book squeezed to a few pixels still draws its pages (a 0 px sheet
     // made a canvas with no pixels, a pageerror).
-    this._size = { width: Math.max(1, size.width), height: Math.max(1, size.height) };
+    const size = { width: Math.max(1, pageSize.width), height: Math.max(1, pageSize.height) };
+    if (this._size && size.width === this._size.width && size.height === this._size.height) return;
+    const first = this._size === null;
+    this._size = size;
     for (const page of this._pages.values()) {
       page.sheet.style.width = `${size.width}px`;
       page.sheet.style.height = `${size.height}px`;

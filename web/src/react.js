@@ -7,14 +7,15 @@ import {
   useRef, useState,
 } from 'react';
 import { createPortal } from 'react-dom';
-import { BookMount, handlerOf } from './book-mount.js';
+import { BookMount } from './book-mount.js';
+import { EVENT_HANDLERS, pageBoxes } from './framework-props.js';
 
 // The box the book fills, as <cone-flipbook> sizes itself; the `style` prop overrides any of it.
 const BOX_STYLE = { display: 'block', position: 'relative', width: '100%', aspectRatio: '16 / 10' };
 
 // Pages from children: an <img> is an image page ({ src, alt }); any other element is an HTML page,
 // rendered by React into a box of its own (a portal) that the book lays over the page's place.
-function pagesFromChildren(children, hosts) {
+function pagesFromChildren(children, boxes) {
   const pages = [];
   const portals = [];
   const keys = new Set();
@@ -25,17 +26,12 @@ function pagesFromChildren(children, hosts) {
       pages.push(alt ? { src, alt } : src);
       continue;
     }
-    let host = hosts.get(child.key);
-    if (!host) {
-      host = document.createElement('div');
-      host.style.height = '100%';
-      hosts.set(child.key, host);
-    }
+    const box = boxes.box(child.key);
     keys.add(child.key);
-    pages.push(host);
-    portals.push(createPortal(child, host, child.key));
+    pages.push(box);
+    portals.push(createPortal(child, box, child.key));
   }
-  for (const key of hosts.keys()) if (!keys.has(key)) hosts.delete(key);
+  boxes.keep(keys);
   return { pages, portals };
 }
 
@@ -45,20 +41,20 @@ export const Flipbook = forwardRef(function Flipbook(props, ref) {
   latest.current = props;
   const [mount] = useState(() => new BookMount(
     (type, event) => {
-      const handler = latest.current[handlerOf(type)];
+      const handler = latest.current[EVENT_HANDLERS[type]];
       if (handler) handler(event);
       else if (type === 'error') console.error(event.detail.error);
     },
     (page) => latest.current.onPageChange?.(page),
   ));
   const container = useRef(null);
-  const hosts = useRef(new Map());
+  const [boxes] = useState(pageBoxes);
   const [mounted, setMounted] = useState(false);
   useEffect(() => setMounted(true), []);
 
   // Children are rendered into their page boxes only in the browser, once mounted (a server has no DOM).
   const fromChildren = mounted && props.pages === undefined && props.pdf === undefined;
-  const { pages, portals } = fromChildren ? pagesFromChildren(children, hosts.current) : { pages: props.pages, portals: [] };
+  const { pages, portals } = fromChildren ? pagesFromChildren(children, boxes) : { pages: props.pages, portals: [] };
   const bookProps = useRef(null);
   bookProps.current = { ...props, pages };  // BookMount reads the options, page and defaultPage from it
 

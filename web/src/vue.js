@@ -5,14 +5,14 @@
 import { Teleport, defineComponent, getCurrentInstance, h, onBeforeUnmount, onMounted, onUpdated, ref } from 'vue';
 import { BOOK_EVENTS } from './book-events.js';
 import { BookMount } from './book-mount.js';
-import { OPTION_PROPS } from './framework-props.js';
+import { OPTION_PROPS, pageBoxes } from './framework-props.js';
 
 // The box the book fills, as <cone-flipbook> sizes itself; a `style` attribute overrides any of it.
 const BOX_STYLE = { display: 'block', position: 'relative', width: '100%', aspectRatio: '16 / 10' };
 
 // Pages from the default slot: an <img> is an image page ({ src, alt }); any other element is an HTML
 // page, rendered by Vue into a box of its own (a Teleport) that the book lays over the page's place.
-function pagesFromSlot(vnodes, hosts) {
+function pagesFromSlot(vnodes, boxes) {
   const pages = [];
   const teleports = [];
   const used = new Set();
@@ -25,17 +25,12 @@ function pagesFromSlot(vnodes, hosts) {
       return;
     }
     const key = vnode.key ?? i;
-    let host = hosts.get(key);
-    if (!host) {
-      host = document.createElement('div');
-      host.style.height = '100%';
-      hosts.set(key, host);
-    }
+    const box = boxes.box(key);
     used.add(key);
-    pages.push(host);
-    teleports.push(h(Teleport, { to: host, key }, [vnode]));
+    pages.push(box);
+    teleports.push(h(Teleport, { to: box, key }, [vnode]));
   });
-  for (const key of hosts.keys()) if (!used.has(key)) hosts.delete(key);
+  boxes.keep(used);
   return { pages, teleports };
 }
 
@@ -53,7 +48,7 @@ export const Flipbook = defineComponent({
     expose(mount.handle);
     const container = ref(null);
     const mounted = ref(false);
-    const hosts = new Map();
+    const boxes = pageBoxes();
     let current = {};
     let built = false;
     onMounted(() => { mounted.value = true; });
@@ -68,7 +63,7 @@ export const Flipbook = defineComponent({
     onBeforeUnmount(() => mount.unmount());
     return () => {
       const fromSlot = mounted.value && props.pages === undefined && props.pdf === undefined && slots.default;
-      const { pages, teleports } = fromSlot ? pagesFromSlot(slots.default(), hosts) : { pages: props.pages, teleports: [] };
+      const { pages, teleports } = fromSlot ? pagesFromSlot(slots.default(), boxes) : { pages: props.pages, teleports: [] };
       current = { ...props, pages };
       return h('div', { ref: container, style: BOX_STYLE }, teleports);
     };
