@@ -28,7 +28,7 @@ double positiveNumber(const val& options, const char* name, double fallback) {
 }
 
 // { pageCount, display: 'single'|'double', binding: 'left'|'right'|'top', pageWidth, pageHeight,
-//   turnSeconds, hardPages: [page indices], schedule: 'paper'|'smooth' }
+//   turnSeconds, hardPages: [page indices], schedule: 'paper'|'smooth', center: boolean }
 Book createBook(val options) {
     if (!options.isUndefined() && options.typeOf().as<std::string>() != "object") {
         js::throwError("TypeError", "book options must be an object");
@@ -58,6 +58,11 @@ Book createBook(val options) {
         const std::string name = schedule.isString() ? schedule.as<std::string>() : "";
         if (name != "paper" && name != "smooth") js::throwError("TypeError", "schedule must be 'paper' or 'smooth'");
         config.schedule.smooth = name == "smooth";
+    }
+    const val center = options["center"];
+    if (!center.isUndefined()) {
+        if (!center.isTrue() && !center.isFalse()) js::throwError("TypeError", "center must be true or false");
+        config.center = center.isTrue();
     }
     const val hard = options["hardPages"];
     if (!hard.isUndefined()) {
@@ -95,11 +100,12 @@ val frameToJs(const Book& book) {
 
 // --- dragging: canvas pixels of the drawing buffer, grips as plain JS objects ------------------------
 
-BookCamera cameraOf(const Book& book, double width, double height) {
+// `settled`: the camera once turns in flight land (a closed book slides to the middle as it turns).
+BookCamera cameraOf(const Book& book, double width, double height, bool settled = false) {
     if (!(width >= 1.0 && height >= 1.0 && width < 1e5 && height < 1e5)) {
         js::throwError("RangeError", "canvas size must be at least 1x1 pixels");
     }
-    return bookCamera(book.config(), static_cast<int>(width), static_cast<int>(height), book.zoom());
+    return bookCamera(book, static_cast<int>(width), static_cast<int>(height), settled);
 }
 
 glm::dvec2 pixelOf(double x, double y) {
@@ -184,13 +190,13 @@ val withRect(val out, const PixelRect& r) {
 
 // Where the resting pages lie on the canvas, in drawing-buffer pixels (book_camera.hpp).
 val restingRectOf(const Book& book, double width, double height) {
-    return withRect(val::object(), restingRect(cameraOf(book, width, height), book.config()));
+    return withRect(val::object(), restingRect(cameraOf(book, width, height, true), book.config()));
 }
 
 // The pages lying open and where, in drawing-buffer pixels under the zoom: [{ page, turned, x, y, width, height }],
 // the turned side first, page -1 for a blank back (book_camera.hpp).
 val openPagePlacesOf(const Book& book, double width, double height) {
-    const OpenPages open = openPagePlaces(book, cameraOf(book, width, height));
+    const OpenPages open = openPagePlaces(book, cameraOf(book, width, height, true));
     val out = val::array();
     for (int i = 0; i < open.count; ++i) {
         val item = val::object();
@@ -278,6 +284,9 @@ EMSCRIPTEN_BINDINGS(conecurl_book) {
                       const std::string name = display.isString() ? display.as<std::string>() : "";
                       if (name != "single" && name != "double") js::throwError("TypeError", "display must be 'single' or 'double'");
                       b.setDisplay(name == "single" ? Display::Single : Display::Double);
+                  }))
+        .function("riffleTo", optional_override([](Book& b, val position) {
+                      return b.riffleTo(js::wholeNumber(position, "position", 0, b.lastPosition()));
                   }))
         .function("jumpTo", optional_override([](Book& b, val position) {
                       b.jumpTo(js::wholeNumber(position, "position", 0, b.lastPosition()));

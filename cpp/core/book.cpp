@@ -66,7 +66,12 @@ bool Book::isHardLeaf(int leaf) const {
 
 bool Book::inFlight(int leaf) const {
     for (int i = 0; i < turnCount_; ++i) {
-        if (turns_[i].leaf == leaf) return true;
+        const Turn& turn = turns_[i];
+        if (turn.leaf == leaf) return true;
+        // Leaves a riffling leaf carries along are in flight with it, out of either stack.
+        if (turn.carriedTo >= 0 && leaf >= std::min(turn.leaf, turn.carriedTo) && leaf <= std::max(turn.leaf, turn.carriedTo)) {
+            return true;
+        }
     }
     return false;
 }
@@ -80,6 +85,34 @@ bool Book::startTurn(TurnDirection direction) {
     if (inFlight(leaf)) return false;
     turns_[turnCount_++] = Turn{leaf, direction, 0.0};
     position_ += forward ? 1 : -1;
+    return true;
+}
+
+bool Book::riffleTo(int target) {
+    target = std::clamp(target, 0, lastPosition());
+    const int distance = std::abs(target - position_);
+    if (turnCount_ > 0 || distance <= 1) return false;
+    const bool forward = target > position_;
+    // Leaves turned, in the order they go: forward p .. target-1, backward p-1 down to target.
+    const int first = forward ? position_ : position_ - 1;
+    const int step = forward ? 1 : -1;
+    const int count = std::min(distance, kMaxTurnsInFlight);
+    // Each leaf turns in kRiffleLeafTurn of a turn's time; their starts spread over the rest of the span.
+    constexpr double kRiffleLeafTurn = 0.75;
+    const double stagger = std::min(0.25, (kRiffleSpan - kRiffleLeafTurn) / (count - 1));
+    int carriedFrom = first;
+    for (int i = 0; i < count; ++i) {
+        // Evenly spread: the first leaf is the top of the stack, the last the one that lands at target.
+        const int offset = static_cast<int>(std::lround(static_cast<double>(i) * (distance - 1) / (count - 1)));
+        const int leaf = first + step * offset;
+        Turn turn{leaf, forward ? TurnDirection::Forward : TurnDirection::Backward, 0.0};
+        turn.speed = 1.0 / kRiffleLeafTurn;
+        turn.progress = -static_cast<double>(i) * stagger * turn.speed;  // waits: lies flat until then
+        turn.carriedTo = carriedFrom;  // the leaves between the previous one and this travel with it
+        turns_[turnCount_++] = turn;
+        carriedFrom = leaf + step;
+    }
+    position_ = target;
     return true;
 }
 
@@ -119,7 +152,7 @@ bool Book::advance(double seconds) {
                 pose = target;
             }
         }
-        if (!turn.held) turn.progress += turn.fallingBack ? -step : step;
+        if (!turn.held) turn.progress += (turn.fallingBack ? -step : step) * turn.speed;
         if (turn.fallingBack ? turn.progress > 0.0 : turn.progress < 1.0) turns_[kept++] = turn;  // the rest land
     }
     turnCount_ = kept;
@@ -223,7 +256,7 @@ CurlParams Book::scheduledPose(int leaf, double progress) const {
 
 CurlParams Book::poseOf(const Turn& turn) const {
     if (turn.held) return turn.heldPose;
-    CurlParams pose = scheduledPose(turn.leaf, turn.progress);
+    CurlParams pose = scheduledPose(turn.leaf, std::clamp(turn.progress, 0.0, 1.0));  // a riffle's waiting leaves: < 0
     if (turn.thetaOffset == 0.0 && turn.apexOffset == 0.0) return pose;
     // What the pointer left of the pose fades out smoothly by the end the turn is heading to.
     const double span = turn.fallingBack ? turn.blendFrom : 1.0 - turn.blendFrom;
@@ -254,6 +287,29 @@ void Book::setDisplay(Display display) {
     const int page = std::max(0, firstVisiblePage());
     config_.display = display;
     jumpTo(positionOfPage(page));
+}
+
+double Book::centerShift() const {
+    if (!config_.center || config_.display == Display::Single) return 0.0;
+    // How much of a page lies on each side, leaf by leaf: a leaf turned by rho covers the turned side
+    // by (1 - cos rho) / 2 of its width. A backward turn is posed mirrored: its rho runs the other way.
+    double turnedSide = 0.0;
+    double unturnedSide = 0.0;
+    const BookFrame f = frame();
+    for (int i = 0; i < f.count; ++i) {
+        const double over = 0.5 * (1.0 - std::cos(f.leaves[i].curl.rho));
+        const double turned = f.leaves[i].mirrored ? 1.0 - over : over;
+        turnedSide = std::max(turnedSide, turned);
+        unturnedSide = std::max(unturnedSide, 1.0 - turned);
+    }
+    return 0.5 * config_.pageWidth * (unturnedSide - turnedSide);
+}
+
+double Book::settledCenterShift() const {
+    if (!config_.center || config_.display == Display::Single) return 0.0;
+    const double turnedSide = position_ > 0 ? 1.0 : 0.0;
+    const double unturnedSide = position_ < leafCount() ? 1.0 : 0.0;
+    return 0.5 * config_.pageWidth * (unturnedSide - turnedSide);
 }
 
 LeafDraw Book::restingLeaf(int leaf, bool turned) const {

@@ -38,6 +38,7 @@ struct BookConfig {
     double turnSeconds = 1.0;
     CurlSchedule schedule;
     std::vector<bool> hardPages;  // by page index; pages past its end are soft
+    bool center = true;  // a closed book (one cover alone) sits in the middle of the view: see centerShift()
 };
 
 // One leaf as it is to be drawn. Pages are the leaf's physical sides.
@@ -83,6 +84,13 @@ public:
     // Whether time changes the frame: a turn in flight that is not held, or a held one still
     // catching up with its target pose. A resting book or a still held leaf needs no new frames.
     bool moving() const;
+    // Turns towards a far `position` by a riffle: up to kMaxTurnsInFlight leaves, spread evenly over
+    // the way there (the first leaf from the top of the stack, the last landing at `position`), start
+    // one after another and turn a little faster than a single turn; the leaves between them travel
+    // with the one ahead (they are not drawn, and land with it). All of it lands within
+    // kRiffleSpan turn durations. False (nothing changes) while a leaf is in flight or held, or for a
+    // position one leaf away or less (a plain turn).
+    bool riffleTo(int position);
     // Jumps to a position at once, dropping turns in flight.
     void jumpTo(int position);
     // Shows one page or two from now on, keeping the first visible page in view; turns in flight land
@@ -113,6 +121,15 @@ public:
     void setZoom(const ViewZoom& zoom);
     const ViewZoom& zoom() const { return zoom_; }
 
+    // How far the camera moves along the spine's normal, towards the unturned side, so the pages in
+    // view sit in the middle: half a page width towards a front cover alone on the unturned side,
+    // back again as it turns open; the same the other way for a back cover alone. 0 in single
+    // display or with config.center off. It follows the leaves' rotation, so the book slides as part
+    // of the turn (and of a drag) with no jump.
+    double centerShift() const;
+    // The same once turns in flight have landed (where the open pages will lie).
+    double settledCenterShift() const;
+
     bool isHardLeaf(int leaf) const;
     // The pose of a leaf turning at progress p (soft: the schedule; hard: rigid).
     CurlParams scheduledPose(int leaf, double progress) const;
@@ -133,6 +150,8 @@ private:
         double blendFrom = 0.0;     // progress at release; offsets fade from there to the end
         double thetaOffset = 0.0;   // released pose minus the schedule's, at blendFrom
         double apexOffset = 0.0;
+        int carriedTo = -1;         // riffle: the far end of the leaves carried with this one (-1: none)
+        double speed = 1.0;         // progress per turn duration
     };
     CurlParams poseOf(const Turn& turn) const;
     int heldIndex() const;

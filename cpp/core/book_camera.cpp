@@ -15,7 +15,11 @@ namespace {
 constexpr double kFieldOfViewY = 24.0 * 3.14159265358979323846 / 180.0;  // mild: a lift reads as one
 }  // namespace
 
-BookCamera bookCamera(const BookConfig& c, int width, int height, const ViewZoom& zoom) {
+BookCamera bookCamera(const Book& book, int width, int height, bool settled) {
+    return bookCamera(book.config(), width, height, book.zoom(), settled ? book.settledCenterShift() : book.centerShift());
+}
+
+BookCamera bookCamera(const BookConfig& c, int width, int height, const ViewZoom& zoom, double shift) {
     BookCamera camera;
     camera.width = std::max(1, width);
     camera.height = std::max(1, height);
@@ -25,7 +29,8 @@ BookCamera bookCamera(const BookConfig& c, int width, int height, const ViewZoom
     const double halfW = frame.halfExtent.x * kFrameMargin;
     const double halfH = frame.halfExtent.y * kFrameMargin;
     const double distance = std::max(halfH / tanHalf, halfW / (tanHalf * aspect));
-    const glm::dvec3 center(frame.center.x, frame.center.y, 0.0);
+    const glm::dvec2 moved = frame.center + shift * unturnedSide(c.binding);
+    const glm::dvec3 center(moved.x, moved.y, 0.0);
     camera.eye = center + glm::dvec3(0.0, 0.0, distance);
     const double reach = std::max(c.pageWidth, c.pageHeight);
     const glm::dmat4 projection = glm::perspective(kFieldOfViewY, aspect, 0.02 * distance, distance + 2.0 * reach);

@@ -23,7 +23,11 @@ struct BookCamera {
 
 // A mild perspective looking straight down at the view frame of the book, with room around it for
 // leaves lifting up, magnified by `zoom`. Sizes below 1 pixel count as 1.
-BookCamera bookCamera(const BookConfig& config, int width, int height, const ViewZoom& zoom = {});
+// `shift` moves the view along the spine's normal, towards the unturned side (Book::centerShift()).
+BookCamera bookCamera(const BookConfig& config, int width, int height, const ViewZoom& zoom = {}, double shift = 0.0);
+// The camera for `book` as it is now (its config, zoom and centre shift), or with `settled` as it
+// will be once turns in flight land.
+BookCamera bookCamera(const Book& book, int width, int height, bool settled = false);
 
 // `zoom` changed to `scale` so that the table point under `pixel` stays under it (zooming about the
 // pointer), kept inside clampZoom's limits.

@@ -5,6 +5,7 @@
 namespace conecurl {
 
 inline constexpr int kMaxTurnsInFlight = 6;
+inline constexpr double kRiffleSpan = 1.75;  // a riffle to a far page lands within this many turn durations
 inline constexpr double kMaxZoom = 4.0;
 inline constexpr double kFrameMargin = 1.3;  // room around the pages for leaves lifting up
 inline constexpr double kDefaultPageWidth = 0.8;  // world units from the spine to the free edge

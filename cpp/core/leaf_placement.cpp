@@ -76,6 +76,16 @@ ViewFrame viewFrameFor(Display display, Binding binding, double w, double h) {
     return ViewFrame{{0.0, 0.0}, {w, 0.5 * h}};
 }
 
+glm::dvec2 unturnedSide(Binding binding) {
+    // Page x (away from the spine) in world, as placeLeaf lays an unturned leaf.
+    switch (binding) {
+        case Binding::Left: return {1.0, 0.0};
+        case Binding::Right: return {-1.0, 0.0};
+        case Binding::Top: return {0.0, -1.0};
+    }
+    return {1.0, 0.0};
+}
+
 glm::dvec3 leafPointToWorld(const LeafDraw& draw, Binding binding, double h, glm::dvec2 q) {
     const LeafPlacement placement = placeLeaf(binding, draw.mirrored, h, draw.flippedY);
     const glm::dvec3 p = curlPoint(q, draw.curl);

@@ -33,6 +33,9 @@ struct ViewFrame {
 
 ViewFrame viewFrameFor(Display display, Binding binding, double pageWidth, double pageHeight);
 
+// Unit world vector from the spine towards the side where unturned leaves lie.
+glm::dvec2 unturnedSide(Binding binding);
+
 // World position of page point (x, y) of a leaf drawn as `draw`: the C++ reference of the shader.
 glm::dvec3 leafPointToWorld(const LeafDraw& draw, Binding binding, double pageHeight,
                             glm::dvec2 pagePoint);

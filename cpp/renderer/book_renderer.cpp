@@ -318,7 +318,7 @@ GLuint BookRenderer::textureFor(int page) const {
 
 BookRenderer::Camera BookRenderer::cameraFor(const Book& book, int width, int height) const {
     // The core's camera, in float for the GPU: pointer input is solved against the same one.
-    const BookCamera c = bookCamera(book.config(), width, height, book.zoom());
+    const BookCamera c = bookCamera(book, width, height);
     return Camera{glm::mat4(c.viewProjection), glm::vec3(c.eye), static_cast<float>(c.pixelsPerUnit),
                   static_cast<float>(c.magnification)};
 }

@@ -45,17 +45,19 @@ function assertZoomClose(actual, expected, where) {
   }
 }
 
-/** Calls `check(book, shape, where)` for every display, direction, page shape and page count 0..9. */
+/** Calls `check(book, shape, where)` for every display, direction, page shape, page count 0..9 and center on and off. */
 function everyBook(check) {
   for (const display of ['single', 'double']) {
     for (const direction of Object.keys(BINDING)) {
       for (const page of PAGES) {
-        for (let pageCount = 0; pageCount <= MAX_PAGES; pageCount++) {
-          const shape = { pageCount, display, direction };
-          if (page.pageWidth) shape.pageAspect = page.pageWidth / page.pageHeight;
-          withBook({ pageCount, display, binding: BINDING[direction], ...page }, (book) => {
-            check(book, shape, `${pageCount} pages, ${display}, ${direction}, page ${page.pageWidth ?? 'default'}`);
-          });
+        for (const center of [true, false]) {
+          for (let pageCount = 0; pageCount <= MAX_PAGES; pageCount++) {
+            const shape = { pageCount, display, direction, center };
+            if (page.pageWidth) shape.pageAspect = page.pageWidth / page.pageHeight;
+            withBook({ pageCount, display, binding: BINDING[direction], center, ...page }, (book) => {
+              check(book, shape, `${pageCount} pages, ${display}, ${direction}, page ${page.pageWidth ?? 'default'}, center ${center}`);
+            });
+          }
         }
       }
     }
@@ -63,8 +65,8 @@ function everyBook(check) {
 }
 
 // Positions per book over page counts 0..9: single max(1, n) (46), double ceil(n / 2) + 1 (35); each for
-// 3 directions and 2 page shapes.
-const POSITIONS = (46 + 35) * 3 * 2;
+// 3 directions, 2 page shapes, center on and off.
+const POSITIONS = (46 + 35) * 3 * 2 * 2;
 
 test('node: layout.js positions, first visible and open pages equal the engine Book\'s at every position of 0 to 9 pages (needs the wasm built)', () => {
   let positions = 0;
@@ -95,7 +97,7 @@ test('node: layout.js restingRect and openPagePlaces equal the engine\'s, unzoom
       for (const size of SIZES) {
         const { width, height } = size;
         const at = `${where}, position ${position}, ${width}x${height}`;
-        const rect = layout.restingRect(size, shape);
+        const rect = layout.restingRect(size, shape, position);
         assertRectClose(rect, book.restingRect(width, height), size, `${at}: restingRect`);
         assertPlacesClose(layout.openPagePlaces(position, shape, size), book.openPagePlaces(width, height), size, at);
 

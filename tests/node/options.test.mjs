@@ -23,6 +23,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     startPage: 'a page index (a whole number from 0)',
     duration: 'a positive number of milliseconds',
     schedule: "'paper' or 'smooth'",
+    center: 'true or false',
     hardCovers: 'true or false',
     lighting: 'true or false',
     shadows: 'true or false',
@@ -43,6 +44,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     startPage: [NaN, -1, 1.5, '1', Infinity, null],
     duration: [NaN, -1, 0, Infinity, '300', null],
     schedule: ['Smooth', 'eased', 1, null, true],
+    center: ['yes', 1, null, NaN],
     hardCovers: ['true', 1, NaN, null],
     lighting: ['yes', 0, NaN],
     shadows: ['false', -1],
@@ -100,7 +102,7 @@ test('node: pages must be a non-empty array of page sources; each entry is check
 test('node: options that are not an object, unknown keys, and a start page past the end are refused by name', () => {
   refuses(null, 'options must be an object, got null');
   refuses('pages', 'options must be an object, got "pages"');
-  refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, direction, startPage, duration, schedule, hardCovers, "
+  refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, direction, startPage, duration, schedule, center, hardCovers, "
     + 'lighting, shadows, gutter, loadWindow, wasmUrl, label, fallback, hash, autoplay, rememberPage, antialias, turnArea, on)');
   refuses({ pages, antialias: 'yes' }, "option 'antialias' must be 'auto', true or false, got \"yes\"");
   refuses({ pages, startPage: 3 }, "option 'startPage' must be below the page count 3, got 3");

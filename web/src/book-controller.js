@@ -17,7 +17,8 @@ import { attachInput } from './book-input.js';
 import { watchSize } from './size-watch.js';
 import { MAX_ZOOM, displayFor, isZoomed, openPages } from './layout.js';
 
-const REFIT_DELAY_MS = 150;  // images are fitted to a new size or zoom once it has come to rest
+const REFIT_DELAY_MS = 150;
+const NEAR_LEAVES = 2;  // flip() turns this many leaves one by one; farther, it riffles  // images are fitted to a new size or zoom once it has come to rest
 
 export class BookController extends EventTarget {
   /**
@@ -126,7 +127,10 @@ export class BookController extends EventTarget {
     return shown;
   }
 
-  /** Shows page `index`; animated turns (default) go leaf by leaf, else it jumps. */
+  /**
+   * Shows page `index`: animated (default), a near page leaf by leaf and a far one by a riffle (several
+   * leaves at once, landing within RIFFLE_SPAN turns), else it jumps.
+   */
   async flip(index, options) {
     this._alive();
     const { animate } = checkFlipOptions(options);
@@ -147,7 +151,8 @@ export class BookController extends EventTarget {
     for (;;) {
       const target = this._surface.positionOfPage(index);  // again each leaf: the display may switch
       if (this._surface.position === target) return;
-      const turned = await this._turn(target > this._surface.position ? 'forward' : 'backward');
+      const far = Math.abs(target - this._surface.position) > NEAR_LEAVES;
+      const turned = await (far ? this._riffle(target, flip) : this._turn(target > this._surface.position ? 'forward' : 'backward'));
       if (!turned || this._destroyed || flip !== this._flips) return;
     }
   }
@@ -250,7 +255,7 @@ export class BookController extends EventTarget {
       zoomAboutCentre: (scale) => this._zoomAboutCentre(scale),
       panBy: (dx, dy) => this._panBy(dx, dy),
       turn: (direction) => { if (!this._destroyed) this._turn(direction).catch(() => {}); },  // input after destroy() is dropped
-      jump: (end) => { this.flip(end === 'first' ? 0 : this.pageCount - 1, { animate: false }).catch(() => {}); },
+      jump: (end) => { this.flip(end === 'first' ? 0 : this.pageCount - 1).catch(() => {}); },  // Home, End: a riffle
       turnsFrom: (clientX, clientY) => this._turnsFrom(clientX, clientY),
       dragStarted: (direction) => {
         this._hideLayers();
@@ -297,6 +302,27 @@ export class BookController extends EventTarget {
     this._store.update();
     if (turned) this._landed();
     return turned;
+  }
+
+  // A riffle to a far position, once leaves in flight have landed (false if a later flip came first).
+  async _riffle(target, flip) {
+    await this._surface.settle();
+    if (this._destroyed || flip !== this._flips) return false;
+    if (this._zoomed()) this._zoomAbout(1, 0, 0);
+    const stale = this._html?.staleAmong(this.openPages) ?? [];
+    if (stale.length > 0) await this._redraw(stale);
+    if (this._destroyed || flip !== this._flips) return false;
+    const direction = target > this._surface.position ? 'forward' : 'backward';
+    const riffling = this._surface.riffle(target);
+    if (!this._surface.animating) return this._turn(direction);  // refused: leaf by leaf then
+    this._hideLayers();
+    this._emit('turnstart', { direction, page: this.page, riffle: true });
+    this._store.update();
+    const landed = await riffling;
+    if (this._destroyed) return false;
+    this._store.update();
+    if (landed) this._landed();
+    return landed;
   }
 
   // Open HTML pages whose content changed since their textures were made are drawn again before they move.

@@ -18,6 +18,8 @@ export interface BookViewOptions extends LoadEngineOptions, RenderOptions {
   hardPages?: number[];
   /** 'paper' (default): the paper's three phases; 'smooth': the same key poses with continuous slopes. */
   schedule?: 'paper' | 'smooth';
+  /** A closed book (one cover alone) sits centred and slides open as the cover turns; default true. */
+  center?: boolean;
   /** Multisampled edges (the WebGL context's antialias); default true. */
   antialias?: boolean;
 }
@@ -86,6 +88,12 @@ export class BookView {
   prev(): Promise<boolean>;
   /** next() or prev() by name. */
   turn(direction: 'forward' | 'backward'): Promise<boolean>;
+  /**
+   * Riffles to a far position: several leaves fan over at once and it lands within RIFFLE_SPAN turn
+   * durations. Resolves true once landed; false if it cannot now (a leaf in flight or held, or the
+   * position one leaf away or less).
+   */
+  riffle(position: number): Promise<boolean>;
   jumpTo(position: number): void;
   /** 'single' or 'double' from now on, keeping the first visible page; the renderer and page textures stay. */
   setDisplay(display: 'single' | 'double'): void;

@@ -43,6 +43,7 @@ export class BookView {
       turnSeconds: options.turnSeconds,
       hardPages: options.hardPages,
       schedule: options.schedule,
+      center: options.center,
     });
     this._target = `!conecurl-canvas-${nextTargetId++}`;
     engine.specialHTMLTargets[this._target] = canvas;
@@ -324,6 +325,19 @@ export class BookView {
     this._uploaded.clear();
     for (const { reject } of this._uploads.splice(0)) reject(new Error('conecurl: the book view was destroyed'));
     for (const resolve of this._settled.splice(0)) resolve();
+  }
+
+  /**
+   * Riffles to a far `position`: several leaves fan over at once and the book lands there within
+   * RIFFLE_SPAN turn durations (the engine's Book.riffleTo). Resolves true once it lands; false if
+   * it cannot riffle now (a leaf in flight or held, or the position one leaf away or less).
+   */
+  riffle(position) {
+    this._poseFrom = null;
+    if (this._loop.queuedTurns() > 0 || !this.book.riffleTo(position)) return Promise.resolve(false);
+    this._loop.run(performance.now());
+    this.requestRender();
+    return new Promise((resolve) => this._settled.push(() => resolve(true)));
   }
 
   /** next() or prev() by name: 'forward' or 'backward'. */

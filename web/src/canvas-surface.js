@@ -7,13 +7,13 @@ import { MAX_IMAGE_SIZE, naturalSize, uploadSizeFor } from './texture-upload.js'
 export class CanvasSurface {
   /**
    * @param {HTMLCanvasElement} canvas
-   * @param {{ pageCount: number, display: 'single'|'double', direction: string, pageAspect?: number }} book
+   * @param {{ pageCount: number, display: 'single'|'double', direction: string, pageAspect?: number, center?: boolean }} book
    */
-  constructor(canvas, { pageCount, display, direction, pageAspect }) {
+  constructor(canvas, { pageCount, display, direction, pageAspect, center = true }) {
     this.canvas = canvas;
     this._context = canvas.getContext('2d');
     if (!this._context) throw new Error('conecurl: the canvas gives no 2D context');
-    this._book = { pageCount, display, direction, pageAspect: pageAspect || layout.DEFAULT_PAGE_ASPECT };
+    this._book = { pageCount, display, direction, pageAspect: pageAspect || layout.DEFAULT_PAGE_ASPECT, center };
     this._position = 0;
     this._zoom = { scale: 1, offsetX: 0, offsetY: 0 };
     this._images = new Map();  // page -> { image, size } to draw; the controller's page store owns them
@@ -64,7 +64,7 @@ export class CanvasSurface {
   /** Where the open pages lie on the canvas, in CSS px (both places of a spread in double), zoom included. */
   restingRect() {
     const size = this._cssSize();
-    return layout.zoomRect(layout.restingRect(size, this._book), this._zoom, size.width, size.height);
+    return layout.zoomRect(layout.restingRect(size, this._book, this._position), this._zoom, size.width, size.height);
   }
 
   openPagePlaces() {

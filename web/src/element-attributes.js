@@ -42,6 +42,7 @@ export const ATTRIBUTES = {
   'start-page': ['startPage', parseNumber],
   duration: ['duration', parseNumber],
   schedule: ['schedule', parseText],
+  center: ['center', parseBoolean],
   'hard-covers': ['hardCovers', parseBoolean],
   lighting: ['lighting', parseBoolean],
   shadows: ['shadows', parseBoolean],

@@ -15,7 +15,7 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
 /**
  * The Flipbook as an element. Attributes (all optional except the pages): pages (URLs separated by
  * spaces; else the child elements: an <img> an image page, alt text kept, any other element a live
- * HTML page shown through a named slot), display, direction, start-page, duration,
+ * HTML page shown through a named slot), display, direction, start-page, duration, schedule, center,
  * hard-covers, lighting, shadows, gutter ("true"/"false"), antialias ("auto"/"true"/"false"),
  * load-window, wasm-url, pdf, pdf-worker-src.
  */
@@ -47,6 +47,7 @@ export class ConeFlipbookElement extends HTMLElement {
   startPage: number | undefined;
   duration: number | undefined;
   schedule: 'paper' | 'smooth' | undefined;
+  center: boolean | undefined;
   hardCovers: boolean | undefined;
   lighting: boolean | undefined;
   shadows: boolean | undefined;

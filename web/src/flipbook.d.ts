@@ -85,6 +85,12 @@ export interface FlipbookOptions {
    * 'smooth' (the same key poses joined with continuous slopes: no jolt at t = 0.15 and 0.4).
    */
   schedule?: 'paper' | 'smooth';
+  /**
+   * A closed book sits in the middle of its frame: the front cover alone on the right (the back cover
+   * alone on the left) is centred, and the book slides to the open position as the cover turns, as
+   * part of the same animation. Default true; false keeps the spine in the middle always.
+   */
+  center?: boolean;
   /** The first and last pages turn rigidly; default false. */
   hardCovers?: boolean;
   lighting?: boolean;

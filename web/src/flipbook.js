@@ -104,6 +104,7 @@ export class Flipbook extends BookController {
       hardPages,
       turnSeconds: settings.duration / 1000,
       schedule: settings.schedule,
+      center: settings.center,
       // 'auto': smooth edges unless WebGL runs in software, where multisampling costs ~30% a frame.
       antialias: settings.antialias === 'auto' ? !softwareWebGL() : settings.antialias,
       lighting: settings.lighting,

@@ -51,17 +51,32 @@ export function openPages(position, pageCount, display) {
 // ---- where the pages lie: the camera's picture at the page plane, as cpp/core/book_camera.cpp ----------
 
 /**
- * The rectangle both pages of a spread (or the one page) occupy in a view of `size` ({ width, height },
- * any pixel unit), unzoomed: centred, the view frame times FRAME_MARGIN fitted. As the engine's restingRect.
+ * How far a book at rest at `position` sits from the middle, in page widths towards its unturned side:
+ * 1/2 with the front cover alone on that side, -1/2 with the back cover alone on the other, else 0 (and
+ * 0 in single display or with `center` false). As Book::settledCenterShift.
  */
-export function restingRect(size, { display = 'double', direction = 'ltr', pageAspect = DEFAULT_PAGE_ASPECT } = {}) {
+export function centerShift(position, { pageCount = 0, display = 'double', center = true } = {}) {
+  if (!center || display !== 'double') return 0;
+  return 0.5 * ((position < Math.ceil(pageCount / 2) ? 1 : 0) - (position > 0 ? 1 : 0));
+}
+
+/**
+ * The rectangle both pages of a spread (or the one page) occupy in a view of `size` ({ width, height },
+ * any pixel unit), unzoomed: the view frame times FRAME_MARGIN fitted and centred, then moved by
+ * centerShift() when a `position` is given. As the engine's restingRect.
+ */
+export function restingRect(size, book = {}, position = undefined) {
+  const { display = 'double', direction = 'ltr', pageAspect = DEFAULT_PAGE_ASPECT } = book;
   const across = display === 'double' ? 2 * pageAspect : pageAspect;  // page widths, spine to free edge
   // A top spine (vertical) hangs the pages below it: the width runs down the canvas.
   const [frameWidth, frameHeight] = direction === 'vertical' ? [1, across] : [across, 1];
   const scale = Math.min(size.width / (frameWidth * FRAME_MARGIN), size.height / (frameHeight * FRAME_MARGIN));
   const width = frameWidth * scale;
   const height = frameHeight * scale;
-  return { x: (size.width - width) / 2, y: (size.height - height) / 2, width, height };
+  // The camera moves towards the unturned side (right for ltr, left for rtl, down for vertical): the pages move the other way.
+  const shift = position === undefined ? 0 : centerShift(position, book) * pageAspect * scale;
+  const [dx, dy] = direction === 'vertical' ? [0, -shift] : [direction === 'rtl' ? shift : -shift, 0];
+  return { x: (size.width - width) / 2 + dx, y: (size.height - height) / 2 + dy, width, height };
 }
 
 /**
@@ -70,8 +85,8 @@ export function restingRect(size, { display = 'double', direction = 'ltr', pageA
  * under `zoom` if given. As the engine's openPagePlaces.
  */
 export function openPagePlaces(position, book, size, zoom) {
-  const { pageCount, display = 'double', direction = 'ltr', pageAspect = DEFAULT_PAGE_ASPECT } = book;
-  const rect = restingRect(size, { display, direction, pageAspect });
+  const { pageCount, display = 'double', direction = 'ltr' } = book;
+  const rect = restingRect(size, book, position);
   const places = [];
   if (display !== 'double') {
     if (position < pageCount) places.push({ page: position, turned: false, ...rect });

@@ -14,6 +14,7 @@ const OPTION_CHECKS = {
   startPage: (v) => (Number.isInteger(v) && v >= 0) || 'a page index (a whole number from 0)',
   duration: (v) => (Number.isFinite(v) && v > 0) || 'a positive number of milliseconds',
   schedule: (v) => ['paper', 'smooth'].includes(v) || "'paper' or 'smooth'",
+  center: BOOLEAN,
   hardCovers: BOOLEAN,
   lighting: BOOLEAN,
   shadows: BOOLEAN,
@@ -36,7 +37,7 @@ const OPTION_CHECKS = {
 /** Every option validateOptions() knows (Flipbook.create also takes pdf and pdfWorkerSrc in place of pages). */
 export const OPTION_NAMES = Object.keys(OPTION_CHECKS);
 export const DEFAULTS = {
-  display: 'auto', direction: 'ltr', startPage: 0, duration: 1000, schedule: 'paper', hardCovers: false,
+  display: 'auto', direction: 'ltr', startPage: 0, duration: 1000, schedule: 'paper', center: true, hardCovers: false,
   lighting: true, shadows: true, gutter: true, loadWindow: 4, label: 'Book', fallback: true, hash: false, autoplay: false,
   antialias: 'auto',
 };

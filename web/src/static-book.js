@@ -21,6 +21,7 @@ export class StaticBook extends BookController {
       display,
       direction: this._settings.direction,
       pageAspect: this._settings.pageAspect,
+      center: this._settings.center,
     });
   }
 }

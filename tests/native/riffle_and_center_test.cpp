@@ -1,0 +1,218 @@
+// Native (GoogleTest via CTest) tests of two motions of the whole book: riffling to a far position
+// (several leaves in flight, landing within kRiffleSpan turns) and a closed book centred in the view.
+#include "book.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <string>
+
+#include "book_camera.hpp"
+#include "leaf_placement.hpp"
+
+namespace {
+
+using conecurl::Binding;
+using conecurl::Book;
+using conecurl::BookConfig;
+using conecurl::BookFrame;
+using conecurl::Display;
+using conecurl::kMaxTurnsInFlight;
+using conecurl::kRiffleSpan;
+
+constexpr double kPi = 3.14159265358979323846;
+
+Book makeBook(int pageCount, Display display = Display::Double, Binding binding = Binding::Left, bool center = true) {
+    BookConfig config;
+    config.pageCount = pageCount;
+    config.display = display;
+    config.binding = binding;
+    config.turnSeconds = 1.0;
+    config.center = center;
+    return Book(config);
+}
+
+int leavesInFlight(const BookFrame& frame) {
+    int n = 0;
+    for (int i = 0; i < frame.count; ++i) n += frame.leaves[i].resting ? 0 : 1;
+    return n;
+}
+
+// Leaves lifted off the table: in flight and turned by more than a hair.
+int leavesLifted(const BookFrame& frame) {
+    int n = 0;
+    for (int i = 0; i < frame.count; ++i) n += !frame.leaves[i].resting && frame.leaves[i].curl.rho > 1e-6 ? 1 : 0;
+    return n;
+}
+
+TEST(Riffle, FromPageZeroToThreeHundredOfFourHundredLandsWithinTheSpanWithSeveralLeavesLifted) {
+    Book book = makeBook(400);
+    const int target = book.positionOfPage(300);
+    ASSERT_TRUE(book.riffleTo(target));
+    EXPECT_EQ(book.position(), target);  // where it will settle, at once, as startTurn does
+    int mostLifted = 0;
+    double seconds = 0.0;
+    const double step = 1.0 / 60.0;
+    while (book.animating() && seconds < 10.0) {
+        mostLifted = std::max(mostLifted, leavesLifted(book.frame()));
+        book.advance(step);
+        seconds += step;
+    }
+    EXPECT_FALSE(book.animating());
+    EXPECT_LE(seconds, kRiffleSpan + step);
+    EXPECT_LE(kRiffleSpan, 2.0);  // the bound: twice one turn
+    EXPECT_GE(mostLifted, 3);
+    EXPECT_EQ(book.firstVisiblePage(), 299);
+    EXPECT_EQ(book.frame().count, 2);  // at rest: the two stacks' top leaves
+}
+
+TEST(Riffle, LeavesInFlightAreSpreadOverTheWayFirstFromTheTopLastLandingAtTheTarget) {
+    Book book = makeBook(400);
+    book.jumpTo(10);
+    ASSERT_TRUE(book.riffleTo(150));
+    const BookFrame frame = book.frame();
+    std::set<int> flying;
+    for (int i = 0; i < frame.count; ++i) {
+        if (!frame.leaves[i].resting) flying.insert(frame.leaves[i].leaf);
+    }
+    EXPECT_EQ(static_cast<int>(flying.size()), kMaxTurnsInFlight);
+    EXPECT_EQ(*flying.begin(), 10);    // the leaf on top of the unturned stack goes first
+    EXPECT_EQ(*flying.rbegin(), 149);  // the last lands on top of the turned stack at the target
+    // The stacks: the turned side still shows leaf 9 (the carried leaves are out of both stacks); the
+    // unturned side is the target's leaf, under the waiting ones.
+    for (int i = 0; i < frame.count; ++i) {
+        if (!frame.leaves[i].resting) continue;
+        if (frame.leaves[i].curl.rho > 1.0) EXPECT_EQ(frame.leaves[i].leaf, 9);
+        else EXPECT_EQ(frame.leaves[i].leaf, 150);
+    }
+}
+
+TEST(Riffle, TheTurnedStackTopIsAlwaysTheLastLeafLandedSoNoPageJumpsAhead) {
+    Book book = makeBook(400);
+    ASSERT_TRUE(book.riffleTo(120));
+    int lastTop = -1;
+    for (int frameIndex = 0; frameIndex < 200 && book.animating(); ++frameIndex) {
+        book.advance(1.0 / 60.0);
+        const BookFrame frame = book.frame();
+        for (int i = 0; i < frame.count; ++i) {
+            const auto& leaf = frame.leaves[i];
+            if (leaf.resting && leaf.curl.rho > 1.0) {
+                EXPECT_GE(leaf.leaf, lastTop);  // grows as leaves land, never skips back
+                lastTop = leaf.leaf;
+            }
+        }
+    }
+    EXPECT_EQ(lastTop, 119);
+}
+
+TEST(Riffle, BackwardToTheFrontCoverAndSingleDisplayLandAtTheTarget) {
+    Book book = makeBook(400);
+    book.jumpTo(150);
+    ASSERT_TRUE(book.riffleTo(0));
+    while (book.animating()) book.advance(0.05);
+    EXPECT_EQ(book.position(), 0);
+    EXPECT_EQ(book.firstVisiblePage(), 0);
+
+    Book single = makeBook(50, Display::Single);
+    ASSERT_TRUE(single.riffleTo(49));
+    EXPECT_GE(leavesInFlight(single.frame()), 2);
+    while (single.animating()) single.advance(0.05);
+    EXPECT_EQ(single.firstVisiblePage(), 49);
+}
+
+TEST(Riffle, IsRefusedOneLeafAwayWhileALeafMovesOrIsHeldAndClampsTheTarget) {
+    Book book = makeBook(40);
+    EXPECT_FALSE(book.riffleTo(1));  // one leaf: a plain turn
+    EXPECT_FALSE(book.riffleTo(0));
+    ASSERT_TRUE(book.startTurn(conecurl::TurnDirection::Forward));
+    EXPECT_FALSE(book.riffleTo(15));  // a leaf in flight
+    while (book.animating()) book.advance(0.1);
+    ASSERT_TRUE(book.startHeldTurn(conecurl::TurnDirection::Forward, false));
+    EXPECT_FALSE(book.riffleTo(15));  // a held leaf
+    book.releaseHeldTurn(false);
+    while (book.animating()) book.advance(0.1);
+    EXPECT_EQ(book.position(), 1);
+    ASSERT_TRUE(book.riffleTo(1000));
+    EXPECT_EQ(book.position(), book.lastPosition());
+    // Turns asked for during a riffle wait: all six slots are taken.
+    EXPECT_FALSE(book.startTurn(conecurl::TurnDirection::Forward));
+}
+
+TEST(Riffle, FewerLeavesThanSlotsTurnEachOnce) {
+    Book book = makeBook(40);
+    ASSERT_TRUE(book.riffleTo(3));
+    std::set<int> flying;
+    const BookFrame frame = book.frame();
+    for (int i = 0; i < frame.count; ++i) {
+        if (!frame.leaves[i].resting) flying.insert(frame.leaves[i].leaf);
+    }
+    EXPECT_EQ(flying, (std::set<int>{0, 1, 2}));
+}
+
+TEST(CenterShift, AClosedBookSitsHalfAPageTowardsItsOneCoverAndAnOpenOneDoesNot) {
+    for (Binding binding : {Binding::Left, Binding::Right, Binding::Top}) {
+        Book book = makeBook(8, Display::Double, binding);
+        const double w = book.config().pageWidth;
+        EXPECT_DOUBLE_EQ(book.centerShift(), 0.5 * w);  // front cover alone on the unturned side
+        EXPECT_DOUBLE_EQ(book.settledCenterShift(), 0.5 * w);
+        book.jumpTo(2);
+        EXPECT_DOUBLE_EQ(book.centerShift(), 0.0);
+        book.jumpTo(book.lastPosition());
+        EXPECT_DOUBLE_EQ(book.centerShift(), -0.5 * w);  // back cover alone on the turned side
+        EXPECT_DOUBLE_EQ(book.settledCenterShift(), -0.5 * w);
+    }
+    Book off = makeBook(8, Display::Double, Binding::Left, false);
+    EXPECT_EQ(off.centerShift(), 0.0);
+    Book single = makeBook(8, Display::Single);
+    EXPECT_EQ(single.centerShift(), 0.0);
+}
+
+TEST(CenterShift, SlidesSmoothlyAndMonotonicallyAsTheCoverOpensAndBackAsItCloses) {
+    Book book = makeBook(8);
+    const double w = book.config().pageWidth;
+    ASSERT_TRUE(book.startTurn(conecurl::TurnDirection::Forward));
+    EXPECT_NEAR(book.centerShift(), 0.5 * w, 1e-12);  // no jump as the turn starts
+    EXPECT_NEAR(book.settledCenterShift(), 0.0, 1e-12);  // where it will be
+    double last = book.centerShift();
+    double biggestStep = 0.0;
+    while (book.animating()) {
+        book.advance(1.0 / 60.0);
+        const double now = book.centerShift();
+        EXPECT_LE(now, last + 1e-12);
+        biggestStep = std::max(biggestStep, last - now);
+        last = now;
+    }
+    EXPECT_NEAR(last, 0.0, 1e-12);  // no jump as it lands
+    EXPECT_LT(biggestStep, 0.05 * w);  // a slide, not a cut: at 60 frames a second, 1 s turn
+    ASSERT_TRUE(book.startTurn(conecurl::TurnDirection::Backward));
+    while (book.animating()) {
+        book.advance(1.0 / 60.0);
+        EXPECT_GE(book.centerShift(), last - 1e-12);
+        last = book.centerShift();
+    }
+    EXPECT_NEAR(last, 0.5 * w, 1e-12);
+}
+
+TEST(CenterShift, TheCameraLooksAtTheMiddleOfWhatIsOpenSoAClosedBookHasEqualMargins) {
+    for (Binding binding : {Binding::Left, Binding::Right}) {
+        Book book = makeBook(8, Display::Double, binding);
+        for (int position : {0, 4}) {
+            book.jumpTo(position);
+            const conecurl::BookCamera camera = conecurl::bookCamera(book, 800, 600);
+            const conecurl::OpenPages open = conecurl::openPagePlaces(book, camera);
+            ASSERT_EQ(open.count, 1);
+            const conecurl::PixelRect r = open.places[0].rect;
+            EXPECT_NEAR(r.x, 800 - (r.x + r.width), 1e-6) << "position " << position;  // left margin = right margin
+        }
+        book.jumpTo(2);
+        const conecurl::OpenPages both = conecurl::openPagePlaces(book, conecurl::bookCamera(book, 800, 600));
+        ASSERT_EQ(both.count, 2);
+        const double left = std::min(both.places[0].rect.x, both.places[1].rect.x);
+        const double right = std::max(both.places[0].rect.x + both.places[0].rect.width, both.places[1].rect.x + both.places[1].rect.width);
+        EXPECT_NEAR(left, 800 - right, 1e-6);  // the open book where it always was
+    }
+}
+
+}  // namespace
