@@ -44,7 +44,8 @@ async function pageCounts(page) {
 test('browser: resting spreads show the right pages for ltr, rtl, vertical and single display', async ({ page }) => {
   expect(await pagesAt(page, 'position=1', [LEFT, RIGHT])).toEqual([1, 2]);
   expect(await pagesAt(page, 'position=3', [LEFT, RIGHT])).toEqual([5, 6]);
-  expect(await pagesAt(page, 'position=0', [LEFT, RIGHT])).toEqual([-1, 0]);  // the cover alone
+  expect(await pagesAt(page, 'position=0&center=off', [LEFT, RIGHT])).toEqual([-1, 0]);  // the cover alone
+  expect(await pagesAt(page, 'position=0', [LEFT, [320, 300], RIGHT])).toEqual([-1, 0, -1]);  // centred (center: true)
   expect(await pagesAt(page, 'position=1&direction=rtl', [LEFT, RIGHT])).toEqual([2, 1]);
   expect(await pagesAt(page, 'position=1&direction=vertical', [TOP, BOTTOM])).toEqual([1, 2]);
   expect(await pagesAt(page, 'position=2&display=single', [SINGLE])).toEqual([2]);

@@ -80,8 +80,12 @@ test('browser: a click on the half that holds the next page turns forward, the o
 test('browser: ten quick clicks land ten leaves on, quick clicks back land too, and the book still turns after', async ({ page }) => {
   await openReady(page, FIXTURE);
   await openBook(page, { pages: 40, display: 'double', duration: 300 });
+  // The closed book sits centred: the first click opens it, then the right page is where it stays.
+  const cover = await pointAt(page, 0.75, 0.5);
+  await page.mouse.click(cover.x, cover.y);
+  await settle(page);
   const forward = await pointAt(page, 0.75, 0.5);
-  for (let i = 0; i < 10; i++) await page.mouse.click(forward.x, forward.y);
+  for (let i = 0; i < 9; i++) await page.mouse.click(forward.x, forward.y);
   await settle(page);
   expect(await bookPage(page)).toBe(19);  // spread 10: pages 19 and 20
   expect(await announcement(page)).toBe(`Pages 20${EN_DASH}21 of 40`);
@@ -310,20 +314,18 @@ test('browser: with prefers-reduced-motion a turn cuts to the next spread: no cu
     const events = [];
     for (const type of ['turnstart', 'turned']) book.addEventListener(type, (e) => events.push([type, e.detail.page]));
     const framesBefore = view.framesDrawn;
-    const started = performance.now();
     const turned = await book.next();
-    const elapsed = performance.now() - started;
     await new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve)));
     await book.flip(9);  // an animated flip cuts too
     await new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve)));
-    return { turned, elapsed, page: book.page, curled, frames: view.framesDrawn - framesBefore, events, animating: view.animating };
+    return { turned, page: book.page, curled, frames: view.framesDrawn - framesBefore, events, animating: view.animating };
   });
   expect(result.turned).toBe(true);
   expect(result.page).toBe(9);
   expect(result.curled).toBe(0);
   expect(result.animating).toBe(false);
-  expect(result.frames).toBeLessThanOrEqual(4);  // a 2 s turn on SwiftShader would draw ~10 frames per leaf
-  expect(result.elapsed).toBeLessThan(1000);     // far below the 2000 ms duration: no animation ran
+  // A count, not a time: a 2 s turn on SwiftShader would draw ~10 frames per leaf.
+  expect(result.frames).toBeLessThanOrEqual(4);
   expect(result.events).toEqual([['turnstart', 1], ['turned', 1], ['turned', 9]]);
   // Quick clicks under reduced motion each cut one spread on.
   const forward = await pointAt(page, 0.75, 0.5);

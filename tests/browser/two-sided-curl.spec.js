@@ -3,7 +3,8 @@
 import { test, expect } from '@playwright/test';
 import { openReady } from './helpers.js';
 
-const FIXTURE = '/tests/browser/fixtures/book-fixture.html?pages=2&sides=1&position=0';
+// The turn of the first leaf from the spine in the middle (center off: a closed book would sit centred).
+const FIXTURE = '/tests/browser/fixtures/book-fixture.html?pages=2&sides=1&position=0&center=off';
 const CANVAS = { width: 640, height: 400 };
 const SPINE_X = CANVAS.width / 2;
 
