@@ -24,6 +24,18 @@ test('browser: demo Next and Prev buttons turn a leaf each way and settle', asyn
   await expect(page.locator('body')).toHaveAttribute('data-state', 'open', { timeout: 15000 });
 });
 
+test('browser: demo "Jump to page" riffles to the page asked for (one turnstart with riffle: true)', async ({ page }) => {
+  await openReady(page, '/web/demo/');
+  await page.evaluate(() => {
+    window.starts = [];
+    window.conecurlDemo.book.addEventListener('turnstart', (e) => window.starts.push(e.detail));
+  });
+  await page.fill('#jump-page', '30');
+  await page.click('#jump button');
+  await expect(page.locator('#where')).toHaveText('Pages 30–31 of 40', { timeout: 20000 });
+  expect(await page.evaluate(() => window.starts.map((s) => s.riffle))).toEqual([true]);
+});
+
 test('browser: demo turns with the arrow keys when the book has focus', async ({ page }) => {
   await openReady(page, '/web/demo/?page=9');
   await page.selectOption('#speed', '0.5');

@@ -99,6 +99,7 @@ function buildBook(startPage) {
     }
     book.addEventListener('resize', showWhere);
     book.addEventListener('pageerror', (e) => { $('status').textContent = `page ${e.detail.index + 1}: ${e.detail.error.message}`; });
+    $('jump-page').max = String(book.pageCount);
     showWhere();
   });
   return building;
@@ -114,6 +115,12 @@ async function main() {
   showSchedule(fixed === null ? 0 : Number(fixed));
 
   $('next').addEventListener('click', () => book.next());
+  // A far page riffles there: several leaves at once, landing within RIFFLE_SPAN turns.
+  $('jump').addEventListener('submit', (event) => {
+    event.preventDefault();
+    const page = Math.min(book.pageCount, Math.max(1, Math.floor(Number($('jump-page').value)) || 1));
+    book.flip(page - 1).catch((error) => { $('status').textContent = error.message; });
+  });
   $('prev').addEventListener('click', () => book.prev());
   $('scrub').addEventListener('input', () => {
     const t = Number($('scrub').value);
