@@ -185,3 +185,24 @@ test('browser: sound: under prefers-reduced-motion no AudioContext is made and t
   expect(await page.evaluate(() => window.book.sound)).toEqual({ state: 'silent', gain: 0, target: 0, speed: 0, taps: 0 });
   expect(problems).toEqual([]);
 });
+
+test('browser: sound: <cone-flipbook sound muted> sets the options; the muted attribute and property change the same live book', async ({ page }) => {
+  const problems = await openReady(page, '/tests/browser/fixtures/element-fixture.html');
+  const result = await page.evaluate(async () => {
+    const pages = Array.from({ length: 4 }, (_, i) => window.pageUrl(i)).join(' ');
+    const element = window.makeElement({ pages, sound: '', muted: 'true' });
+    document.getElementById('stage').append(element);
+    const book = await element.whenReady();
+    const seen = [[book.options.sound, book.muted, book.sound.state, element.muted]];
+    element.removeAttribute('muted');  // absent: the default, not muted
+    seen.push([book.muted, book.sound.state]);
+    element.muted = true;  // the property writes the attribute
+    seen.push([book.muted, book.sound.state, element.getAttribute('muted')]);
+    element.setAttribute('sound', 'false');
+    seen.push([book.options.sound, book.sound.state]);
+    return { seen, same: element.book === book };
+  });
+  expect(result.seen).toEqual([[true, true, 'muted', true], [false, 'waiting'], [true, 'muted', 'true'], [false, 'off']]);
+  expect(result.same).toBe(true);
+  expect(problems).toEqual([]);
+});
