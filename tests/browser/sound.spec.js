@@ -91,7 +91,7 @@ test('browser: sound: a turn without a user gesture (autoplay, once the page\'s 
   expect(problems).toEqual([]);
 });
 
-test('browser: sound: the rustle\'s gain follows the leaf\'s angular speed: a slow drag whispers, a fling is louder, at rest it fades to 0', async ({ page }) => {
+test('browser: sound: the rustle\'s gain follows the leaf\'s angular speed: a slow drag whispers, a fling is louder, at rest it fades to 0, each landing taps', async ({ page }) => {
   await countContexts(page);
   const problems = await openReady(page, FIXTURE);
   await open(page, { sound: true });
@@ -148,6 +148,8 @@ test('browser: sound: the rustle\'s gain follows the leaf\'s angular speed: a sl
   const rho = num / Math.sqrt(ds * dg);
   console.log(`sound: rank correlation of sampled gain with angular speed ${rho.toFixed(3)} over ${all.length} frames`);
   expect(rho).toBeGreaterThan(0.6);
+  // Each stroke ended in a landing (the slow one fell back or landed, the fling landed): a tap each.
+  expect(await page.evaluate(() => window.book.sound.taps)).toBe(2);
   expect(problems).toEqual([]);
 });
 
