@@ -42,6 +42,18 @@ int tick(FrameLoop& loop, double nowMs, bool draw) {
     return flags;
 }
 
+// { speed (rad/s), hard, landings, landedHard } built here: one JS->wasm call, where a value_object
+// would call back into wasm for each field.
+val motionOf(const FrameLoop& loop) {
+    const LeafMotion& m = loop.clock.motion();
+    val out = val::object();
+    out.set("speed", m.speed);
+    out.set("hard", m.hard);
+    out.set("landings", m.landings);
+    out.set("landedHard", m.landedHard);
+    return out;
+}
+
 val pagesOnScreenOf(const Book& book) {
     const PagesOnScreen pages = pagesOnScreen(book.frame());
     val out = val::array();
@@ -65,6 +77,9 @@ EMSCRIPTEN_BINDINGS(conecurl_frame) {
         .function("requestTurn", optional_override([](FrameLoop& l, val direction, double nowMs) {
                       return static_cast<int>(l.clock.requestTurn(*l.book, directionOf(direction), nowMs / 1000.0));
                   }))
+        // motion(): how the leaves moved in the last tick. Not part of the frame's one call: BookView
+        // asks only while a page sound listens (page-sound.js), and it is one call (no field getters).
+        .function("motion", &motionOf)
         .function("queuedTurns", optional_override([](const FrameLoop& l) { return l.clock.queuedTurns(); }))
         .function("clearQueue", optional_override([](FrameLoop& l) { l.clock.clearQueue(); }))
         .function("run", optional_override([](FrameLoop& l, double nowMs) { l.clock.run(nowMs / 1000.0); }))

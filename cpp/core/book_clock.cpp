@@ -13,6 +13,42 @@ bool PagesOnScreen::operator==(const PagesOnScreen& o) const {
     return count == o.count && std::equal(pages.begin(), pages.begin() + count, o.pages.begin());
 }
 
+namespace {
+const LeafDraw* inFlightLeaf(const BookFrame& frame, int leaf) {
+    for (int i = 0; i < frame.count; ++i) {
+        if (!frame.leaves[i].resting && frame.leaves[i].leaf == leaf) return &frame.leaves[i];
+    }
+    return nullptr;
+}
+
+// The fastest leaf in flight in both frames, `seconds` apart. A leaf that changed direction between
+// them (a backward turn is posed mirrored) has no comparable pose and does not count.
+void measureSpeed(const BookFrame& previous, const BookFrame& now, double seconds, LeafMotion& motion) {
+    if (!(seconds > 0.0) || !std::isfinite(seconds)) return;
+    for (int i = 0; i < now.count; ++i) {
+        const LeafDraw& draw = now.leaves[i];
+        if (draw.resting) continue;
+        const LeafDraw* before = inFlightLeaf(previous, draw.leaf);
+        if (before == nullptr || before->mirrored != draw.mirrored) continue;
+        const double speed = std::abs(draw.curl.rho - before->curl.rho) / seconds;
+        if (speed > motion.speed) {
+            motion.speed = speed;
+            motion.hard = draw.hard;
+        }
+    }
+}
+
+// Leaves in flight before an advance that no longer are: landed, or fallen back flat.
+void countLandings(const BookFrame& before, const BookFrame& after, LeafMotion& motion) {
+    for (int i = 0; i < before.count; ++i) {
+        const LeafDraw& draw = before.leaves[i];
+        if (draw.resting || inFlightLeaf(after, draw.leaf) != nullptr) continue;
+        ++motion.landings;
+        motion.landedHard = motion.landedHard || draw.hard;
+    }
+}
+}  // namespace
+
 PagesOnScreen pagesOnScreen(const BookFrame& frame) {
     PagesOnScreen out;
     auto add = [&out](int page) {
@@ -43,7 +79,11 @@ TurnRequest BookClock::requestTurn(Book& book, TurnDirection direction, double n
 
 int BookClock::tick(Book& book, double nowSeconds) {
     int flags = 0;
-    if (running_ && book.moving()) {
+    motion_ = LeafMotion{};
+    BookFrame beforeAdvance;
+    const bool advancing = running_ && book.moving();
+    if (advancing) {
+        beforeAdvance = book.frame();
         const double step = lastSeconds_ >= 0.0 && std::isfinite(nowSeconds) && std::isfinite(lastSeconds_)
                                 ? std::clamp(nowSeconds - lastSeconds_, 0.0, kMaxStepSeconds)
                                 : 0.0;
@@ -64,7 +104,11 @@ int BookClock::tick(Book& book, double nowSeconds) {
             flags |= kTickSettled;
         }
     }
+    const BookFrame previous = frame_;
     frame_ = book.frame();
+    if (lastTickSeconds_ >= 0.0) measureSpeed(previous, frame_, nowSeconds - lastTickSeconds_, motion_);
+    if (advancing) countLandings(beforeAdvance, frame_, motion_);
+    if (std::isfinite(nowSeconds)) lastTickSeconds_ = nowSeconds;
     const PagesOnScreen pages = pagesOnScreen(frame_);
     if (!havePages_ || !(pages == lastPages_)) flags |= kTickPagesChanged;
     lastPages_ = pages;

@@ -28,6 +28,14 @@ struct PagesOnScreen {
 };
 PagesOnScreen pagesOnScreen(const BookFrame& frame);
 
+// How the leaves moved in the last tick, for a page sound that follows the hand (web/src/page-sound.js).
+struct LeafMotion {
+    double speed = 0.0;       // |d rho / dt| of the fastest leaf in flight, rad/s, since the previous tick
+    bool hard = false;        // that leaf turns rigidly (a cover)
+    int landings = 0;         // leaves in flight before the tick's advance that lie flat after it
+    bool landedHard = false;  // one of them is a hard leaf
+};
+
 class BookClock {
 public:
     // A frame advances the clock by the time since the last one, up to this much: turns keep their
@@ -61,6 +69,9 @@ public:
     int tick(Book& book, double nowSeconds);
     // The frame the last tick composed (what a renderer draws after it).
     const BookFrame& frame() const { return frame_; }
+    // How the leaves moved in the last tick: a leaf counts from the second tick it is in flight in (its
+    // pose the previous tick drew is the start of the step), whether time or a held pointer moved it.
+    const LeafMotion& motion() const { return motion_; }
 
 private:
     std::array<TurnDirection, kMaxQueuedTurns> queue_{};
@@ -68,6 +79,8 @@ private:
     bool running_ = false;
     double lastSeconds_ = -1.0;
     BookFrame frame_{};
+    LeafMotion motion_{};
+    double lastTickSeconds_ = -1.0;  // the previous tick's timestamp, running or not (motion's dt)
     PagesOnScreen lastPages_{};
     bool havePages_ = false;
 };

@@ -73,10 +73,13 @@ function countCalls() {
   }
 }
 
-/** Per-frame deltas of the counters over `frames` animation frames taken in the middle of a turn. */
+/**
+ * Per-frame deltas of the counters over `frames` animation frames taken in the middle of a turn, of a
+ * new book with `options` (null: of the book open now).
+ */
 async function countTurningFrames(page, options, frames = 6) {
-  return page.evaluate(async ({ options, frames }) => {
-    await window.openBook(options);
+  if (options) await page.evaluate((options) => window.openBook(options), options);
+  return page.evaluate(async ({ frames }) => {
     await window.settle();
     const book = window.book;
     const nextFrame = () => new Promise((resolve) => requestAnimationFrame(resolve));
@@ -95,7 +98,7 @@ async function countTurningFrames(page, options, frames = 6) {
     }));
     await turning;
     return deltas;
-  }, { options, frames });
+  }, { frames });
 }
 
 test.beforeEach(async ({ page }) => { await page.addInitScript(countCalls); });
@@ -115,6 +118,25 @@ test('browser: a turning frame costs one call into the wasm engine and a bounded
       expect(frame.glByName.uniform1i ?? 0).toBe(0);
       expect(frame.glByName.getUniformLocation ?? 0).toBe(0);
     }
+  }
+});
+
+test('browser: the page sound (opt-in) adds one call into the engine a frame (FrameLoop.motion) once a gesture made its AudioContext, none while muted, and no WebGL call (counts)', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const options = { pages: 8, display: 'double', duration: 3000, loadWindow: 8, startPage: 1, sound: true, muted: true };
+  const waiting = await countTurningFrames(page, options);
+  expect(await page.evaluate(() => window.book.sound.state)).toBe('muted');
+  await page.evaluate(() => { window.book.muted = false; });
+  const point = await page.evaluate(() => window.halfPoint(0.75, 0.5));
+  await page.mouse.click(point.x, point.y);  // the gesture: the sound listens from now on
+  expect(await page.evaluate(() => window.book.sound.state)).toBe('running');
+  const playing = await countTurningFrames(page, null);
+  console.log(`frame cost with sound: JS->wasm calls per frame ${waiting.map((f) => f.wasm).join(' ')} muted, `
+    + `${playing.map((f) => f.wasm).join(' ')} after; WebGL calls ${playing.map((f) => f.gl).join(' ')}`);
+  for (const frame of waiting) expect(frame.wasm).toBe(1);
+  for (const frame of playing) {
+    expect(frame.wasm).toBe(2);
+    expect(frame.gl).toBeLessThanOrEqual(MAX_GL_CALLS_PER_TURNING_FRAME);
   }
 });
 

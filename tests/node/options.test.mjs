@@ -34,6 +34,8 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     fallback: 'true or false',
     hash: 'true or false',
     autoplay: 'true, false or { interval: milliseconds, loop: true or false }',
+    sound: 'true or false',
+    muted: 'true or false',
     rememberPage: 'a non-empty string (the key it is kept under)',
     antialias: "'auto', true or false",
     on: 'an object of listeners by event name (ready, progress, pageerror, turnstart, turned, turncancel, resize, zoom, sharpened, link, error)',
@@ -55,6 +57,8 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     fallback: ['no', 0, NaN],
     hash: ['true', 1, null],
     autoplay: ['yes', 3000, null, { interval: 0 }, { interval: NaN }, { loop: 'yes' }, { speed: 2 }],
+    sound: ['on', 1, null, NaN],
+    muted: ['true', 0, undefined],
     rememberPage: ['', '  ', 3, null, true],
     antialias: ['AUTO', 'on', 1, null, NaN],
     on: [null, [], () => {}, { turnd: () => {} }, { turned: 'log' }, { ready: null }],
@@ -103,7 +107,7 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses(null, 'options must be an object, got null');
   refuses('pages', 'options must be an object, got "pages"');
   refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, direction, startPage, duration, schedule, center, hardCovers, "
-    + 'lighting, shadows, gutter, loadWindow, wasmUrl, label, fallback, hash, autoplay, rememberPage, antialias, turnArea, on)');
+    + 'lighting, shadows, gutter, loadWindow, wasmUrl, label, fallback, hash, autoplay, sound, muted, rememberPage, antialias, turnArea, on)');
   refuses({ pages, antialias: 'yes' }, "option 'antialias' must be 'auto', true or false, got \"yes\"");
   refuses({ pages, startPage: 3 }, "option 'startPage' must be below the page count 3, got 3");
   // A value whose own toString throws or is huge is described, not called.
@@ -113,11 +117,13 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses({ pages, display: 'x'.repeat(500) }, `option 'display' must be 'single', 'double' or 'auto', got "${'x'.repeat(57)}..."`);
 });
 
-test('node: setOptions takes only lighting, shadows, gutter and display, checked; flip options are { animate: boolean }', () => {
+test('node: setOptions takes only lighting, shadows, gutter, display, sound and muted, checked; flip options are { animate: boolean }', () => {
   assert.deepEqual(checkLiveOptions({ lighting: false }, pages), { lighting: false });
   assert.deepEqual(checkLiveOptions({ display: 'single' }, pages), { display: 'single' });
   assert.throws(() => checkLiveOptions({ display: 'triple' }, pages), /option 'display' must be 'single', 'double' or 'auto'/);
-  assert.throws(() => checkLiveOptions({ direction: 'rtl' }, pages), /option 'direction' cannot change on a live book \(only lighting, shadows, gutter, display\)/);
+  assert.throws(() => checkLiveOptions({ direction: 'rtl' }, pages), /option 'direction' cannot change on a live book \(only lighting, shadows, gutter, display, sound, muted\)/);
+  assert.deepEqual(checkLiveOptions({ sound: true, muted: true }, pages), { sound: true, muted: true });
+  assert.throws(() => checkLiveOptions({ muted: 'yes' }, pages), /option 'muted' must be true or false, got "yes"/);
   assert.throws(() => checkLiveOptions({ shadows: NaN }, pages), /option 'shadows' must be true or false, got NaN/);
   assert.throws(() => checkLiveOptions(undefined, pages), /options must be an object, got undefined/);
   assert.deepEqual(checkFlipOptions(undefined), { animate: true });

@@ -7,6 +7,7 @@
 // the work behind them is in the modules it imports.
 import { followPage, openingPage } from './page-memory.js';
 import { autoplaySettings, startAutoplay } from './autoplay.js';
+import { startPageSound } from './page-sound.js';
 import { createShell } from './book-shell.js';
 import { BookEvents } from './book-events.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
@@ -86,6 +87,11 @@ export class BookController extends EventTarget {
     const { pageAspect, ...options } = this._settings;  // pageAspect: the PDF's page shape, not an option
     return Object.freeze(options);
   }
+  /** The page sound is muted (the `muted` option, live); the sound itself is the `sound` option. */
+  get muted() { return this._settings.muted; }
+  set muted(value) { this.setOptions({ muted: value }); }
+  /** What the page sound is doing: { state, gain, target, speed, taps } (page-sound.js), for tools and tests. */
+  get sound() { return this._sound?.status ?? null; }
   /** Where the open pages lie on the canvas, in CSS pixels (both places of a spread in double). */
   restingRect() { return this._surface.restingRect(); }
   /** The leaves lying open at the settled position: { page (-1: a blank back), x, y, width, height } in CSS px. */
@@ -167,6 +173,7 @@ export class BookController extends EventTarget {
     const { lighting, shadows, gutter } = this._settings;
     this._surface.setOptions({ lighting, shadows, gutter });
     if ('display' in options) this._relayout();
+    this._sound.update();
   }
 
   destroy() {
@@ -185,6 +192,7 @@ export class BookController extends EventTarget {
     this._stopWatchingSize?.();
     this._stopFollowingPage?.();
     this._stopAutoplay?.();
+    this._sound?.stop();
     clearTimeout(this._refitTimer);
     this._surface?.destroy({ releaseContext: true });  // the canvas goes: give its WebGL context up now
     this._surface = null;
@@ -219,6 +227,7 @@ export class BookController extends EventTarget {
     this._stopFollowingPage = followPage(this, this._settings);  // #page=N and the remembered page
     const autoplay = autoplaySettings(this._settings.autoplay);
     if (autoplay) this._stopAutoplay = startAutoplay(this, this._shell.root, autoplay);
+    this._sound = startPageSound(this, this._shell.root, { animates: () => this._animates() });
     await this.whenIdle();
     this._emit('ready', { page: this.page });
   }

@@ -101,6 +101,11 @@ export class BookView {
   sizeChanged(): void;
   /** Called after a frame whose pages on screen changed (a leaf lifted or landed). */
   onPagesChanged: (() => void) | null;
+  /**
+   * Told after each frame how the leaves moved (FrameLoop.motion: a second call into the engine a frame,
+   * made only while this is set; the page sound sets it). Null by default.
+   */
+  onMotion: ((motion: import('./engine.js').LeafMotion) => void) | null;
   /** True: textures are copies, so an ImageBitmap given to setPageImage may be closed once set. */
   readonly copiesImages: boolean;
   /** Called after a lost context is restored with the pages whose ImageBitmap was closed: set them again. */

@@ -62,6 +62,8 @@ export class BookView {
     /** Called after a frame whose pages on screen changed (a leaf lifted or landed): residency follows. */
     this.onPagesChanged = null;
     this.onImagesLost = null;  // (pages) after a context restore, for pages whose image was closed
+    /** Told each frame how the leaves moved ({ speed, hard, landings, landedHard }): set only by a page sound. */
+    this.onMotion = null;
     /** The book's share of the page's WebGL contexts (context-budget.js), told when the view wants to draw. */
     this.contextLease = null;
     this._uploads = [];          // page images waiting for a frame while leaves move: one a frame
@@ -315,6 +317,7 @@ export class BookView {
     const gl = releaseContext ? this.canvas.getContext('webgl2') : null;
     this.onPagesChanged = null;
     this.onImagesLost = null;
+    this.onMotion = null;
     this._loop.delete();  // it points at the book and the renderer: it goes first
     this.renderer.delete();
     this.book.delete();
@@ -356,6 +359,7 @@ export class BookView {
     if (!this._lost) this._fitIfStale();
     const flags = this._loop.tick(now, !this._lost);
     this._moving = Boolean(flags & this._ticks.moving);
+    if (this.onMotion) this.onMotion(this._loop.motion());  // a second call into the engine, only with sound on
     // Pages that arrived while leaves move: one a frame (shown from the next); all at once at rest.
     if (this._uploads.length > 0) this._uploadNext();
     while (!this._moving && this._uploads.length > 0) this._uploadNext();

@@ -50,6 +50,8 @@ export const ATTRIBUTES = {
   'load-window': ['loadWindow', parseNumber],
   hash: ['hash', parseBoolean],
   autoplay: ['autoplay', parseAutoplay],
+  sound: ['sound', parseBoolean],
+  muted: ['muted', parseBoolean],
   'remember-page': ['rememberPage', parseText],
   'wasm-url': ['wasmUrl', parseText],
   antialias: ['antialias', parseAntialias],

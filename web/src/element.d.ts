@@ -56,6 +56,8 @@ export class ConeFlipbookElement extends HTMLElement {
   loadWindow: number | undefined;
   hash: boolean | undefined;
   autoplay: boolean | { interval: number } | undefined;
+  sound: boolean | undefined;
+  muted: boolean | undefined;
   rememberPage: string | undefined;
   wasmUrl: string | undefined;
   pdfWorkerSrc: string | undefined;

@@ -98,6 +98,18 @@ export interface Book {
   delete(): void;
 }
 
+/** How the leaves moved in a frame loop's last tick. */
+export interface LeafMotion {
+  /** |d rho / dt| of the fastest leaf in flight since the previous tick, rad/s (a leaf counts from its second tick in flight). */
+  speed: number;
+  /** That leaf turns rigidly (a hard page). */
+  hard: boolean;
+  /** Leaves that landed (or fell back flat) in the tick. */
+  landings: number;
+  /** One of them is a hard leaf. */
+  landedHard: boolean;
+}
+
 /**
  * A book's frame loop: one call per animation frame advances the clock (capped at 0.25 s a frame),
  * starts turns waiting for a leaf in flight, composes the frame and draws it. Delete it before the
@@ -120,6 +132,8 @@ export interface FrameLoop {
   running(): boolean;
   /** The next tick advances nothing (after frames were paused). */
   forgetLastTick(): void;
+  /** How the leaves moved in the last tick (a second call a frame: BookView makes it only for a page sound). */
+  motion(): LeafMotion;
   delete(): void;
 }
 

@@ -81,6 +81,15 @@ export interface FlipbookOptions {
    */
   autoplay?: boolean | { interval?: number; loop?: boolean };
   /**
+   * A page sound, synthesised with Web Audio (no audio files): a paper rustle whose loudness and
+   * brightness follow the turning leaf's angular speed, and a soft tap as it lands; hard leaves sound
+   * heavier. Its AudioContext is made on the first user gesture on the book (or one that turns it);
+   * silent while `muted`, under prefers-reduced-motion and on still pages. Default false; live.
+   */
+  sound?: boolean;
+  /** Silences the page sound (no AudioContext is made while muted). Default false; live, and `book.muted`. */
+  muted?: boolean;
+  /**
    * The curl's schedule: 'paper' (default; the paper's three phases, Nuon's constants exactly) or
    * 'smooth' (the same key poses joined with continuous slopes: no jolt at t = 0.15 and 0.4).
    */
@@ -176,6 +185,23 @@ export interface FlipbookEventMap {
   error: CustomEvent<{ error: FlipbookCreateError }>;
 }
 
+/** What the page sound (the `sound` option) is doing. */
+export interface PageSoundStatus {
+  /**
+   * 'off' (sound false), 'muted', 'silent' (reduced motion or still pages), 'waiting' (for a user
+   * gesture: no AudioContext yet), else the AudioContext's state: 'running', 'suspended' or 'closed'.
+   */
+  state: 'off' | 'muted' | 'silent' | 'waiting' | 'running' | 'suspended' | 'closed';
+  /** The rustle's gain now, as its GainNode has it (0 without an AudioContext). */
+  gain: number;
+  /** The gain the rustle is heading for, from the last frame's speed. */
+  target: number;
+  /** The fastest leaf's angular speed in the last frame heard, rad/s. */
+  speed: number;
+  /** Landing taps played so far. */
+  taps: number;
+}
+
 /** A leaf lying open at the settled position, and where it lies on the canvas (CSS px from its top-left). */
 export interface PagePlace {
   /** The page it shows; -1 for a leaf's blank back. */
@@ -250,8 +276,12 @@ export class BookController extends EventTarget {
    * takes over: an animated flip still under way stops turning and resolves.
    */
   flip(index: number, options?: { animate?: boolean }): Promise<void>;
-  /** Switches the effects or the display on a live book (same page); any other option is a TypeError (it needs a new book). */
-  setOptions(options: Pick<FlipbookOptions, 'lighting' | 'shadows' | 'gutter' | 'display'>): void;
+  /** Switches the effects, the display or the sound on a live book (same page); any other option is a TypeError (it needs a new book). */
+  setOptions(options: Pick<FlipbookOptions, 'lighting' | 'shadows' | 'gutter' | 'display' | 'sound' | 'muted'>): void;
+  /** The page sound is muted (the `muted` option); setting it is setOptions({ muted }) (TypeError unless a boolean). */
+  muted: boolean;
+  /** What the page sound is doing, a snapshot for tools and tests; null after destroy(). */
+  readonly sound: PageSoundStatus | null;
   /**
    * Stops everything at once, mid-turn or mid-drag too: no animation frame, listener, observer, GL
    * object or wasm object is left, the WebGL context is released, page loads are aborted. Turns in

@@ -28,6 +28,8 @@ const OPTION_CHECKS = {
     && (v.interval === undefined || (Number.isFinite(v.interval) && v.interval > 0))
     && (v.loop === undefined || typeof v.loop === 'boolean'))
     || 'true, false or { interval: milliseconds, loop: true or false }',
+  sound: BOOLEAN,
+  muted: BOOLEAN,
   rememberPage: (v) => (typeof v === 'string' && v.trim() !== '') || 'a non-empty string (the key it is kept under)',
   antialias: (v) => typeof v === 'boolean' || v === 'auto' || "'auto', true or false",
   turnArea: (v) => TURN_AREAS.includes(v) || TURN_AREAS.map((a) => `'${a}'`).join(', ').replace(/, ([^,]*)$/, ' or $1'),
@@ -39,10 +41,10 @@ export const OPTION_NAMES = Object.keys(OPTION_CHECKS);
 export const DEFAULTS = {
   display: 'auto', direction: 'ltr', startPage: 0, duration: 1000, schedule: 'paper', center: true, hardCovers: false,
   lighting: true, shadows: true, gutter: true, loadWindow: 4, label: 'Book', fallback: true, hash: false, autoplay: false,
-  antialias: 'auto',
+  sound: false, muted: false, antialias: 'auto',
 };
 /** Options a live book takes through setOptions(); the others need a new book. */
-export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter', 'display'];
+export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter', 'display', 'sound', 'muted'];
 const PAGE_ENTRY_KEYS = ['src', 'html', 'alt', 'hard', 'zoomSrc', 'links'];
 const PAGE_SOURCES = 'a URL string, HTMLImageElement, HTMLCanvasElement, ImageBitmap, Blob, '
   + 'a function returning one of these (or a Promise of one), or an HTML element (an HTML page)';
