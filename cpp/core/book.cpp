@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "cone_deform.hpp"
 
@@ -253,6 +254,14 @@ void Book::setDisplay(Display display) {
     if (display == config_.display) return;
     const int page = std::max(0, firstVisiblePage());
     config_.display = display;
+    jumpTo(positionOfPage(page));
+}
+
+void Book::setPages(int pageCount, std::vector<bool> hardPages) {
+    const int page = std::max(0, firstVisiblePage());
+    config_.pageCount = std::max(0, pageCount);
+    config_.hardPages = std::move(hardPages);
+    if (static_cast<int>(config_.hardPages.size()) > config_.pageCount) config_.hardPages.resize(config_.pageCount);
     jumpTo(positionOfPage(page));
 }
 

@@ -9,7 +9,7 @@ export const OPTION_PROPS = [...OPTION_NAMES.filter((name) => name !== 'startPag
 /** Props a change of which builds a new book at the page shown; LIVE_OPTIONS go to the running book (setOptions). */
 export const FIXED_PROPS = OPTION_PROPS.filter((name) => !LIVE_OPTIONS.includes(name) && name !== 'pages');
 
-const HANDLER_WORDS = { pageerror: 'PageError', turnstart: 'TurnStart', turncancel: 'TurnCancel' };
+const HANDLER_WORDS = { pageerror: 'PageError', turnstart: 'TurnStart', turncancel: 'TurnCancel', pageschange: 'PagesChange' };
 /** 'turned' -> 'onTurned', 'pageerror' -> 'onPageError', ... for every book event. */
 export const EVENT_HANDLERS = Object.fromEntries(BOOK_EVENTS.map((type) => [
   type, `on${HANDLER_WORDS[type] ?? type[0].toUpperCase() + type.slice(1)}`,
