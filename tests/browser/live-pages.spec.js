@@ -208,3 +208,29 @@ test('browser: with hash: true, pages inserted before the open page rewrite #pag
   expect(result).toEqual({ page: 4, hash: '#page=5', newEntries: 0 });
   expect(problems).toEqual([]);
 });
+
+test('browser: a PDF book refuses insertPages, removePages and replacePage with an Error saying its pages are its PDF\'s', async ({ page }) => {
+  const { PDFDocument } = await import('pdf-lib');
+  const pdf = await PDFDocument.create();
+  pdf.addPage([300, 400]);
+  pdf.addPage([300, 400]);
+  const base64 = Buffer.from(await pdf.save()).toString('base64');
+  const problems = await openReady(page, '/tests/browser/fixtures/pdf-fixture.html');
+  const result = await page.evaluate(async (bytes) => {
+    window.book = await window.Flipbook.create(window.container, { pdf: window.bytesFromBase64(bytes) });
+    const said = (promise) => promise.then(() => 'resolved', (e) => `${e.name}: ${e.message}`);
+    return [
+      await said(window.book.insertPages(0, ['a.png'])),
+      await said(window.book.removePages(0)),
+      await said(window.book.replacePage(0, 'a.png')),
+      window.book.pageCount,
+    ];
+  }, base64);
+  expect(result).toEqual([
+    "Error: conecurl: insertPages: a PDF book's pages are its PDF's; they cannot change on a live book",
+    "Error: conecurl: removePages: a PDF book's pages are its PDF's; they cannot change on a live book",
+    "Error: conecurl: replacePage: a PDF book's pages are its PDF's; they cannot change on a live book",
+    2,
+  ]);
+  expect(problems).toEqual([]);
+});

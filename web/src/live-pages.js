@@ -27,6 +27,7 @@ export class LivePages {
 
   /** Removes `count` pages from page `from` on. */
   remove(from, count) {
+    this._changeable('removePages');
     this._whole('removePages', 'from', from);
     this._whole('removePages', 'count', count);
     return this._enqueue([], () => {
@@ -42,6 +43,7 @@ export class LivePages {
 
   /** Puts `page` in the place of page `index`. */
   replace(index, page) {
+    this._changeable('replacePage');
     this._whole('replacePage', 'index', index);
     const [entry] = this._entries('replacePage', [page], 'page', this._count());
     return this._enqueue([entry], (HtmlPages) => {
@@ -60,9 +62,13 @@ export class LivePages {
 
   // Checked page entries for a method: each page as the options check it (links to pages below
   // `pageCount`), none an HTML element shown already.
-  _entries(method, pages, name, pageCount) {
+  _changeable(method) {
     this._book.alive();
     if (this._book.pdf()) throw new Error(`conecurl: ${method}: a PDF book's pages are its PDF's; they cannot change on a live book`);
+  }
+
+  _entries(method, pages, name, pageCount) {
+    this._changeable(method);
     if (name === 'pages' && !(Array.isArray(pages) && pages.length > 0)) {
       throw new TypeError(`conecurl: ${method} pages must be a non-empty array of page sources, got ${describeValue(pages)}`);
     }
