@@ -93,7 +93,7 @@ async function openApp(page, app) {
 // Waits until the book's state (through the app's window hooks) says `predicate`.
 const waitFor = (page, predicate, arg) => page.waitForFunction(predicate, arg, { timeout: 10_000 });
 
-test('browser (React): a controlled <Flipbook> under StrictMode is one book on one canvas; useFlipbook controls elsewhere turn it, page and display props apply live, children are its pages', async ({ page }) => {
+test('browser (React): a controlled <Flipbook> under StrictMode is one book on one canvas; useFlipbook controls elsewhere turn it, page, pages and display props apply live, children are its pages', async ({ page }) => {
   const problems = await openApp(page, 'react-app');
   const book = page.locator('#book');
   expect(await book.locator('canvas').count()).toBe(1);  // StrictMode mounted it twice: one book left
@@ -184,7 +184,7 @@ test('browser (React): 50 StrictMode mounts and unmounts leave no canvas, no liv
   expect(problems).toEqual([]);
 });
 
-test('browser (Vue): v-model:page and display apply live on one canvas, the exposed next() turns, and the default slot holds the pages', async ({ page }) => {
+test('browser (Vue): v-model:page, pages and display apply live on one canvas, the exposed next() turns, and the default slot holds the pages', async ({ page }) => {
   const problems = await openApp(page, 'vue-app');
   const book = page.locator('#book');
   expect(await book.locator('canvas').count()).toBe(1);
