@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "book.hpp"
 #include "book_camera.hpp"
@@ -27,6 +28,30 @@ double positiveNumber(const val& options, const char* name, double fallback) {
     return number;
 }
 
+int pageCountOf(const val& count) {
+    if (!count.isNumber() || count.as<double>() < 0 || count.as<double>() != std::floor(count.as<double>()) ||
+        count.as<double>() > 1e6) {
+        js::throwError("TypeError", "pageCount must be a whole number from 0 to 1000000");
+    }
+    return count.as<int>();
+}
+
+// hardPages: [page indices], each below pageCount; as Book's per-page flags.
+std::vector<bool> hardPagesOf(const val& hard, int pageCount) {
+    if (!val::global("Array").call<bool>("isArray", hard)) js::throwError("TypeError", "hardPages must be an array of page indices");
+    std::vector<bool> flags(static_cast<size_t>(pageCount), false);
+    const int length = hard["length"].as<int>();
+    for (int i = 0; i < length; ++i) {
+        const val page = hard[i];
+        const double index = page.isNumber() ? page.as<double>() : -1.0;
+        if (index < 0 || index >= pageCount || index != std::floor(index)) {
+            js::throwError("TypeError", "hardPages[" + js::digits(i) + "] is not a page index");
+        }
+        flags[static_cast<size_t>(index)] = true;
+    }
+    return flags;
+}
+
 // { pageCount, display: 'single'|'double', binding: 'left'|'right'|'top', pageWidth, pageHeight,
 //   turnSeconds, hardPages: [page indices], schedule: 'paper'|'smooth', center: boolean }
 Book createBook(val options) {
@@ -34,12 +59,7 @@ Book createBook(val options) {
         js::throwError("TypeError", "book options must be an object");
     }
     BookConfig config;
-    const val count = options["pageCount"];
-    if (!count.isNumber() || count.as<double>() < 0 || count.as<double>() != std::floor(count.as<double>()) ||
-        count.as<double>() > 1e6) {
-        js::throwError("TypeError", "pageCount must be a whole number from 0 to 1000000");
-    }
-    config.pageCount = count.as<int>();
+    config.pageCount = pageCountOf(options["pageCount"]);
     const val display = options["display"];
     if (!display.isUndefined()) {
         const std::string name = display.isString() ? display.as<std::string>() : "";
@@ -65,20 +85,14 @@ Book createBook(val options) {
         config.center = center.isTrue();
     }
     const val hard = options["hardPages"];
-    if (!hard.isUndefined()) {
-        if (!val::global("Array").call<bool>("isArray", hard)) js::throwError("TypeError", "hardPages must be an array of page indices");
-        config.hardPages.assign(static_cast<size_t>(config.pageCount), false);
-        const int length = hard["length"].as<int>();
-        for (int i = 0; i < length; ++i) {
-            const val page = hard[i];
-            const double index = page.isNumber() ? page.as<double>() : -1.0;
-            if (index < 0 || index >= config.pageCount || index != std::floor(index)) {
-                js::throwError("TypeError", "hardPages[" + js::digits(i) + "] is not a page index");
-            }
-            config.hardPages[static_cast<size_t>(index)] = true;
-        }
-    }
+    if (!hard.isUndefined()) config.hardPages = hardPagesOf(hard, config.pageCount);
     return Book(config);
+}
+
+// setPages(pageCount, hardPages?): the pages of a live book changed (Book::setPages).
+void setPages(Book& book, val count, val hard) {
+    const int pageCount = pageCountOf(count);
+    book.setPages(pageCount, hard.isUndefined() ? std::vector<bool>{} : hardPagesOf(hard, pageCount));
 }
 
 bool startTurn(Book& book, val directionValue) {
@@ -288,6 +302,7 @@ EMSCRIPTEN_BINDINGS(conecurl_book) {
         .function("riffleTo", optional_override([](Book& b, val position) {
                       return b.riffleTo(js::wholeNumber(position, "position", 0, b.lastPosition()));
                   }))
+        .function("setPages", &setPages)
         .function("jumpTo", optional_override([](Book& b, val position) {
                       b.jumpTo(js::wholeNumber(position, "position", 0, b.lastPosition()));
                   }));

@@ -97,6 +97,10 @@ EMSCRIPTEN_BINDINGS(conecurl_renderer) {
         .function("releasePageImage", optional_override([](BookRenderer& r, val page) {
                       r.releasePageImage(js::wholeNumber(page, "page", 0, 1e6));
                   }))
+        .function("splicePageImages", optional_override([](BookRenderer& r, val at, val removed, val inserted) {
+                      r.splicePageImages(js::wholeNumber(at, "at", 0, 1e6), js::wholeNumber(removed, "removed", 0, 1e6),
+                                         js::wholeNumber(inserted, "inserted", 0, 1e6));
+                  }))
         .function("hasPageImage", optional_override([](BookRenderer& r, val page) {
                       return r.hasPageImage(js::wholeNumber(page, "page", 0, 1e6));
                   }))

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "cone_deform.hpp"
 
@@ -310,6 +311,14 @@ double Book::settledCenterShift() const {
     const double turnedSide = position_ > 0 ? 1.0 : 0.0;
     const double unturnedSide = position_ < leafCount() ? 1.0 : 0.0;
     return 0.5 * config_.pageWidth * (unturnedSide - turnedSide);
+}
+
+void Book::setPages(int pageCount, std::vector<bool> hardPages) {
+    const int page = std::max(0, firstVisiblePage());
+    config_.pageCount = std::max(0, pageCount);
+    config_.hardPages = std::move(hardPages);
+    if (static_cast<int>(config_.hardPages.size()) > config_.pageCount) config_.hardPages.resize(config_.pageCount);
+    jumpTo(positionOfPage(page));
 }
 
 LeafDraw Book::restingLeaf(int leaf, bool turned) const {

@@ -96,6 +96,11 @@ public:
     // Shows one page or two from now on, keeping the first visible page in view; turns in flight land
     // at once. Pages keep their indices, so whatever the renderer holds for them stays valid.
     void setDisplay(Display display);
+    // The pages changed on a live book (pages inserted, removed or replaced): `pageCount` pages, hard as
+    // `hardPages` says (by index; pages past its end are soft). Turns in flight land at once and the
+    // first visible page's index stays in view, clamped to the book, as setDisplay keeps it; the caller
+    // jumps on to where the page it follows went.
+    void setPages(int pageCount, std::vector<bool> hardPages);
 
     // Held turns follow a pointer: the pose is set from outside (see page_drag.hpp) until the turn
     // is let go. At most one is held; starting one fails where startTurn would, or while one is held.

@@ -307,6 +307,17 @@ void BookRenderer::releasePageImage(int page) {
     pageTextures_.erase(found);
 }
 
+void BookRenderer::splicePageImages(int at, int removed, int inserted) {
+    std::vector<int> gone;  // the pages held, not every index removed: a million removed costs no more
+    for (const auto& entry : pageTextures_) {
+        if (entry.first >= at && entry.first < at + removed) gone.push_back(entry.first);
+    }
+    for (int page : gone) releasePageImage(page);
+    for (auto& entry : pageTextures_) {
+        if (entry.first >= at + removed) entry.first += inserted - removed;
+    }
+}
+
 BookRenderer::PageTextures::const_iterator BookRenderer::findTexture(int page) const {
     return std::find_if(pageTextures_.begin(), pageTextures_.end(), [page](const auto& entry) { return entry.first == page; });
 }

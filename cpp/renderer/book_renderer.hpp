@@ -63,6 +63,10 @@ public:
     static constexpr const char* kTaintedSource = "tainted";
     std::string setPageImage(int page, int width, int height, JsHandle source);
     void releasePageImage(int page);
+    // The book's pages were spliced: `removed` pages at `at` went (their textures are released) and
+    // `inserted` pages came in their place, so textures of later pages move to their new indices (no
+    // upload: the same texture objects, renumbered).
+    void splicePageImages(int at, int removed, int inserted);
     bool hasPageImage(int page) const { return findTexture(page) != pageTextures_.end(); }
     int residentPageImages() const { return static_cast<int>(pageTextures_.size()); }
 

@@ -93,7 +93,7 @@ async function openApp(page, app) {
 // Waits until the book's state (through the app's window hooks) says `predicate`.
 const waitFor = (page, predicate, arg) => page.waitForFunction(predicate, arg, { timeout: 10_000 });
 
-test('browser (React): a controlled <Flipbook> under StrictMode is one book on one canvas; useFlipbook controls elsewhere turn it, page and display props apply live, children are its pages', async ({ page }) => {
+test('browser (React): a controlled <Flipbook> under StrictMode is one book on one canvas; useFlipbook controls elsewhere turn it, page, pages and display props apply live, children are its pages', async ({ page }) => {
   const problems = await openApp(page, 'react-app');
   const book = page.locator('#book');
   expect(await book.locator('canvas').count()).toBe(1);  // StrictMode mounted it twice: one book left
@@ -119,12 +119,24 @@ test('browser (React): a controlled <Flipbook> under StrictMode is one book on o
   expect(shownPages(await pageShares(book))).toEqual([4]);
   expect(await page.evaluate(() => window.events.filter(([type]) => type === 'ready').length)).toBe(1);
 
-  // Pages replaced by a longer list: a new book in the same box, at the page shown.
+  // Pages replaced by a longer list: the same book and canvas, a page inserted live; then one inserted
+  // before the page shown, which moves the page prop on with it.
   await page.evaluate(() => window.app.setPages([...window.app.pages, 'pages/page-1.svg']));
   await waitFor(page, () => window.app.flipbook.ready && window.app.flipbook.pageCount === 7);
   expect(await page.evaluate(() => window.app.flipbook.page)).toBe(4);
   expect(shownPages(await pageShares(book))).toEqual([4]);
-  expect(await book.locator('canvas').count()).toBe(1);
+  await page.evaluate(() => window.app.setPages(['pages/page-5.svg', ...window.app.pages, 'pages/page-1.svg']));
+  await waitFor(page, () => window.app.flipbook.pageCount === 8 && window.app.page === 5);
+  expect(shownPages(await pageShares(book))).toEqual([4]);  // the same page, now page 5
+  expect(await page.evaluate(() => ({
+    sameCanvas: document.querySelector('#book canvas') === window.firstCanvas,
+    ready: window.events.filter(([type]) => type === 'ready').length,
+    changes: window.events.filter(([type]) => type === 'pageschange').map(([, detail]) => detail),
+  }))).toEqual({
+    sameCanvas: true,
+    ready: 1,
+    changes: [{ change: 'insert', at: 6, count: 1, pageCount: 7, page: 4 }, { change: 'insert', at: 0, count: 1, pageCount: 8, page: 5 }],
+  });
 
   // Children: an <img>, an HTML <section> (React keeps rendering it), an <img>.
   const children = page.locator('#children-book');
@@ -172,7 +184,7 @@ test('browser (React): 50 StrictMode mounts and unmounts leave no canvas, no liv
   expect(problems).toEqual([]);
 });
 
-test('browser (Vue): v-model:page and display apply live on one canvas, the exposed next() turns, and the default slot holds the pages', async ({ page }) => {
+test('browser (Vue): v-model:page, pages and display apply live on one canvas, the exposed next() turns, and the default slot holds the pages', async ({ page }) => {
   const problems = await openApp(page, 'vue-app');
   const book = page.locator('#book');
   expect(await book.locator('canvas').count()).toBe(1);
@@ -192,6 +204,15 @@ test('browser (Vue): v-model:page and display apply live on one canvas, the expo
   await page.evaluate(() => { window.app.display.value = 'single'; });
   await waitFor(page, () => window.app.book.value.display === 'single');
   expect(await page.evaluate(() => document.querySelector('#book canvas') === window.firstCanvas)).toBe(true);
+
+  // A page inserted before the page shown: the same book, v-model:page follows the page to its new index.
+  await page.evaluate(() => { window.app.pages.value = ['pages/page-5.svg', ...window.app.pages.value]; });
+  await waitFor(page, () => window.app.book.value.pageCount === 7 && window.app.page.value === 1);
+  expect(await page.evaluate(() => ({
+    sameCanvas: document.querySelector('#book canvas') === window.firstCanvas,
+    ready: window.events.filter(([type]) => type === 'ready').length,
+    changes: window.events.filter(([type]) => type === 'pageschange').map(([, detail]) => detail),
+  }))).toEqual({ sameCanvas: true, ready: 1, changes: [{ change: 'insert', at: 0, count: 1, pageCount: 7, page: 1 }] });
 
   const children = page.locator('#children-book');
   expect(shownPages(await pageShares(children))).toEqual([0]);

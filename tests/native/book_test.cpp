@@ -1134,4 +1134,47 @@ TEST(Book, SetDisplayKeepsTheFirstVisiblePageInViewBothWaysAndLandsTurnsInFlight
     EXPECT_EQ(empty.position(), 0);
 }
 
+TEST(BookSetPages, NativeNewPageCountLandsTurnsKeepsTheFirstVisiblePageIndexAndClampsIt) {
+    BookConfig config;
+    config.pageCount = 10;
+    Book book(config);
+    book.jumpTo(3);  // pages 5 and 6 open
+    ASSERT_TRUE(book.startTurn(conecurl::TurnDirection::Forward));
+    book.setPages(14, {});
+    EXPECT_FALSE(book.animating());
+    EXPECT_EQ(book.config().pageCount, 14);
+    EXPECT_EQ(book.leafCount(), 7);
+    EXPECT_EQ(book.lastPosition(), 7);
+    EXPECT_EQ(book.firstVisiblePage(), 7);  // the turn landed on pages 7, 8: page 7 stays in view
+    book.jumpTo(book.positionOfPage(11));
+    EXPECT_EQ(book.firstVisiblePage(), 11);
+    book.setPages(4, {});                   // page 11 is gone: the last spread of the shorter book
+    EXPECT_EQ(book.position(), 2);
+    EXPECT_EQ(book.firstVisiblePage(), 3);
+    EXPECT_EQ(book.frame().count, 1);       // leaf 1 turned (pages 2, 3); no unturned leaf left
+}
+
+TEST(BookSetPages, NativeHardPagesFollowTheNewListAndAreCutToThePageCount) {
+    BookConfig config;
+    config.pageCount = 6;
+    config.hardPages = {true, false, false, false, false, true};
+    Book book(config);
+    EXPECT_TRUE(book.isHardLeaf(0));
+    EXPECT_TRUE(book.isHardLeaf(2));
+    book.setPages(8, {false, false, true, false, false, false, false, true, true, true});
+    EXPECT_FALSE(book.isHardLeaf(0));
+    EXPECT_TRUE(book.isHardLeaf(1));   // page 2
+    EXPECT_FALSE(book.isHardLeaf(2));
+    EXPECT_TRUE(book.isHardLeaf(3));   // page 7
+    EXPECT_EQ(book.config().hardPages.size(), 8u);  // entries past the page count are dropped
+    Book single(BookConfig{3, Display::Single});
+    single.jumpTo(2);
+    single.setPages(1, {});
+    EXPECT_EQ(single.position(), 0);
+    EXPECT_EQ(single.firstVisiblePage(), 0);
+    single.setPages(0, {});
+    EXPECT_EQ(single.firstVisiblePage(), kNoPage);
+    EXPECT_EQ(single.frame().count, 0);
+}
+
 }  // namespace

@@ -125,3 +125,22 @@ test('node: Book.create takes schedule \'paper\' or \'smooth\' and refuses other
   assert.ok(Math.abs(mid.theta - engine.curlAtWith(0.08, paper, 1).theta) > 1e-3, 'the smooth schedule is another curve between the keys');
   assert.ok(mid.theta <= paper.thetaRest && mid.theta >= paper.thetaPhase1);
 });
+
+test('node: Book.setPages (wasm) changes the page count and hard pages of a live book, keeps the first visible page, refuses bad values', () => {
+  const book = engine.Book.create({ pageCount: 6, hardPages: [0] });
+  try {
+    book.jumpTo(2);  // pages 3 and 4
+    book.setPages(10, [4]);
+    assert.equal(book.pageCount(), 10);
+    assert.equal(book.firstVisiblePage(), 3);
+    assert.equal(book.lastPosition(), 5);
+    assert.deepEqual(book.frame().map((l) => [l.leaf, l.hard]), [[1, false], [2, true]]);
+    book.setPages(2, []);
+    assert.equal(book.firstVisiblePage(), 1);
+    assert.throws(() => book.setPages(-1, []), { name: 'TypeError', message: /pageCount/ });
+    assert.throws(() => book.setPages(3, [3]), { name: 'TypeError', message: /hardPages\[0\]/ });
+    assert.throws(() => book.setPages(3, 'cover'), { name: 'TypeError', message: /hardPages must be an array/ });
+  } finally {
+    book.delete();
+  }
+});

@@ -7,7 +7,7 @@ import { execFileSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { BOOK_EVENTS } from '../../web/src/book-events.js';
 import { DEFAULTS, LIVE_OPTIONS, OPTION_NAMES } from '../../web/src/options.js';
-import { EVENT_HANDLERS, FIXED_PROPS, OPTION_PROPS, fixedOptionsDiffer, samePages } from '../../web/src/framework-props.js';
+import { EVENT_HANDLERS, FIXED_PROPS, OPTION_PROPS, fixedOptionsDiffer, pageChanges, samePages } from '../../web/src/framework-props.js';
 
 const root = fileURLToPath(new URL('../../', import.meta.url));
 
@@ -72,7 +72,7 @@ test('node: the components take every book option as a prop and name a handler f
   assert.ok('display' in DEFAULTS);
 });
 
-test('node: pages written inline in each render are the same book; a changed page or fixed option is a new one', () => {
+test('node: pages written inline in each render are the same pages; a fixed option is a new book, changed pages are not', () => {
   assert.ok(samePages(['a.png', { src: 'b.png', alt: 'B' }], ['a.png', { src: 'b.png', alt: 'B' }]));
   assert.ok(!samePages(['a.png', { src: 'b.png', alt: 'B' }], ['a.png', { src: 'b.png', alt: 'C' }]));
   assert.ok(!samePages(['a.png'], ['a.png', 'b.png']));
@@ -81,5 +81,28 @@ test('node: pages written inline in each render are the same book; a changed pag
   assert.ok(!samePages([element], [new (class FakeElement {})()]));
   assert.ok(!fixedOptionsDiffer({ pages: ['a'], lighting: true }, { pages: ['a'], lighting: false }));
   assert.ok(fixedOptionsDiffer({ pages: ['a'], direction: 'ltr' }, { pages: ['a'], direction: 'rtl' }));
-  assert.ok(fixedOptionsDiffer({ pages: ['a'] }, { pages: ['b'] }));
+  assert.ok(!fixedOptionsDiffer({ pages: ['a'] }, { pages: ['b'] }));  // pageChanges() applies them live
+});
+
+test('node: pageChanges turns one pages prop into the next with the fewest live calls, inserting before removing', () => {
+  const inline = (alt) => ({ src: 'b.png', alt });
+  assert.deepEqual(pageChanges(['a', inline('B'), 'c'], ['a', inline('B'), 'c']), []);
+  assert.deepEqual(pageChanges(['a', 'b', 'c'], ['a', 'x', 'b', 'y', 'c']), [['insertPages', 2, ['x', 'b', 'y']], ['removePages', 1, 1]]);
+  assert.deepEqual(pageChanges(['a', 'b', 'c'], ['a', 'b', 'c', 'd', 'e']), [['insertPages', 3, ['d', 'e']]]);
+  assert.deepEqual(pageChanges(['a', 'b', 'c', 'd'], ['a', 'd']), [['removePages', 1, 2]]);
+  assert.deepEqual(pageChanges(['a', inline('B'), 'c'], ['a', inline('C'), 'c']), [['replacePage', 1, inline('C')]]);
+  assert.deepEqual(pageChanges(['a', 'b', 'c', 'd'], ['x', 'b', 'c', 'y']), [['replacePage', 0, 'x'], ['replacePage', 3, 'y']]);
+  assert.deepEqual(pageChanges(['a', 'b'], ['x']), [['insertPages', 2, ['x']], ['removePages', 0, 2]]);  // never empty between
+  assert.deepEqual(pageChanges(['a', 'b'], []), [['removePages', 0, 2]]);  // refused by the book: it keeps a page
+  // Applied in order to a list, the calls give the new list.
+  const apply = (list, changes) => changes.reduce((pages, [method, at, arg]) => {
+    const next = [...pages];
+    if (method === 'insertPages') next.splice(at, 0, ...arg);
+    if (method === 'removePages') next.splice(at, arg);
+    if (method === 'replacePage') next[at] = arg;
+    return next;
+  }, list);
+  for (const [a, b] of [[['a', 'b', 'c'], ['c', 'b', 'a']], [['a'], ['b', 'a', 'b']], [['a', 'a', 'a'], ['a', 'a']], [['p', 'q'], ['q', 'p', 'q', 'r']]]) {
+    assert.deepEqual(apply(a, pageChanges(a, b)), b, `${a} -> ${b}`);
+  }
 });

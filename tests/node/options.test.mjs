@@ -38,7 +38,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     muted: 'true or false',
     rememberPage: 'a non-empty string (the key it is kept under)',
     antialias: "'auto', true or false",
-    on: 'an object of listeners by event name (ready, progress, pageerror, turnstart, turned, turncancel, resize, zoom, sharpened, link, error)',
+    on: 'an object of listeners by event name (ready, progress, pageerror, turnstart, turned, turncancel, resize, zoom, sharpened, link, pageschange, error)',
   };
   const bad = {
     display: [NaN, 'triple', 2, null, ['double']],

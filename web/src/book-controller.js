@@ -11,6 +11,7 @@ import { startPageSound } from './page-sound.js';
 import { createShell } from './book-shell.js';
 import { BookEvents } from './book-events.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
+import { LivePages } from './live-pages.js';
 import { PageStore } from './page-store.js';
 import { createLinkLayer } from './link-layer.js';
 import { freeEdge, inTurnArea } from './turn-area.js';
@@ -33,7 +34,7 @@ export class BookController extends EventTarget {
     this._settings = settings;
     this._pdf = pdf;
     // Entries as given (a PDF's fill in their alt and links as their pages render), links in one form.
-    this._pages = pageEntries(settings.pages);
+    this._pages = pageEntries(settings.pages, { copy: !pdf });
     this._events = new BookEvents(this, settings.on);  // `on` listeners first; events of create() held
     this._destroyed = false;
     this._flips = 0;  // counts flip() calls: a later one stops an earlier one's leaf-by-leaf turning
@@ -176,6 +177,23 @@ export class BookController extends EventTarget {
     this._sound.update();
   }
 
+  /** Inserts `pages` before page `at` on the live book; resolves once applied (live-pages.js). */
+  async insertPages(at, pages) { return this._live().insert(at, pages); }
+  /** Removes `count` pages (default 1) from page `from` on; resolves once applied. */
+  async removePages(from, count = 1) { return this._live().remove(from, count); }
+  /** Puts `page` in the place of page `index`; resolves once applied. */
+  async replacePage(index, page) { return this._live().replace(index, page); }
+
+  _live() {
+    this._alive();
+    return (this._livePages ??= new LivePages({
+      entries: this._pages, store: this._store, hardCovers: this._settings.hardCovers, surface: () => this._surface,
+      html: () => this._html, attachHtml: (HtmlPages) => this._mountHtml(HtmlPages), page: () => this.page,
+      pdf: () => Boolean(this._pdf), alive: () => this._alive(), shown: () => this._showOpenPages(),
+      emit: (type, detail) => this._emit(type, detail),
+    }));
+  }
+
   destroy() {
     if (this._destroyed) return;
     if (this._surface) {
@@ -236,7 +254,10 @@ export class BookController extends EventTarget {
   // them), under the links.
   async _attachHtmlPages() {
     const { HtmlPages } = await import('./html-pages.js');
-    if (this._destroyed) return;
+    if (!this._destroyed) this._mountHtml(HtmlPages);
+  }
+
+  _mountHtml(HtmlPages) {
     this._html = new HtmlPages(this._shell.root, this._pages, {
       direction: this._settings.direction,
       turnArea: this._settings.turnArea,

@@ -5,7 +5,7 @@
 
 /** Every event a book dispatches. */
 export const BOOK_EVENTS = ['ready', 'progress', 'pageerror', 'turnstart', 'turned', 'turncancel', 'resize',
-  'zoom', 'sharpened', 'link', 'error'];
+  'zoom', 'sharpened', 'link', 'pageschange', 'error'];
 
 export class BookEvents {
   /** @param {EventTarget} target the book @param {Record<string, Function>} [on] listeners by event type */

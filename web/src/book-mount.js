@@ -1,11 +1,12 @@
 // One book kept in a container for a framework component (react.js, vue.js): built once the component
-// is mounted, given each new set of props (the live options applied to the running book, any other
-// change builds a new book at the page shown), destroyed on unmount, however often that happens
-// (StrictMode mounts twice); its events go to the handler props, its state to subscribers.
+// is mounted, given each new set of props (the live options applied to the running book, changed pages
+// inserted, removed or replaced in it, any other change builds a new book at the page shown), destroyed
+// on unmount, however often that happens (StrictMode mounts twice); its events go to the handler props,
+// its state to subscribers.
 import { Flipbook } from './flipbook.js';
 import { BOOK_EVENTS } from './book-events.js';
 import { DEFAULTS, LIVE_OPTIONS } from './options.js';
-import { clampPage, fixedOptionsDiffer, optionsOf } from './framework-props.js';
+import { clampPage, fixedOptionsDiffer, optionsOf, pageChanges, samePages } from './framework-props.js';
 
 export class BookMount {
   /**
@@ -38,10 +39,13 @@ export class BookMount {
     const before = this._props;
     this._props = props;
     if (!this._container) return;
-    if (fixedOptionsDiffer(before, props)) {
+    const pagesChanged = !samePages(before.pages, props.pages);
+    // Pages change on the running book; into or out of a PDF (no pages), or before it exists, a new one.
+    if (fixedOptionsDiffer(before, props) || (pagesChanged && !(this._book && Array.isArray(before.pages) && Array.isArray(props.pages)))) {
       this._build();
       return;
     }
+    if (pagesChanged) this._changePages(before.pages, props.pages);
     const live = {};
     for (const name of LIVE_OPTIONS) if (!Object.is(before[name], props[name])) live[name] = props[name] ?? DEFAULTS[name];
     if (this._book && Object.keys(live).length > 0) {
@@ -56,6 +60,14 @@ export class BookMount {
     if (props.page !== undefined && !Object.is(props.page, before.page) && props.page !== this._reported) {
       if (this._book) this._book.flip(clampPage(props.page, this._book.pageCount)).catch((error) => this._report(error));
       else this._page = props.page;
+    }
+  }
+
+  // Called in order, applied in order (the book queues them); a failed one leaves the pages it found.
+  _changePages(before, after) {
+    const book = this._book;
+    for (const [method, ...args] of pageChanges(before, after)) {
+      book[method](...args).catch((error) => { if (book === this._book) this._report(error); });
     }
   }
 
@@ -115,13 +127,14 @@ export class BookMount {
   }
 
   _onBookEvent(type, event) {
-    if (type === 'turned') {
+    // Pages inserted or removed before the page shown renumber it: the page prop follows.
+    if (type === 'turned' || (type === 'pageschange' && event.detail.page !== this._page)) {
       this._page = event.detail.page;
       this._reported = event.detail.page;
       this._onPageChange(event.detail.page);
     }
     this._emit(type, event);
-    if (type === 'turned' || type === 'resize' || type === 'ready') this._changed();
+    if (type === 'turned' || type === 'resize' || type === 'ready' || type === 'pageschange') this._changed();
   }
 
   _report(error) {

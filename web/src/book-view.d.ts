@@ -68,6 +68,12 @@ export class BookView {
    */
   queuePageImage(page: number, source: TexImageSource, options?: { cover?: { width: number; height: number } }): Promise<void>;
   releasePageImage(page: number): void;
+  /**
+   * The book's pages were spliced: `removed` pages at `at` gave way to `inserted` new ones, hard as
+   * `hardPages` (indices) says. Turns in flight land; the first visible page's index stays in view
+   * (clamped); removed pages' textures go, later pages keep theirs, renumbered (no upload).
+   */
+  splicePages(at: number, removed: number, inserted: number, hardPages: number[]): void;
   /** Pixel size of the page's texture as uploaded; null without one. */
   pageImageSize(page: number): { width: number; height: number } | null;
   /** The resting pages' rectangle on the canvas in CSS px from its top-left (a whole spread in double). */

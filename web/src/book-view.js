@@ -6,6 +6,7 @@
 import { loadEngine } from './engine.js';
 import { PageLoadError } from './page-loader.js';
 import { atSize, naturalSize, uploadSizeFor } from './texture-upload.js';
+import { splicePageMap, splicedPage } from './layout.js';
 
 export { uploadSizeFor };
 
@@ -254,6 +255,27 @@ export class BookView {
     this._poseFrom = null;
     this._loop.clearQueue();
     this.book.setDisplay(display);
+    this.requestRender();
+  }
+
+  /**
+   * The book's pages were spliced (insertPages, removePages): `removed` pages at `at` gave way to
+   * `inserted` new ones, hard as `hardPages` (indices) says. Turns in flight land at once and the first
+   * visible page's index stays in view (clamped); the removed pages' textures go, the others are kept
+   * and renumbered (no upload).
+   */
+  splicePages(at, removed, inserted, hardPages) {
+    this._poseFrom = null;
+    this._loop.clearQueue();
+    this.renderer.splicePageImages(at, removed, inserted);
+    this.book.setPages(this.book.pageCount() - removed + inserted, hardPages);
+    this._sources = splicePageMap(this._sources, at, removed, inserted);
+    this._uploaded = splicePageMap(this._uploaded, at, removed, inserted);
+    for (const upload of this._uploads.splice(0)) {
+      upload.page = splicedPage(upload.page, at, removed, inserted);
+      if (upload.page >= 0) this._uploads.push(upload);
+      else upload.reject(new Error('conecurl: the page was removed before its image was uploaded'));
+    }
     this.requestRender();
   }
 

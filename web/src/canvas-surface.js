@@ -58,6 +58,14 @@ export class CanvasSurface {
     this.jumpTo(this.positionOfPage(page));
   }
 
+  /** The book's pages were spliced: as BookView.splicePages (hard pages do not show on still pages). */
+  splicePages(at, removed, inserted) {
+    const page = Math.max(0, this.firstVisiblePage());
+    this._images = layout.splicePageMap(this._images, at, removed, inserted);
+    this._book.pageCount += inserted - removed;
+    this.jumpTo(this.positionOfPage(page));
+  }
+
   /** No turn frames to show: false. */
   showTurn() { return false; }
 

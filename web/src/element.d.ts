@@ -1,6 +1,6 @@
 // Types of <cone-flipbook> (element.js): the element class, its events, and its tag in
 // HTMLElementTagNameMap so document.querySelector('cone-flipbook') is typed.
-import type { Flipbook, FlipbookCreateError, FlipbookEventMap, PageEntry, PageSource } from './flipbook.js';
+import type { Flipbook, FlipbookCreateError, FlipbookEventMap, PageEntry, PagesChangeDetail, PageSource } from './flipbook.js';
 import type { StaticBook } from './static-book.js';
 
 export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' | keyof FlipbookEventMap>,
@@ -70,6 +70,10 @@ export class ConeFlipbookElement extends HTMLElement {
   next(): Promise<boolean>;
   prev(): Promise<boolean>;
   flip(index: number, options?: { animate?: boolean }): Promise<void>;
+  /** Wait for the book like whenReady(), then change its pages live (see Flipbook.insertPages). */
+  insertPages(at: number, pages: Array<PageSource | HTMLElement | PageEntry>): Promise<PagesChangeDetail>;
+  removePages(from: number, count?: number): Promise<PagesChangeDetail>;
+  replacePage(index: number, page: PageSource | HTMLElement | PageEntry): Promise<PagesChangeDetail>;
   /** Destroys the book now; the element rebuilds only when put in the document again. */
   destroy(): void;
   addEventListener<K extends keyof ConeFlipbookEventMap>(type: K,

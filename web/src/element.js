@@ -122,6 +122,10 @@ export class ConeFlipbookElement extends ElementBase {
   next() { return this.whenReady().then((book) => book.next()); }
   prev() { return this.whenReady().then((book) => book.prev()); }
   flip(index, options) { return this.whenReady().then((book) => book.flip(index, options)); }
+  // Live page changes (live-pages.js). A changed pages attribute, property or child list still builds a new book.
+  insertPages(at, pages) { return this.whenReady().then((book) => book.insertPages(at, pages)); }
+  removePages(from, count) { return this.whenReady().then((book) => book.removePages(from, count)); }
+  replacePage(index, page) { return this.whenReady().then((book) => book.replacePage(index, page)); }
 
   /** Destroys the book now; the element stays empty until it is put in the document again. */
   destroy() {

@@ -86,6 +86,11 @@ export interface Book {
   jumpTo(position: number): void;
   /** One page or two from now on, keeping the first visible page; turns in flight land. TypeError for other values. */
   setDisplay(display: 'single' | 'double'): void;
+  /**
+   * The pages of a live book changed: `pageCount` pages, hard as `hardPages` (indices) says. Turns in
+   * flight land; the first visible page's index stays in view, clamped. TypeError for bad values.
+   */
+  setPages(pageCount: number, hardPages: number[]): void;
   /** Test build only (dist/test/, never packed): undefined in the package's engine. */
   frame?(): LeafDraw[];
   /** Where the resting pages lie on a width x height drawing buffer (pixels), zoom included. */
@@ -154,6 +159,8 @@ export interface BookRenderer {
    */
   setPageImage(page: number, source: TexImageSource, width: number, height: number): void;
   releasePageImage(page: number): void;
+  /** `removed` pages at `at` gave way to `inserted`: their textures released, later pages' renumbered (no upload). */
+  splicePageImages(at: number, removed: number, inserted: number): void;
   hasPageImage(page: number): boolean;
   residentPageImages(): number;
   draw(book: Book): void;

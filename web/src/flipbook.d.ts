@@ -156,6 +156,17 @@ export interface FlipbookCreateError extends Error {
   fallbackError?: Error;
 }
 
+/** What insertPages, removePages and replacePage changed: the `pageschange` event's detail, and what they resolve with. */
+export interface PagesChangeDetail {
+  change: 'insert' | 'remove' | 'replace';
+  /** The first page inserted, removed or replaced. */
+  at: number;
+  count: number;
+  pageCount: number;
+  /** The first visible page now: the page the reader had in view, renumbered (a removed one: the page that took its place). */
+  page: number;
+}
+
 export interface FlipbookEventMap {
   ready: CustomEvent<{ page: number }>;
   /** After each page load settles: pages ready now (loaded or failed), the page count, loads still running. */
@@ -169,6 +180,11 @@ export interface FlipbookEventMap {
   link: CustomEvent<{ page: number; href: string; toPage?: number }>;
   /** An open page got a sharper texture for the zoomed view (its zoomSrc, or its function called again). */
   sharpened: CustomEvent<{ index: number; width: number }>;
+  /**
+   * Pages were inserted, removed or replaced on the live book (insertPages, removePages, replacePage):
+   * `count` pages at `at`; `pageCount` and `page` (the first visible page) as they are now.
+   */
+  pageschange: CustomEvent<PagesChangeDetail>;
   /** A dragged page was let go short of the spine and fell back: the book stays at `page`. */
   turncancel: CustomEvent<{ page: number }>;
   /**
@@ -276,6 +292,18 @@ export class BookController extends EventTarget {
    * takes over: an animated flip still under way stops turning and resolves.
    */
   flip(index: number, options?: { animate?: boolean }): Promise<void>;
+  /**
+   * Inserts `pages` (as the `pages` option takes them) before page `at` (0 to pageCount: pageCount adds
+   * them after the last) on the live book, with no rebuild. Waits for leaves in flight to land (and
+   * for changes asked before it), then applies: the page in view stays in view (renumbered), untouched
+   * pages keep their textures, `pageschange` fires. Rejects with a TypeError or RangeError naming a bad
+   * argument, and with an Error on a PDF book (its pages are the PDF's).
+   */
+  insertPages(at: number, pages: Array<PageSource | HTMLElement | PageEntry>): Promise<PagesChangeDetail>;
+  /** Removes `count` pages (default 1) from page `from` on, as insertPages applies; a book keeps at least one page. Removing the page in view shows the page that took its place. */
+  removePages(from: number, count?: number): Promise<PagesChangeDetail>;
+  /** Puts `page` in the place of page `index`, as insertPages applies; a page on screen shows its old image until the new one is ready. */
+  replacePage(index: number, page: PageSource | HTMLElement | PageEntry): Promise<PagesChangeDetail>;
   /** Switches the effects, the display or the sound on a live book (same page); any other option is a TypeError (it needs a new book). */
   setOptions(options: Pick<FlipbookOptions, 'lighting' | 'shadows' | 'gutter' | 'display' | 'sound' | 'muted'>): void;
   /** The page sound is muted (the `muted` option); setting it is setOptions({ muted }) (TypeError unless a boolean). */

@@ -4,7 +4,7 @@
 import { loadEngine } from './engine.js';
 import { BookView } from './book-view.js';
 import { BookController } from './book-controller.js';
-import { describeValue, validateOptions } from './options.js';
+import { describeValue, hardPageIndices, validateOptions } from './options.js';
 import { contextBudget } from './context-budget.js';
 import { softwareWebGL } from './software-gl.js';
 
@@ -92,8 +92,7 @@ export class Flipbook extends BookController {
 
   _makeSurface(display) {
     const settings = this._settings;
-    const hardPages = this._pages.map((p, i) => (p.hard || (settings.hardCovers
-      && (i === 0 || i === this.pageCount - 1)) ? i : -1)).filter((i) => i >= 0);
+    const hardPages = hardPageIndices(this._pages, settings.hardCovers);
     this._contextLease.admit();  // room in the page's context budget before the renderer makes one
     const view = new BookView(this._engine, this._canvas, {
       pageCount: this.pageCount,

@@ -6,10 +6,13 @@ import { LIVE_OPTIONS, OPTION_NAMES } from './options.js';
 
 /** Options a component passes through as props: startPage comes from page/defaultPage, `on` from the handlers. */
 export const OPTION_PROPS = [...OPTION_NAMES.filter((name) => name !== 'startPage' && name !== 'on'), 'pdf', 'pdfWorkerSrc'];
-/** Props a change of which builds a new book at the page shown; LIVE_OPTIONS go to the running book (setOptions). */
+/**
+ * Props a change of which builds a new book at the page shown; LIVE_OPTIONS go to the running book
+ * (setOptions), and `pages` too, as the changes pageChanges() finds.
+ */
 export const FIXED_PROPS = OPTION_PROPS.filter((name) => !LIVE_OPTIONS.includes(name) && name !== 'pages');
 
-const HANDLER_WORDS = { pageerror: 'PageError', turnstart: 'TurnStart', turncancel: 'TurnCancel' };
+const HANDLER_WORDS = { pageerror: 'PageError', turnstart: 'TurnStart', turncancel: 'TurnCancel', pageschange: 'PagesChange' };
 /** 'turned' -> 'onTurned', 'pageerror' -> 'onPageError', ... for every book event. */
 export const EVENT_HANDLERS = Object.fromEntries(BOOK_EVENTS.map((type) => [
   type, `on${HANDLER_WORDS[type] ?? type[0].toUpperCase() + type.slice(1)}`,
@@ -34,9 +37,28 @@ export function samePages(a, b) {
   return a.every((page, i) => samePage(page, b[i]));
 }
 
-/** Whether the options that need a new book differ between two sets of props. */
+/** Whether the options that need a new book differ between two sets of props (`pages` changes live). */
 export function fixedOptionsDiffer(a, b) {
-  return FIXED_PROPS.some((name) => !Object.is(a[name], b[name])) || !samePages(a.pages, b.pages);
+  return FIXED_PROPS.some((name) => !Object.is(a[name], b[name]));
+}
+
+/**
+ * The live book calls that turn page list `a` into `b`, as [method, ...arguments]: the pages both
+ * start and end with stay; between them, pages replaced one by one where the count stays, else the
+ * new ones inserted after the old ones, then the old ones removed (so the book never runs out of pages).
+ */
+export function pageChanges(a, b) {
+  let start = 0;
+  while (start < a.length && start < b.length && samePage(a[start], b[start])) start++;
+  let end = 0;
+  while (end < a.length - start && end < b.length - start && samePage(a[a.length - 1 - end], b[b.length - 1 - end])) end++;
+  const gone = a.length - start - end;
+  const come = b.length - start - end;
+  if (gone === come) {
+    return b.slice(start, start + come).flatMap((page, i) => (samePage(a[start + i], page) ? [] : [['replacePage', start + i, page]]));
+  }
+  return [...(come > 0 ? [['insertPages', start + gone, b.slice(start, start + come)]] : []),
+    ...(gone > 0 ? [['removePages', start, gone]] : [])];
 }
 
 /** The book options in a component's props (those given), `pages` included. */

@@ -56,12 +56,34 @@ export class HtmlPages {
     // A web font that arrives later changes how every page looks.
     this._fontsLoaded = () => { for (const index of this._pages.keys()) this._changed(index); };
     document.fonts?.addEventListener?.('loadingdone', this._fontsLoaded);
-    const host = root.getRootNode().host ?? null;  // <cone-flipbook>: its children stay its own, slotted
-    entries.forEach((entry, index) => {
-      if (!entry.html) return;
-      this._pages.set(index, this._mount(index, entry.html, host));
-      entry.src = (i, size) => this.snapshot(i, size);
-    });
+    this._host = root.getRootNode().host ?? null;  // <cone-flipbook>: its children stay its own, slotted
+    entries.forEach((entry, index) => this._adopt(index, entry));
+  }
+
+  /**
+   * The book's pages were spliced on the live book (live-pages.js): the removed pages' elements go back
+   * where they came from, later pages take their new indices, and `entries` (the new pages at `at`)
+   * that are HTML pages are mounted.
+   */
+  splice(at, removed, entries) {
+    for (const [index, page] of this._pages) if (index >= at && index < at + removed) this._unmount(page);
+    const shift = entries.length - removed;
+    const moved = new Map();
+    for (const [index, page] of this._pages) {
+      if (index >= at && index < at + removed) continue;
+      if (index >= at + removed) this._renumber(page, index + shift);
+      moved.set(page.index, page);
+    }
+    this._pages = moved;
+    this._dirty = new Set([...this._dirty].filter((i) => i < at || i >= at + removed).map((i) => (i < at ? i : i + shift)));
+    entries.forEach((entry, i) => this._adopt(at + i, entry));
+  }
+
+  // An HTML page entry becomes page `index`: its element is mounted, its `src` rasterises it.
+  _adopt(index, entry) {
+    if (!entry.html) return;
+    this._pages.set(index, this._mount(index, entry.html, this._host));
+    entry.src = (i, size) => this.snapshot(i, size);
   }
 
   /**
@@ -126,15 +148,25 @@ export class HtmlPages {
     this._removed = true;
     clearTimeout(this._timer);
     document.fonts?.removeEventListener?.('loadingdone', this._fontsLoaded);
-    for (const page of this._pages.values()) {
-      page.observer.disconnect();
-      for (const type of CHANGE_EVENTS) page.element.removeEventListener(type, page.onInput, true);
-      if (page.slotted) page.element.removeAttribute('slot');
-      else if (page.home.parent) page.home.parent.insertBefore(page.element, page.home.next?.parentNode === page.home.parent ? page.home.next : null);
-      else page.element.remove();
-    }
+    for (const page of this._pages.values()) this._unmount(page);
     this._pages.clear();
     this._layer.remove();
+  }
+
+  // A page leaves: its element goes back where it came from, its sheet goes.
+  _unmount(page) {
+    page.observer.disconnect();
+    for (const type of CHANGE_EVENTS) page.element.removeEventListener(type, page.onInput, true);
+    if (page.slotted) page.element.removeAttribute('slot');
+    else if (page.home.parent) page.home.parent.insertBefore(page.element, page.home.next?.parentNode === page.home.parent ? page.home.next : null);
+    else page.element.remove();
+    page.sheet.remove();
+  }
+
+  _renumber(page, index) {
+    page.index = index;
+    page.sheet.dataset.page = String(index);
+    if (page.slot) page.element.slot = page.slot.name = `conecurl-page-${index}`;
   }
 
   /** The page's content drawn at `size` device pixels: a canvas for its texture. */
@@ -180,20 +212,22 @@ export class HtmlPages {
     sheet.append(content);
     const home = { parent: element.parentNode, next: element.nextSibling };
     const slotted = host !== null && element.parentNode === host;
+    let slot = null;
     if (slotted) {
       // A child of <cone-flipbook> stays in the document's tree (its styles apply) and shows through a slot.
-      const slot = document.createElement('slot');
+      slot = document.createElement('slot');
       slot.name = `conecurl-page-${index}`;
       element.slot = slot.name;
       content.append(slot);
     } else {
       content.append(element);
     }
-    const onInput = () => this._changed(index);
+    // By `page.index`, not `index`: pages spliced in before it move it.
+    const onInput = () => this._changed(page.index);
     for (const type of CHANGE_EVENTS) element.addEventListener(type, onInput, true);
-    const observer = new MutationObserver(() => this._changed(index));
+    const observer = new MutationObserver(() => this._changed(page.index));
     observer.observe(element, { subtree: true, childList: true, attributes: true, characterData: true });
-    const page = { element, sheet, content, home, observer, onInput, slotted, grips: [], gripKey: '', canvas: null, videos: [] };
+    const page = { index, element, sheet, content, home, observer, onInput, slotted, slot, grips: [], gripKey: '', canvas: null, videos: [] };
     this._conceal(page);
     this._layer.append(sheet);
     return page;

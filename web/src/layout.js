@@ -143,3 +143,21 @@ export function zoomRect(rect, { scale, offsetX, offsetY }, width, height) {
     height: scale * rect.height,
   };
 }
+
+// ---- pages spliced on a live book (insertPages, removePages): one renumbering rule for every index map ----
+
+/** Where page `page` goes when `removed` pages at `at` give way to `inserted` new ones: its new index, or -1 if removed. */
+export function splicedPage(page, at, removed, inserted) {
+  if (page < at) return page;
+  return page < at + removed ? -1 : page + inserted - removed;
+}
+
+/** A Map keyed by page index, renumbered for such a splice (the removed pages' entries dropped). */
+export function splicePageMap(map, at, removed, inserted) {
+  const out = new Map();
+  for (const [page, value] of map) {
+    const moved = splicedPage(page, at, removed, inserted);
+    if (moved >= 0) out.set(moved, value);
+  }
+  return out;
+}

@@ -81,56 +81,59 @@ function isPlainEntry(page) {
   return page !== null && typeof page === 'object' && !Array.isArray(page) && !isPageImage(page) && !isHtmlPage(page);
 }
 
-function checkPage(page, index, pageCount) {
-  const name = `pages[${index}]`;
+/**
+ * Checks one page given as `name` (its place, as messages say it): a TypeError names what is wrong.
+ * `kind` is what it was given to ('option', or a method such as 'insertPages').
+ */
+export function checkPage(page, name, pageCount, kind = 'option') {
   if (!isPlainEntry(page)) {
     if (isPageImage(page) || isHtmlPage(page) || typeof page === 'function') return;
-    throw new TypeError(`conecurl: option '${name}' must be ${PAGE_SOURCES}, or { src, alt, hard }; got ${describeValue(page)}`);
+    throw new TypeError(`conecurl: ${kind} '${name}' must be ${PAGE_SOURCES}, or { src, alt, hard }; got ${describeValue(page)}`);
   }
   const unknown = Object.keys(page).find((key) => !PAGE_ENTRY_KEYS.includes(key));
   if (unknown !== undefined) {
-    throw new TypeError(`conecurl: option '${name}' has an unknown key '${unknown}' (allowed: ${PAGE_ENTRY_KEYS.join(', ')})`);
+    throw new TypeError(`conecurl: ${kind} '${name}' has an unknown key '${unknown}' (allowed: ${PAGE_ENTRY_KEYS.join(', ')})`);
   }
   if (page.html !== undefined) {
     if (!isHtmlPage(page.html)) {
-      throw new TypeError(`conecurl: option '${name}.html' must be an HTML element (not an image, canvas or video; `
+      throw new TypeError(`conecurl: ${kind} '${name}.html' must be an HTML element (not an image, canvas or video; `
         + `strings are never parsed as HTML); got ${describeValue(page.html)}`);
     }
     if (page.src !== undefined || page.zoomSrc !== undefined) {
-      throw new TypeError(`conecurl: option '${name}' gives both 'html' and '${page.src !== undefined ? 'src' : 'zoomSrc'}': an HTML page is drawn from its element`);
+      throw new TypeError(`conecurl: ${kind} '${name}' gives both 'html' and '${page.src !== undefined ? 'src' : 'zoomSrc'}': an HTML page is drawn from its element`);
     }
   } else if (!isPageImage(page.src) && typeof page.src !== 'function') {
-    throw new TypeError(`conecurl: option '${name}.src' must be ${PAGE_SOURCES}; got ${describeValue(page.src)}`);
+    throw new TypeError(`conecurl: ${kind} '${name}.src' must be ${PAGE_SOURCES}; got ${describeValue(page.src)}`);
   }
   if (page.alt !== undefined && typeof page.alt !== 'string') {
-    throw new TypeError(`conecurl: option '${name}.alt' must be a string (the page's text for screen readers); got ${describeValue(page.alt)}`);
+    throw new TypeError(`conecurl: ${kind} '${name}.alt' must be a string (the page's text for screen readers); got ${describeValue(page.alt)}`);
   }
   if (page.hard !== undefined && typeof page.hard !== 'boolean') {
-    throw new TypeError(`conecurl: option '${name}.hard' must be true or false; got ${describeValue(page.hard)}`);
+    throw new TypeError(`conecurl: ${kind} '${name}.hard' must be true or false; got ${describeValue(page.hard)}`);
   }
   if (page.zoomSrc !== undefined && !isPageImage(page.zoomSrc)) {
-    throw new TypeError(`conecurl: option '${name}.zoomSrc' must be a URL, HTMLImageElement, HTMLCanvasElement, ImageBitmap or Blob; `
+    throw new TypeError(`conecurl: ${kind} '${name}.zoomSrc' must be a URL, HTMLImageElement, HTMLCanvasElement, ImageBitmap or Blob; `
       + `got ${describeValue(page.zoomSrc)}`);
   }
-  if (page.links !== undefined) checkLinks(page.links, `${name}.links`, pageCount);
+  if (page.links !== undefined) checkLinks(page.links, `${name}.links`, pageCount, kind);
 }
 
-function checkLinks(links, where, pageCount) {
+function checkLinks(links, where, pageCount, kind) {
   if (!Array.isArray(links)) {
-    throw new TypeError(`conecurl: option '${where}' must be an array of { rect, href } or { rect, page }; got ${describeValue(links)}`);
+    throw new TypeError(`conecurl: ${kind} '${where}' must be an array of { rect, href } or { rect, page }; got ${describeValue(links)}`);
   }
   links.forEach((link, i) => {
     const rect = link && link.rect;
     if (!Array.isArray(rect) || rect.length !== 4 || !rect.every((v) => Number.isFinite(v) && v >= 0 && v <= 1)) {
-      throw new TypeError(`conecurl: option '${where}[${i}].rect' must be [x, y, width, height] as fractions of the page (0 to 1); `
+      throw new TypeError(`conecurl: ${kind} '${where}[${i}].rect' must be [x, y, width, height] as fractions of the page (0 to 1); `
         + `got ${describeValue(rect)}`);
     }
     const toPage = link.page;
     if (toPage !== undefined && !(Number.isInteger(toPage) && toPage >= 0 && toPage < pageCount)) {
-      throw new TypeError(`conecurl: option '${where}[${i}].page' must be a page index below ${pageCount}; got ${describeValue(toPage)}`);
+      throw new TypeError(`conecurl: ${kind} '${where}[${i}].page' must be a page index below ${pageCount}; got ${describeValue(toPage)}`);
     }
     if (toPage === undefined && typeof link.href !== 'string') {
-      throw new TypeError(`conecurl: option '${where}[${i}]' needs an href (a URL string) or a page (an index)`);
+      throw new TypeError(`conecurl: ${kind} '${where}[${i}]' needs an href (a URL string) or a page (an index)`);
     }
   });
 }
@@ -151,7 +154,7 @@ export function validateOptions(options) {
   }
   if (!('pages' in options)) throw new TypeError("conecurl: option 'pages' is missing (a non-empty array of page sources)");
   // An index loop, not forEach: a hole in a sparse array is a missing page, not one to skip.
-  for (let index = 0; index < options.pages.length; index++) checkPage(options.pages[index], index, options.pages.length);
+  for (let index = 0; index < options.pages.length; index++) checkPage(options.pages[index], `pages[${index}]`, options.pages.length);
   if (options.startPage !== undefined && options.startPage >= options.pages.length) {
     throw new TypeError(`conecurl: option 'startPage' must be below the page count ${options.pages.length}, got ${options.startPage}`);
   }
@@ -165,16 +168,23 @@ const oneLinkForm = (l) => ({ rect: l.rect, href: l.href ?? '#', toPage: l.page,
 /**
  * The page entries of checked options: every page as { src, alt?, hard?, zoomSrc?, links? } (or { html, ... }), links
  * in one form { rect, href, toPage, title }. Entries without links stay the objects given (a PDF's
- * fill in their alt and links as their pages render).
+ * fill in their alt and links as their pages render) unless `copy`: each entry its own object, so the
+ * same page given twice is two entries (pages spliced on a live book are followed by their entries).
  */
-export function pageEntries(pages) {
+export function pageEntries(pages, { copy = false } = {}) {
   return pages.map((page) => {
     if (isHtmlPage(page)) return { html: page, alt: page.getAttribute('aria-label') ?? undefined };
     if (!isPlainEntry(page)) return { src: page };
     if (page.html) return { ...page, links: page.links?.map(oneLinkForm) };  // a copy: the book adds its `src`
-    if (!page.links) return page;
+    if (!page.links) return copy ? { ...page } : page;
     return { ...page, links: page.links.map(oneLinkForm) };
   });
+}
+
+/** The hard pages' indices: pages marked `hard`, and with `hardCovers` the first and the last. */
+export function hardPageIndices(entries, hardCovers) {
+  const last = entries.length - 1;
+  return entries.flatMap((entry, i) => (entry.hard || (hardCovers && (i === 0 || i === last)) ? [i] : []));
 }
 
 /** `flip(index, options)`'s second argument: nothing, or { animate: boolean }. */

@@ -34,12 +34,16 @@ export function followPage(book, settings) {
   // Flips the address asked for (a hash change fires popstate and hashchange: two) are not written back
   // as new entries while any is under way.
   let fromAddress = 0;
-  const onTurned = () => {
+  // A turn is a new history entry; pages inserted or removed before the page shown only renumber it
+  // (the entry there now says the new number).
+  const onTurned = (event) => {
     const page = book.page;
     if (settings.rememberPage) {
       try { globalThis.localStorage?.setItem(storageKey(settings.rememberPage), String(page)); } catch { /* off */ }
     }
-    if (settings.hash && fromAddress === 0 && hashPage() !== page) history.pushState(null, '', `#page=${page + 1}`);
+    if (!settings.hash || fromAddress !== 0 || hashPage() === page) return;
+    if (event.type === 'pageschange') history.replaceState(null, '', `#page=${page + 1}`);
+    else history.pushState(null, '', `#page=${page + 1}`);
   };
   const onAddress = () => {
     const page = hashPage();
@@ -48,12 +52,14 @@ export function followPage(book, settings) {
     book.flip(page).catch(() => {}).finally(() => { fromAddress--; });
   };
   book.addEventListener('turned', onTurned);
+  book.addEventListener('pageschange', onTurned);
   if (settings.hash) {
     addEventListener('popstate', onAddress);
     addEventListener('hashchange', onAddress);
   }
   return () => {
     book.removeEventListener('turned', onTurned);
+    book.removeEventListener('pageschange', onTurned);
     removeEventListener('popstate', onAddress);
     removeEventListener('hashchange', onAddress);
   };

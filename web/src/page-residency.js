@@ -1,7 +1,7 @@
 // Which pages keep a texture: the bounded page cache of Flipbook as plain functions (no DOM, no GL),
 // so the policy is tested on its own and GPU memory does not grow with the length of the book.
 
-import { MAX_TURNS_IN_FLIGHT } from './layout.js';
+import { MAX_TURNS_IN_FLIGHT, splicePageMap, splicedPage } from './layout.js';
 
 export { MAX_TURNS_IN_FLIGHT };  // turns the book can have in flight at once (the engine's constant)
 
@@ -116,6 +116,17 @@ export class PageCache {
   /** Lets every whenIdle() resolve now (the book is destroyed). */
   releaseWaiters() {
     for (const resolve of this._idleWaiters.splice(0)) resolve();
+  }
+
+  /** `removed` pages at `at` gave way to `inserted` new ones (idle): states and wants renumbered. */
+  splice(at, removed, inserted) {
+    const gone = this._states.slice(at, at + removed);
+    this._settled -= gone.filter((s) => s === 'loaded' || s === 'failed').length;
+    // Concatenated, not spliced with spread arguments: a million pages inserted at once fit no call's arguments.
+    this._states = [...this._states.slice(0, at), ...new Array(inserted).fill('idle'), ...this._states.slice(at + removed)];
+    this._failures = splicePageMap(this._failures, at, removed, inserted);
+    this._lastWanted = splicePageMap(this._lastWanted, at, removed, inserted);
+    this.wanted = new Set([...this.wanted].map((page) => splicedPage(page, at, removed, inserted)).filter((page) => page >= 0));
   }
 
   /** Records and returns the pages wanted now ({ onScreen, first, last, loadWindow, pageCount }). */

@@ -4,7 +4,7 @@
 import { loadPage, pageFailure } from './page-loader.js';
 import { PageCache } from './page-residency.js';
 import { uploadSizeFor } from './texture-upload.js';
-import { isZoomed } from './layout.js';
+import { isZoomed, splicePageMap } from './layout.js';
 
 const TEXTURE_OVERSAMPLE = 1.5;  // images up to this many pixels per device pixel of the page on screen
 const REFIT_RATIO = 1.25;        // a kept image is handed over again only when this far off the size wanted
@@ -27,7 +27,7 @@ export class PageStore {
     this._owned = new Set();   // images made here (ImageBitmaps from URLs and Blobs): closed when let go
     this._cache = new PageCache(settings.loadWindow, entries.length);
     this._abort = new AbortController();  // fetches still running when the book is destroyed stop
-    this._reloads = new Map();  // page -> its reload running now
+    this._reloads = new Map();  // page entry -> its reload running now (by entry: indices move as pages are spliced)
     this._closed = false;
   }
 
@@ -132,6 +132,32 @@ export class PageStore {
     }
   }
 
+  /**
+   * The entries were spliced (live-pages.js): `removed` pages at `at` gave way to `inserted` new ones.
+   * The removed pages' images are let go (the surface drops its copies itself); the others keep theirs,
+   * renumbered. Loads under way find their page by its entry when they land.
+   */
+  splice(at, removed, inserted) {
+    for (const [page, image] of this._images) if (page >= at && page < at + removed) this._closeIfOwned(image);
+    this._images = splicePageMap(this._images, at, removed, inserted);
+    this._naturals = splicePageMap(this._naturals, at, removed, inserted);
+    this._cache.splice(at, removed, inserted);
+  }
+
+  /**
+   * Page `index` has a new entry (replacePage): a page shown keeps its present image until the new one
+   * is uploaded over it (or shows paper if it fails); any other is loaded anew when wanted.
+   */
+  replace(index) {
+    this._naturals.delete(index);
+    if (this._images.has(index)) {
+      this._reload(index, this.cover(), this.entries[index].src, false, { force: true, replacing: true });
+      return;
+    }
+    this._cache.setState(index, 'idle');  // a load under way finds its entry gone and is dropped
+    this.update();
+  }
+
   /** The book is destroyed: loads stop, owned images are closed, waiters released. */
   close() {
     if (this._closed) return;
@@ -153,30 +179,43 @@ export class PageStore {
     }
   }
 
+  // Where `entry` is now (pages may have been spliced while it loaded); -1 if it left the book.
+  _indexOf(entry, index) {
+    return this.entries[index] === entry ? index : this.entries.indexOf(entry);
+  }
+
   async _load(index) {
     this._cache.startLoad(index);
+    const entry = this.entries[index];
     try {
       // A function makes its page only when the page is wanted (drawn, fetched or rendered on
       // demand), told the size in device pixels the page is drawn at.
-      const { image, owned, natural } = await loadPage(this.entries[index].src,
+      const { image, owned, natural } = await loadPage(entry.src,
         { index, size: this.cover(), signal: this._abort.signal });
       if (owned) this._owned.add(image);
-      if (this._closed || this._cache.stateOf(index) !== 'loading'
+      index = this._closed ? -1 : this._indexOf(entry, index);
+      if (index < 0 || this._cache.stateOf(index) !== 'loading'
           || (!this._cache.wanted.has(index) && this._images.size >= this._cache.capacity)) {
-        // Destroyed, or no longer wanted and no room: not worth keeping.
+        // Destroyed, removed or replaced, or no longer wanted and no room: not worth keeping.
         this._closeIfOwned(image);
-        if (!this._closed && this._cache.stateOf(index) === 'loading') this._cache.setState(index, 'idle');
+        if (index >= 0 && this._cache.stateOf(index) === 'loading') this._cache.setState(index, 'idle');
         return;
       }
       await this._hooks.surface().queuePageImage(index, image, { cover: this.cover() });  // mid-turn: one a frame
       if (this._closed) return;
+      index = this._indexOf(entry, index);  // the surface renumbered its texture along with the page
+      if (index < 0) {
+        this._closeIfOwned(image);
+        return;
+      }
       this._keep(index, image);
       this._keepNatural(index, natural);
       this._cache.setState(index, 'loaded');
       this._releaseExcess();
       this._hooks.onOpenPageLoaded(index);
     } catch (error) {
-      if (this._closed) return;
+      index = this._closed ? -1 : this._indexOf(entry, index);
+      if (index < 0 || this._cache.stateOf(index) !== 'loading') return;
       // The page keeps the plain paper placeholder; the book keeps working. `reason` says why:
       // 'http', 'network', 'cors', 'decode' or 'source' (PageLoadError), or 'upload'.
       const failure = pageFailure(error);
@@ -196,22 +235,27 @@ export class PageStore {
   // Loads a page's image again at the size `cover` asks for: its source decoded larger, `zoomSrc`, or
   // its function called again (a PDF page rendered anew). The page keeps its present image until the
   // new one is ready; `sharpened` is told when it came for the zoomed view.
-  async _reload(index, cover, source, zoomed, { force = false } = {}) {
-    const running = this._reloads.get(index);
+  // `replacing`: the page's entry is new (replacePage): if its image fails, the old one goes too.
+  async _reload(index, cover, source, zoomed, { force = false, replacing = false } = {}) {
+    const entry = this.entries[index];
+    const running = this._reloads.get(entry);
     if (running) {
       if (!force) return running;
       await running.catch(() => {});  // content changed during the reload: once more after it
+      index = this._indexOf(entry, index);
+      if (index < 0 || this._closed) return undefined;
     }
-    const reload = this._reloadNow(index, cover, source, zoomed);
-    this._reloads.set(index, reload);
+    const reload = this._reloadNow(entry, index, cover, source, zoomed, replacing);
+    this._reloads.set(entry, reload);
     return reload;
   }
 
-  async _reloadNow(index, cover, source, zoomed) {
+  async _reloadNow(entry, index, cover, source, zoomed, replacing) {
     try {
       const { image, owned, natural } = await loadPage(source, { index, size: cover, signal: this._abort.signal });
       if (owned) this._owned.add(image);
-      if (this._closed || !this._images.has(index)) {
+      index = this._closed ? -1 : this._indexOf(entry, index);
+      if (index < 0 || !this._images.has(index)) {
         this._closeIfOwned(image);
         return;
       }
@@ -219,14 +263,27 @@ export class PageStore {
       const previous = this._images.get(index);
       surface.setPageImage(index, image, { cover });
       this._keep(index, image);
-      if (source === this.entries[index].src) this._keepNatural(index, natural);
+      if (source === entry.src) this._keepNatural(index, natural);
       if (previous !== image) this._closeIfOwned(previous);
       if (zoomed) this._hooks.emit('sharpened', { index, width: surface.pageImageSize(index).width });
     } catch (error) {
-      if (!this._closed) this._hooks.emit('pageerror', { index, ...pageFailure(error) });
+      index = this._closed ? -1 : this._indexOf(entry, index);
+      if (index < 0) return;
+      if (replacing && this._images.has(index)) this._fail(index, error);
+      else this._hooks.emit('pageerror', { index, ...pageFailure(error) });
     } finally {
-      this._reloads.delete(index);
+      this._reloads.delete(entry);
     }
+  }
+
+  // A replaced page whose new image failed: its old image goes, it shows paper and stands failed.
+  _fail(index, error) {
+    this._hooks.surface().releasePageImage(index);
+    this._closeIfOwned(this._images.get(index));
+    this._images.delete(index);
+    const failure = pageFailure(error);
+    this._cache.setState(index, 'failed', failure);
+    this._hooks.emit('pageerror', { index, ...failure });
   }
 
   // What is kept of a page's image once the surface holds it: the image, or where the surface made its

@@ -17,6 +17,8 @@ export interface FlipbookEventProps {
   onZoom?: (event: FlipbookEventMap['zoom']) => void;
   onSharpened?: (event: FlipbookEventMap['sharpened']) => void;
   onLink?: (event: FlipbookEventMap['link']) => void;
+  /** The pages prop changed and the book applied it (inserted, removed or replaced pages, no new book). */
+  onPagesChange?: (event: FlipbookEventMap['pageschange']) => void;
   /** The book could not be built, or a prop was refused (a TypeError naming it); without it, the console hears. */
   onError?: (event: CustomEvent<{ error: Error }>) => void;
 }

@@ -25,6 +25,7 @@ function App() {
       onPageChange: setPage,
       onReady: (event) => { events.push(['ready', event.detail]); document.body.dataset.ready = 'true'; },
       onTurned: (event) => events.push(['turned', event.detail]),
+      onPagesChange: (event) => events.push(['pageschange', event.detail]),
       onError: (event) => { document.body.dataset.error = event.detail.error.message; },
     }),
     h(Flipbook, {

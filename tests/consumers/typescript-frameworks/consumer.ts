@@ -12,6 +12,7 @@ export function ReactBook() {
     pages: ['a.jpg', { src: 'b.jpg', alt: 'B' }], display: 'double', lighting: false, page: flipbook.page,
     onPageChange: (page: number) => console.log(page.toFixed(0)),
     onTurned: (event) => console.log(event.detail.page.toFixed(0)),
+    onPagesChange: (event) => console.log(event.detail.change, event.detail.pageCount.toFixed(0)),
     onPageError: (event) => console.log(event.detail.reason),
   };
   void handle.current?.next().then((turned: boolean) => turned);

@@ -17,6 +17,12 @@ export async function openBook(container: HTMLElement): Promise<number> {
   book.setOptions({ shadows: false });
   const turned: boolean = await book.next();
   await book.flip(1, { animate: false });
+  book.addEventListener('pageschange', (event) => console.log(event.detail.change, event.detail.page.toFixed(0)));
+  const inserted = await book.insertPages(1, ['new.jpg', { src: 'p2.jpg', alt: 'Page two' }]);
+  await book.removePages(inserted.at, inserted.count);
+  await book.replacePage(0, 'cover-2.jpg');
+  // @ts-expect-error: pages go in as an array
+  await book.insertPages(0, 'one.jpg');
   book.destroy();
   // @ts-expect-error: 'triple' is not a display mode
   await Flipbook.create(container, { pages: ['a.jpg'], display: 'triple' });

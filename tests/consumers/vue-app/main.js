@@ -12,17 +12,19 @@ const App = {
     const page = ref(2);
     const display = ref('double');
     const book = ref(null);
-    window.app = { page, display, book };
+    const bookPages = ref(pages);
+    window.app = { page, display, book, pages: bookPages };
     return () => h('div', null, [
       h('div', { id: 'controls' }, [
         h('button', { id: 'next', onClick: () => book.value.next() }, 'Next'),
         h('output', { id: 'page' }, `page ${page.value + 1}`),
       ]),
       h(Flipbook, {
-        ref: book, id: 'book', pages, display: display.value, page: page.value, style: { width: '640px', height: '400px', aspectRatio: 'auto' },
+        ref: book, id: 'book', pages: bookPages.value, display: display.value, page: page.value, style: { width: '640px', height: '400px', aspectRatio: 'auto' },
         'onUpdate:page': (value) => { page.value = value; },
         onReady: (event) => { events.push(['ready', event.detail]); document.body.dataset.ready = 'true'; },
         onTurned: (event) => events.push(['turned', event.detail]),
+        onPageschange: (event) => events.push(['pageschange', event.detail]),
         onError: (event) => { document.body.dataset.error = event.detail.error.message; },
       }),
       h(Flipbook, { id: 'children-book', display: 'double', style: { width: '640px', height: '400px', aspectRatio: 'auto' } }, {
