@@ -91,6 +91,13 @@ export interface FlipbookOptions {
   shadows?: boolean;
   gutter?: boolean;
   /**
+   * The stacks of leaves under the open pages show their edges (fore-edge, head, tail), as deep as
+   * the leaves on each side; hard covers show a board. true (default): a leaf 0.004 of the page width
+   * thick; a number from 0 to 0.02: that thickness; false (or 0): no stacks. WebGL only: the 2D
+   * fallback draws none. Changes live through setOptions.
+   */
+  thickness?: boolean | number;
+  /**
    * Pages loaded on each side of the open spread; default 4. At most max(2 * loadWindow + 4, 14)
    * page textures are kept, however many pages the book has.
    */
@@ -245,7 +252,7 @@ export class BookController extends EventTarget {
    */
   flip(index: number, options?: { animate?: boolean }): Promise<void>;
   /** Switches the effects or the display on a live book (same page); any other option is a TypeError (it needs a new book). */
-  setOptions(options: Pick<FlipbookOptions, 'lighting' | 'shadows' | 'gutter' | 'display'>): void;
+  setOptions(options: Pick<FlipbookOptions, 'lighting' | 'shadows' | 'gutter' | 'thickness' | 'display'>): void;
   /**
    * Stops everything at once, mid-turn or mid-drag too: no animation frame, listener, observer, GL
    * object or wasm object is left, the WebGL context is released, page loads are aborted. Turns in

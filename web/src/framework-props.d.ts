@@ -6,7 +6,7 @@ import type { StaticBook } from './static-book.js';
 
 /**
  * The book's options as props, except `startPage` (use `page` or `defaultPage`) and `on` (use the
- * event props). `lighting`, `shadows`, `gutter` and `display` apply to the running book; a change of any
+ * event props). `lighting`, `shadows`, `gutter`, `thickness` and `display` apply to the running book; a change of any
  * other (pages added, removed or replaced included) builds a new book in the same box at the page shown.
  */
 export type FlipbookOptionProps = Partial<Omit<FlipbookOptions, 'startPage' | 'on'>>;
