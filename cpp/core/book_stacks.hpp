@@ -43,7 +43,7 @@ inline constexpr double kBoardThicknessOfWidth = 0.012;
 // The paper of a stack never gets deeper than this fraction of the page width: it approaches it
 // smoothly (raw / sqrt(1 + (raw / cap)^2): about raw for a thin stack), so a 1000-page book stays a
 // book, not a brick, and every added leaf still adds depth.
-inline constexpr double kMaxPaperDepthOfWidth = 0.06;
+inline constexpr double kMaxPaperDepthOfWidth = 0.1;
 
 // `leaves` leaves with paper `leafThicknessOfWidth` (a fraction of `pageWidth` a leaf; 0: no stack).
 // A hard leaf at the top or the bottom (a cover) is a board layer of its own; hard leaves in between
