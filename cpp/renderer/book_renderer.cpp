@@ -153,8 +153,14 @@ void BookRenderer::createGpuObjects() {
     shadow.fragment = std::string(kShaderPrelude) + shaders::shadow_frag;
     shadowProgram_.id = buildProgram(shadow, error_);
     if (!shadowProgram_.id) return;
+    ProgramSource stack;
+    stack.vertex = std::string(kShaderPrelude) + shaders::stack_vert;
+    stack.fragment = std::string(kShaderPrelude) + shaders::stack_frag;
+    stackProgram_.id = buildProgram(stack, error_);
+    if (!stackProgram_.id) return;
     locate(leafProgram_);
     locate(shadowProgram_);
+    locate(stackProgram_);
     // What never changes is set once, here: samplers, the light, the paper colour, the shadow's strength.
     const float light[3] = {kLightDirection.x, kLightDirection.y, kLightDirection.z};
     const float paper[3] = {kPaper[0] / 255.0f, kPaper[1] / 255.0f, kPaper[2] / 255.0f};
@@ -164,6 +170,9 @@ void BookRenderer::createGpuObjects() {
     glUniform1i(leafProgram_.location[uShadowMask], 2);
     setUniform(leafProgram_, uLightDirection, light, 3);
     setUniform(leafProgram_, uPaper, paper, 3);
+    glUseProgram(stackProgram_.id);
+    setUniform(stackProgram_, uLightDirection, light, 3);
+    setUniform(stackProgram_, uPaper, paper, 3);
     glUseProgram(shadowProgram_.id);
     setUniform(shadowProgram_, uLightDirection, light, 3);
     setUniform(shadowProgram_, uShadowStrength, kShadowStrength);
@@ -179,6 +188,18 @@ void BookRenderer::createGpuObjects() {
     glGenBuffers(1, &indexBuffer_);
     glGenBuffers(1, &captureBuffer_);
     uploadGrid();
+    // The stacks' faces share the one vertex array, at locations 1 and 2 (stack.vert), from their own
+    // buffer: the leaf program reads only location 0, the stack program only 1 and 2, so drawing the
+    // stacks binds no other vertex array. The buffer is filled by updateStacks().
+    glGenBuffers(1, &stackBuffer_);
+    glBindBuffer(GL_ARRAY_BUFFER, stackBuffer_);
+    constexpr GLsizei kStride = kStackVertexFloats * sizeof(float);
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, kStride, nullptr);
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, kStride, reinterpret_cast<const void*>(4 * sizeof(float)));
+    stackKey_ = StackKey{};
+    stackVertexCount_ = 0;
 
     glGenTextures(1, &paperTexture_);
     boundTextures_.fill(0);
@@ -195,6 +216,8 @@ void BookRenderer::createGpuObjects() {
 void BookRenderer::destroyGpuObjects() {
     glDeleteProgram(leafProgram_.id);
     glDeleteProgram(shadowProgram_.id);
+    glDeleteProgram(stackProgram_.id);
+    glDeleteBuffers(1, &stackBuffer_);
     glDeleteVertexArrays(1, &vertexArray_);
     glDeleteBuffers(1, &vertexBuffer_);
     glDeleteBuffers(1, &indexBuffer_);
@@ -211,6 +234,10 @@ void BookRenderer::forgetGpuObjects() {
     gridKey_ = GridKey{};  // the grid buffer is gone too
     leafProgram_ = Program{};
     shadowProgram_ = Program{};
+    stackProgram_ = Program{};
+    stackBuffer_ = 0;
+    stackVertexCount_ = 0;
+    stackKey_ = StackKey{};
     programInUse_ = 0;
     boundTextures_.fill(0);
     activeUnit_ = -1;
@@ -397,6 +424,29 @@ void BookRenderer::drawLeaf(const Book& book, const LeafDraw& leaf, const Camera
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(grid_.indices.size()), GL_UNSIGNED_INT, nullptr);
 }
 
+void BookRenderer::updateStacks(const Book& book, const BookFrame& frame) {
+    const BookConfig& c = book.config();
+    const StackKey key{stackLeaves(book, frame), options_.thickness, c.pageWidth, c.pageHeight, c.display, c.binding};
+    if (key == stackKey_) return;  // a turn changes the leaves on a side twice: as it lifts and as it lands
+    stackKey_ = key;
+    const std::vector<float> mesh = stackMesh(c, bookStacks(c, key.leaves, key.thickness));
+    stackVertexCount_ = static_cast<int>(mesh.size()) / kStackVertexFloats;
+    if (stackVertexCount_ == 0) return;
+    glBindBuffer(GL_ARRAY_BUFFER, stackBuffer_);
+    glBufferData(GL_ARRAY_BUFFER, mesh.size() * sizeof(float), mesh.data(), GL_STATIC_DRAW);
+}
+
+void BookRenderer::drawStacks(const Camera& camera) {
+    if (stackVertexCount_ == 0) return;
+    // Below the table plane and outside the pages: drawn first, everything else lies over them. In a
+    // frame with leaves in flight the depth test may be on: the stacks pass it (the depth was just
+    // cleared), and every leaf lies above them, nearer the eye.
+    useProgram(stackProgram_);
+    setUniform(stackProgram_, uViewProjection, glm::value_ptr(camera.viewProjection), 16);
+    setUniform(stackProgram_, uLighting, options_.lighting ? 1.0f : 0.0f);
+    glDrawArrays(GL_TRIANGLES, 0, stackVertexCount_);
+}
+
 void BookRenderer::draw(const Book& book, const BookFrame& frame) {
     if (!ok() || !makeCurrent()) return;
     int width = 0;
@@ -407,6 +457,7 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
     drawingHeight_ = height;
     const Camera camera = cameraFor(book, width, height);
     updateGrid(book, camera, width, height);
+    updateStacks(book, frame);
     ++framesDrawn_;
 
     bool anyLifted = false;
@@ -440,6 +491,7 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
     } else {
         glClear(GL_COLOR_BUFFER_BIT);  // nothing is depth-tested in a frame of resting pages
     }
+    drawStacks(camera);
     useProgram(leafProgram_);
     if (shadows) {
         bindTexture(2, shadowTexture_);

@@ -17,6 +17,7 @@
 
 #include "book.hpp"
 #include "book_camera.hpp"
+#include "book_stacks.hpp"
 #include "leaf_placement.hpp"
 #include "page_grid.hpp"
 
@@ -35,6 +36,8 @@ struct RenderOptions {
     bool lighting = true;
     bool shadows = true;
     bool gutter = true;
+    // A leaf's thickness as a fraction of the page width, for the stacks' edges (book_stacks.hpp); 0: none.
+    double thickness = kDefaultLeafThickness;
 };
 
 class BookRenderer {
@@ -131,6 +134,9 @@ private:
     Camera cameraFor(const Book& book, int width, int height) const;
     void ensureShadowTarget(int width, int height);
     void drawLeaf(const Book& book, const LeafDraw& leaf, const Camera& camera, bool receiveShadow);
+    // The stacks' edge faces: their buffer is rebuilt only when what they depend on changes.
+    void updateStacks(const Book& book, const BookFrame& frame);
+    void drawStacks(const Camera& camera);
     using PageTextures = std::vector<std::pair<int, GLuint>>;  // a few dozen at most: a list beats a hash map
     PageTextures::const_iterator findTexture(int page) const;
     GLuint textureFor(int page) const;
@@ -168,6 +174,19 @@ private:
 
     Program leafProgram_;
     Program shadowProgram_;
+    Program stackProgram_;
+    GLuint stackBuffer_ = 0;
+    int stackVertexCount_ = 0;
+    struct StackKey {  // what the stacks' faces depend on
+        StackLeaves leaves;
+        double thickness = -1.0, pageWidth = 0.0, pageHeight = 0.0;
+        Display display = Display::Double;
+        Binding binding = Binding::Left;
+        bool operator==(const StackKey& o) const {
+            return leaves == o.leaves && thickness == o.thickness && pageWidth == o.pageWidth &&
+                   pageHeight == o.pageHeight && display == o.display && binding == o.binding;
+        }
+    } stackKey_;
     GLuint programInUse_ = 0;
     std::array<GLuint, 3> boundTextures_{};  // per texture unit, as last bound here
     int activeUnit_ = -1;

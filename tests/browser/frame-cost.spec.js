@@ -13,7 +13,10 @@ const FIXTURE = '/tests/browser/fixtures/flipbook-fixture.html';
 // flag and 2 textures with their unit switches and a draw (up to 8 each), depth test on, depth mask
 // on, and the lifted leaf the same (8): 43. Matrices, sizes, the eye and the options are set only
 // when they change, samplers and constants never after linking (97 calls a frame before that).
+// With thickness off. The stacks' edges (thickness, on by default) add their program and one draw
+// (2): their buffer changes only when a leaf lifts or lands, their matrix only when the camera does.
 const MAX_GL_CALLS_PER_TURNING_FRAME = 43;
+const STACK_GL_CALLS = 2;
 
 /** Counts every WebGL2 call and every call from JS into a wasm function, on window.__counts. */
 function countCalls() {
@@ -103,17 +106,21 @@ async function countTurningFrames(page, options, frames = 6) {
 
 test.beforeEach(async ({ page }) => { await page.addInitScript(countCalls); });
 
-test('browser: a turning frame costs one call into the wasm engine and a bounded number of WebGL calls (double and single, counts)', async ({ page }) => {
+test('browser: a turning frame costs one call into the wasm engine and a bounded number of WebGL calls (double and single, thickness on and off, counts)', async ({ page }) => {
   await openReady(page, FIXTURE);
-  for (const display of ['double', 'single']) {
-    const frames = await countTurningFrames(page, { pages: 8, display, duration: 3000, loadWindow: 8, startPage: 1 });
+  for (const [display, thickness] of [['double', true], ['single', true], ['double', false], ['single', false]]) {
+    const frames = await countTurningFrames(page, { pages: 8, display, duration: 3000, loadWindow: 8, startPage: 1, thickness });
     const worst = frames.reduce((a, b) => (b.gl > a.gl ? b : a));
-    console.log(`frame cost, ${display}: JS->wasm calls per frame ${frames.map((f) => f.wasm).join(' ')}; `
+    const name = `${display}, thickness ${thickness}`;
+    console.log(`frame cost, ${name}: JS->wasm calls per frame ${frames.map((f) => f.wasm).join(' ')}; `
       + `WebGL calls per frame ${frames.map((f) => f.gl).join(' ')}; worst frame ${JSON.stringify(worst.glByName)}`);
+    const most = MAX_GL_CALLS_PER_TURNING_FRAME + (thickness ? STACK_GL_CALLS : 0);
     for (const frame of frames) {
-      expect(frame.wasm, `${display}: JS->wasm calls in a turning frame`).toBe(1);
-      expect(frame.gl, `${display}: a turning frame drew nothing`).toBeGreaterThan(0);
-      expect(frame.gl, `${display}: WebGL calls in a turning frame: ${JSON.stringify(frame.glByName)}`).toBeLessThanOrEqual(MAX_GL_CALLS_PER_TURNING_FRAME);
+      expect(frame.wasm, `${name}: JS->wasm calls in a turning frame`).toBe(1);
+      expect(frame.gl, `${name}: a turning frame drew nothing`).toBeGreaterThan(0);
+      expect(frame.gl, `${name}: WebGL calls in a turning frame: ${JSON.stringify(frame.glByName)}`).toBeLessThanOrEqual(most);
+      // The stacks are drawn with one drawArrays, and only when they are on.
+      expect(frame.glByName.drawArrays ?? 0, `${name}: stack draws`).toBe(thickness ? 1 : 0);
       // Samplers and constant uniforms are set after linking, never per frame.
       expect(frame.glByName.uniform1i ?? 0).toBe(0);
       expect(frame.glByName.getUniformLocation ?? 0).toBe(0);

@@ -269,7 +269,7 @@ test('browser: bad options reach a TypeError naming the option and what it allow
   expect(messages.duration).toBe("TypeError: conecurl: option 'duration' must be a positive number of milliseconds, got NaN");
   expect(messages.loadWindow).toBe("TypeError: conecurl: option 'loadWindow' must be a whole number of pages from 1, got -2");
   expect(messages.entry).toBe("TypeError: conecurl: option 'pages[1].hard' must be true or false; got \"yes\"");
-  expect(messages.unknown).toMatch(/^TypeError: conecurl: unknown option 'colour' \(allowed: pages, display, .*, hash, autoplay, sound, muted, rememberPage, antialias, turnArea, on\)$/);
+  expect(messages.unknown).toMatch(/^TypeError: conecurl: unknown option 'colour' \(allowed: pages, display, .*, gutter, thickness, loadWindow, .*, hash, autoplay, sound, muted, rememberPage, antialias, turnArea, on\)$/);
   expect(messages.staticLabel).toBe("TypeError: conecurl: option 'label' must be a non-empty string, got 42");
   expect(messages.live).toBe("TypeError: conecurl: option 'gutter' must be true or false, got \"off\"");
   expect(messages.flip).toBe("TypeError: conecurl: flip option 'animate' must be true or false, got \"no\"");

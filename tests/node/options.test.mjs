@@ -28,6 +28,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     lighting: 'true or false',
     shadows: 'true or false',
     gutter: 'true or false',
+    thickness: "true, false or a leaf's thickness as a fraction of the page width (0 to 0.02)",
     loadWindow: 'a whole number of pages from 1',
     wasmUrl: 'a URL string',
     label: 'a non-empty string',
@@ -51,6 +52,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     lighting: ['yes', 0, NaN],
     shadows: ['false', -1],
     gutter: [null, 'off'],
+    thickness: [NaN, -0.001, 0.021, Infinity, '0.004', null],
     loadWindow: [NaN, -2, 0, 2.5, '4', Infinity],
     wasmUrl: [42, null, {}, NaN],
     label: ['', '   ', 42, null, NaN],
@@ -107,7 +109,7 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses(null, 'options must be an object, got null');
   refuses('pages', 'options must be an object, got "pages"');
   refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, direction, startPage, duration, schedule, center, hardCovers, "
-    + 'lighting, shadows, gutter, loadWindow, wasmUrl, label, fallback, hash, autoplay, sound, muted, rememberPage, antialias, turnArea, on)');
+    + 'lighting, shadows, gutter, thickness, loadWindow, wasmUrl, label, fallback, hash, autoplay, sound, muted, rememberPage, antialias, turnArea, on)');
   refuses({ pages, antialias: 'yes' }, "option 'antialias' must be 'auto', true or false, got \"yes\"");
   refuses({ pages, startPage: 3 }, "option 'startPage' must be below the page count 3, got 3");
   // A value whose own toString throws or is huge is described, not called.
@@ -117,13 +119,16 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses({ pages, display: 'x'.repeat(500) }, `option 'display' must be 'single', 'double' or 'auto', got "${'x'.repeat(57)}..."`);
 });
 
-test('node: setOptions takes only lighting, shadows, gutter, display, sound and muted, checked; flip options are { animate: boolean }', () => {
+test('node: setOptions takes only lighting, shadows, gutter, thickness, display, sound and muted, checked; flip options are { animate: boolean }', () => {
   assert.deepEqual(checkLiveOptions({ lighting: false }, pages), { lighting: false });
   assert.deepEqual(checkLiveOptions({ display: 'single' }, pages), { display: 'single' });
   assert.throws(() => checkLiveOptions({ display: 'triple' }, pages), /option 'display' must be 'single', 'double' or 'auto'/);
-  assert.throws(() => checkLiveOptions({ direction: 'rtl' }, pages), /option 'direction' cannot change on a live book \(only lighting, shadows, gutter, display, sound, muted\)/);
+  assert.throws(() => checkLiveOptions({ direction: 'rtl' }, pages), /option 'direction' cannot change on a live book \(only lighting, shadows, gutter, thickness, display, sound, muted\)/);
   assert.deepEqual(checkLiveOptions({ sound: true, muted: true }, pages), { sound: true, muted: true });
   assert.throws(() => checkLiveOptions({ muted: 'yes' }, pages), /option 'muted' must be true or false, got "yes"/);
+  assert.deepEqual(checkLiveOptions({ thickness: 0.01 }, pages), { thickness: 0.01 });
+  assert.deepEqual(checkLiveOptions({ thickness: false }, pages), { thickness: false });
+  assert.throws(() => checkLiveOptions({ thickness: 0.5 }, pages), /option 'thickness' must be true, false or a leaf's thickness/);
   assert.throws(() => checkLiveOptions({ shadows: NaN }, pages), /option 'shadows' must be true or false, got NaN/);
   assert.throws(() => checkLiveOptions(undefined, pages), /options must be an object, got undefined/);
   assert.deepEqual(checkFlipOptions(undefined), { animate: true });

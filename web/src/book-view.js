@@ -57,6 +57,7 @@ export class BookView {
     }
     this.renderer.setOptions({
       lighting: options.lighting ?? true, shadows: options.shadows ?? true, gutter: options.gutter ?? true,
+      thickness: options.thickness ?? true,
     });
     this._loop = new engine.FrameLoop(this.book, this.renderer);
     this._ticks = { moving: engine.TICK_MOVING, settled: engine.TICK_SETTLED, pagesChanged: engine.TICK_PAGES_CHANGED };

@@ -118,7 +118,7 @@ export class CanvasSurface {
   }
 
   sizeChanged() { this._draw(); }
-  /** Lighting, shadows and gutter shading: flat still pages show none of them. */
+  /** Lighting, shadows, gutter shading and thickness: flat still pages show none of them. */
   setOptions() {}
 
   destroy() {

@@ -22,6 +22,12 @@ function parseAntialias(raw, attribute) {
   if (value === undefined) throw attributeError(attribute, '"auto", "true" or "false"', raw);
   return value;
 }
+function parseThickness(raw, attribute) {
+  if (flag(raw) !== undefined) return flag(raw);
+  const value = Number(raw);
+  if (raw.trim() !== '' && Number.isFinite(value)) return value;  // its range is checked with the options
+  throw attributeError(attribute, '"true", "false" or a leaf\'s thickness as a fraction of the page width', raw);
+}
 function parseAutoplay(raw, attribute) {
   if (flag(raw) !== undefined) return flag(raw);
   const interval = Number(raw);
@@ -47,6 +53,7 @@ export const ATTRIBUTES = {
   lighting: ['lighting', parseBoolean],
   shadows: ['shadows', parseBoolean],
   gutter: ['gutter', parseBoolean],
+  thickness: ['thickness', parseThickness],
   'load-window': ['loadWindow', parseNumber],
   hash: ['hash', parseBoolean],
   autoplay: ['autoplay', parseAutoplay],

@@ -16,7 +16,8 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
  * The Flipbook as an element. Attributes (all optional except the pages): pages (URLs separated by
  * spaces; else the child elements: an <img> an image page, alt text kept, any other element a live
  * HTML page shown through a named slot), display, direction, start-page, duration, schedule, center,
- * hard-covers, lighting, shadows, gutter ("true"/"false"), antialias ("auto"/"true"/"false"),
+ * hard-covers, lighting, shadows, gutter ("true"/"false"), thickness ("true"/"false"/a number),
+ * antialias ("auto"/"true"/"false"),
  * load-window, wasm-url, pdf, pdf-worker-src.
  */
 export class ConeFlipbookElement extends HTMLElement {
@@ -52,6 +53,7 @@ export class ConeFlipbookElement extends HTMLElement {
   lighting: boolean | undefined;
   shadows: boolean | undefined;
   gutter: boolean | undefined;
+  thickness: boolean | number | undefined;
   antialias: boolean | 'auto' | undefined;
   loadWindow: number | undefined;
   hash: boolean | undefined;

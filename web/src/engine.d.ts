@@ -146,6 +146,8 @@ export interface RenderOptions {
   lighting?: boolean;
   shadows?: boolean;
   gutter?: boolean;
+  /** A leaf's thickness as a fraction of the page width (0 to 0.02) for the stacks' edges; true: 0.004; false or 0: none. */
+  thickness?: boolean | number;
 }
 
 /** The WebGL2 renderer of a book. Call delete() to release its context. */

@@ -106,6 +106,13 @@ export interface FlipbookOptions {
   shadows?: boolean;
   gutter?: boolean;
   /**
+   * The stacks of leaves under the open pages show their edges (fore-edge, head, tail), as deep as
+   * the leaves on each side; hard covers show a board. true (default): a leaf 0.004 of the page width
+   * thick; a number from 0 to 0.02: that thickness; false (or 0): no stacks. WebGL only: the 2D
+   * fallback draws none. Changes live through setOptions.
+   */
+  thickness?: boolean | number;
+  /**
    * Pages loaded on each side of the open spread; default 4. At most max(2 * loadWindow + 4, 14)
    * page textures are kept, however many pages the book has.
    */
@@ -304,8 +311,8 @@ export class BookController extends EventTarget {
   removePages(from: number, count?: number): Promise<PagesChangeDetail>;
   /** Puts `page` in the place of page `index`, as insertPages applies; a page on screen shows its old image until the new one is ready. */
   replacePage(index: number, page: PageSource | HTMLElement | PageEntry): Promise<PagesChangeDetail>;
-  /** Switches the effects, the display or the sound on a live book (same page); any other option is a TypeError (it needs a new book). */
-  setOptions(options: Pick<FlipbookOptions, 'lighting' | 'shadows' | 'gutter' | 'display' | 'sound' | 'muted'>): void;
+  /** Switches the effects, the thickness, the display or the sound on a live book (same page); any other option is a TypeError (it needs a new book). */
+  setOptions(options: Pick<FlipbookOptions, 'lighting' | 'shadows' | 'gutter' | 'thickness' | 'display' | 'sound' | 'muted'>): void;
   /** The page sound is muted (the `muted` option); setting it is setOptions({ muted }) (TypeError unless a boolean). */
   muted: boolean;
   /** What the page sound is doing, a snapshot for tools and tests; null after destroy(). */

@@ -109,6 +109,7 @@ export class Flipbook extends BookController {
       lighting: settings.lighting,
       shadows: settings.shadows,
       gutter: settings.gutter,
+      thickness: settings.thickness,
     });
     this._contextLease.attach(view);
     return view;

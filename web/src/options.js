@@ -1,6 +1,7 @@
 // The options of a book (Flipbook and its static fallback) checked in one place: every bad value is
 // a TypeError that names the option and says what is allowed, before anything is built.
 import { BOOK_EVENTS } from './book-events.js';
+import { MAX_LEAF_THICKNESS } from './layout.js';
 import { TURN_AREAS } from './turn-area.js';
 
 const BOOLEAN = (v) => typeof v === 'boolean' || 'true or false';
@@ -19,6 +20,8 @@ const OPTION_CHECKS = {
   lighting: BOOLEAN,
   shadows: BOOLEAN,
   gutter: BOOLEAN,
+  thickness: (v) => typeof v === 'boolean' || (Number.isFinite(v) && v >= 0 && v <= MAX_LEAF_THICKNESS)
+    || `true, false or a leaf's thickness as a fraction of the page width (0 to ${MAX_LEAF_THICKNESS})`,
   loadWindow: (v) => (Number.isInteger(v) && v >= 1) || 'a whole number of pages from 1',
   wasmUrl: (v) => typeof v === 'string' || 'a URL string',
   label: (v) => (typeof v === 'string' && v.trim() !== '') || 'a non-empty string',
@@ -40,11 +43,11 @@ const OPTION_CHECKS = {
 export const OPTION_NAMES = Object.keys(OPTION_CHECKS);
 export const DEFAULTS = {
   display: 'auto', direction: 'ltr', startPage: 0, duration: 1000, schedule: 'paper', center: true, hardCovers: false,
-  lighting: true, shadows: true, gutter: true, loadWindow: 4, label: 'Book', fallback: true, hash: false, autoplay: false,
-  sound: false, muted: false, antialias: 'auto',
+  lighting: true, shadows: true, gutter: true, thickness: true, loadWindow: 4, label: 'Book', fallback: true, hash: false,
+  autoplay: false, sound: false, muted: false, antialias: 'auto',
 };
 /** Options a live book takes through setOptions(); the others need a new book. */
-export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter', 'display', 'sound', 'muted'];
+export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter', 'thickness', 'display', 'sound', 'muted'];
 const PAGE_ENTRY_KEYS = ['src', 'html', 'alt', 'hard', 'zoomSrc', 'links'];
 const PAGE_SOURCES = 'a URL string, HTMLImageElement, HTMLCanvasElement, ImageBitmap, Blob, '
   + 'a function returning one of these (or a Promise of one), or an HTML element (an HTML page)';
