@@ -11,7 +11,7 @@ uniform vec2 uPageSize;
 uniform vec3 uEye;
 uniform vec3 uLightDirection;      // unit, towards the light
 uniform float uLighting;           // 0 or 1
-uniform float uGutter;             // 0 or 1
+uniform float uGutter;             // 0 off; 1 paper curving into the binding; 2 a hard board's hinge
 uniform vec2 uLeaf;                // x: page.vert's (a flat resting leaf); y: 1 where it receives the shadow mask
 uniform sampler2D uShadowMask;     // alpha of the lifted leaves' shadow, in screen space
 uniform vec2 uShadowTexel;         // 1 / mask size
@@ -46,8 +46,17 @@ void main() {
     vec3 sideNormal = facing ? n : -n;
     float light = mix(1.0, diffuse(sideNormal) / diffuse(vec3(0.0, 0.0, 1.0)), uLighting);
     // Paper curves down into the binding: darker within a few percent of the width of the spine
-    // (beyond a quarter of the width the term is below 1/1000 and is skipped).
-    if (uGutter > 0.0 && st.x < 0.25) light *= 1.0 - 0.22 * exp(-st.x / 0.045);
+    // (beyond a quarter of the width the term is below 1/1000 and is skipped). A board stays flat: its
+    // hinge is a groove pressed in parallel to the spine, a shaded furrow with a lit lip beside it.
+    if (uGutter > 1.5) {
+        if (st.x < 0.12) {
+            float groove = (st.x - 0.05) / 0.009;
+            float lip = (st.x - 0.068) / 0.006;
+            light *= 1.0 - 0.38 * exp(-groove * groove) + 0.12 * exp(-lip * lip);
+        }
+    } else if (uGutter > 0.0 && st.x < 0.25) {
+        light *= 1.0 - 0.22 * exp(-st.x / 0.045);
+    }
 
     if (uLeaf.y > 0.0) {
         // Four bilinear taps a texel and a half off each way: a tent blur about 5 mask texels wide

@@ -52,8 +52,22 @@ std::vector<bool> hardPagesOf(const val& hard, int pageCount) {
     return flags;
 }
 
+// A leaf's thickness as a fraction of the page width: true the default one, false or 0 none, or a
+// number up to kMaxLeafThickness.
+double leafThicknessOf(const val& thickness) {
+    if (thickness.isTrue() || thickness.isFalse()) return thickness.isTrue() ? kDefaultLeafThickness : 0.0;
+    const bool number = thickness.typeOf().as<std::string>() == "number";
+    const double value = number ? thickness.as<double>() : -1.0;
+    static_assert(kMaxLeafThickness == 0.02, "the message below names the largest thickness");
+    if (!(value >= 0.0 && value <= kMaxLeafThickness)) {  // NaN fails too
+        js::throwError("RangeError", "thickness must be true, false or a number from 0 to 0.02 (a leaf, of the page width)");
+    }
+    return value;
+}
+
 // { pageCount, display: 'single'|'double', binding: 'left'|'right'|'top', pageWidth, pageHeight,
-//   turnSeconds, hardPages: [page indices], schedule: 'paper'|'smooth', center: boolean }
+//   turnSeconds, hardPages: [page indices], schedule: 'paper'|'smooth', center: boolean,
+//   thickness: boolean | number }
 Book createBook(val options) {
     if (!options.isUndefined() && options.typeOf().as<std::string>() != "object") {
         js::throwError("TypeError", "book options must be an object");
@@ -79,6 +93,7 @@ Book createBook(val options) {
         if (name != "paper" && name != "smooth") js::throwError("TypeError", "schedule must be 'paper' or 'smooth'");
         config.schedule.smooth = name == "smooth";
     }
+    if (!options["thickness"].isUndefined()) config.leafThickness = leafThicknessOf(options["thickness"]);
     const val center = options["center"];
     if (!center.isUndefined()) {
         if (!center.isTrue() && !center.isFalse()) js::throwError("TypeError", "center must be true or false");
@@ -299,6 +314,7 @@ EMSCRIPTEN_BINDINGS(conecurl_book) {
                       if (name != "single" && name != "double") js::throwError("TypeError", "display must be 'single' or 'double'");
                       b.setDisplay(name == "single" ? Display::Single : Display::Double);
                   }))
+        .function("setThickness", optional_override([](Book& b, val thickness) { b.setLeafThickness(leafThicknessOf(thickness)); }))
         .function("riffleTo", optional_override([](Book& b, val position) {
                       return b.riffleTo(js::wholeNumber(position, "position", 0, b.lastPosition()));
                   }))

@@ -34,8 +34,8 @@ std::unique_ptr<BookRenderer> createRenderer(const std::string& canvasTarget, va
     return renderer;
 }
 
-// { lighting, shadows, gutter, thickness }: booleans, thickness also a leaf's thickness as a fraction
-// of the page width (true: the default one, false or 0: no stacks); missing keys keep their value.
+// { lighting, shadows, gutter }: booleans; missing keys keep their value. (The paper's thickness is the
+// Book's: Book.setThickness.)
 void setOptions(BookRenderer& r, val options) {
     RenderOptions next = r.options();
     auto flag = [&options](const char* name, bool& out) {
@@ -47,18 +47,6 @@ void setOptions(BookRenderer& r, val options) {
     flag("lighting", next.lighting);
     flag("shadows", next.shadows);
     flag("gutter", next.gutter);
-    const val thickness = options["thickness"];
-    if (thickness.isTrue() || thickness.isFalse()) {
-        next.thickness = thickness.isTrue() ? kDefaultLeafThickness : 0.0;
-    } else if (!thickness.isUndefined()) {
-        const bool number = thickness.typeOf().as<std::string>() == "number";
-        const double value = number ? thickness.as<double>() : -1.0;
-        static_assert(kMaxLeafThickness == 0.02, "the message below names the largest thickness");
-        if (!(value >= 0.0 && value <= kMaxLeafThickness)) {  // NaN fails too
-            js::throwError("RangeError", "thickness must be true, false or a number from 0 to 0.02 (a leaf, of the page width)");
-        }
-        next.thickness = value;
-    }
     r.setOptions(next);
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <utility>
 
+#include "book_stacks.hpp"
 #include "cone_deform.hpp"
 
 namespace conecurl {
@@ -290,6 +291,18 @@ void Book::setDisplay(Display display) {
     jumpTo(positionOfPage(page));
 }
 
+int Book::stackTop(bool turned) const {
+    // Leaves in flight (riffles included) lie next to the position: a few steps at most.
+    if (turned) {
+        int leaf = position_ - 1;
+        while (leaf >= 0 && inFlight(leaf)) --leaf;
+        return leaf;
+    }
+    int leaf = position_;
+    while (leaf < leafCount() && inFlight(leaf)) ++leaf;
+    return leaf;
+}
+
 double Book::centerShift() const {
     if (!config_.center || config_.display == Display::Single) return 0.0;
     // How much of a page lies on each side, leaf by leaf: a leaf turned by rho covers the turned side
@@ -303,14 +316,29 @@ double Book::centerShift() const {
         turnedSide = std::max(turnedSide, turned);
         unturnedSide = std::max(unturnedSide, 1.0 - turned);
     }
-    return 0.5 * config_.pageWidth * (unturnedSide - turnedSide);
+    return shiftFor(unturnedSide, turnedSide, bookStacks(config_, stackLeaves(*this), config_.leafThickness));
 }
 
 double Book::settledCenterShift() const {
     if (!config_.center || config_.display == Display::Single) return 0.0;
     const double turnedSide = position_ > 0 ? 1.0 : 0.0;
     const double unturnedSide = position_ < leafCount() ? 1.0 : 0.0;
-    return 0.5 * config_.pageWidth * (unturnedSide - turnedSide);
+    if (turnedSide == unturnedSide) return 0.0;
+    // The stacks once the turns in flight land: a copy of the book with none.
+    Book landed = *this;
+    landed.jumpTo(position_);
+    return shiftFor(unturnedSide, turnedSide, bookStacks(config_, stackLeaves(landed), config_.leafThickness));
+}
+
+double Book::shiftFor(double unturnedSide, double turnedSide, const Stacks& stacks) const {
+    // What is in view reaches out a page width plus the edge band of the stack under it (as deep as
+    // the stack: its faces go down at 45 degrees) on the side that holds more of it.
+    const double band = unturnedSide >= turnedSide ? stacks.unturned.total() : stacks.turned.total();
+    return 0.5 * (config_.pageWidth + band) * (unturnedSide - turnedSide);
+}
+
+void Book::setLeafThickness(double leafThickness) {
+    config_.leafThickness = std::isnan(leafThickness) ? 0.0 : std::clamp(leafThickness, 0.0, kMaxLeafThickness);
 }
 
 void Book::setPages(int pageCount, std::vector<bool> hardPages) {
@@ -335,23 +363,11 @@ LeafDraw Book::restingLeaf(int leaf, bool turned) const {
 BookFrame Book::frame() const {
     BookFrame frame;
     // Resting stacks: the top turned leaf and the top unturned leaf that are not in flight.
-    int leftTop = -1;
-    for (int leaf = position_ - 1; leaf >= 0; --leaf) {
-        if (!inFlight(leaf)) {
-            leftTop = leaf;
-            break;
-        }
-    }
-    int rightTop = -1;
-    for (int leaf = position_; leaf < leafCount(); ++leaf) {
-        if (!inFlight(leaf)) {
-            rightTop = leaf;
-            break;
-        }
-    }
+    const int leftTop = stackTop(true);
+    const int rightTop = stackTop(false);
     // In single display the turned side lies outside the view: nothing to draw there.
     if (leftTop >= 0 && config_.display == Display::Double) frame.leaves[frame.count++] = restingLeaf(leftTop, true);
-    if (rightTop >= 0) frame.leaves[frame.count++] = restingLeaf(rightTop, false);
+    if (rightTop < leafCount()) frame.leaves[frame.count++] = restingLeaf(rightTop, false);
 
     for (int i = 0; i < turnCount_; ++i) {
         const Turn& turn = turns_[i];

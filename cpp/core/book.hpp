@@ -29,6 +29,8 @@ struct ViewZoom {
 // scale - 1 either way; NaN scale counts as 1, NaN offset as 0.
 ViewZoom clampZoom(const ViewZoom& zoom);
 
+struct Stacks;  // book_stacks.hpp: the depth of the stacks of leaves on each side
+
 struct BookConfig {
     int pageCount = 0;
     Display display = Display::Double;
@@ -39,6 +41,8 @@ struct BookConfig {
     CurlSchedule schedule;
     std::vector<bool> hardPages;  // by page index; pages past its end are soft
     bool center = true;  // a closed book (one cover alone) sits in the middle of the view: see centerShift()
+    // A leaf's thickness as a fraction of the page width, for the stacks' depth (book_stacks.hpp); 0: none.
+    double leafThickness = kDefaultLeafThickness;
 };
 
 // One leaf as it is to be drawn. Pages are the leaf's physical sides.
@@ -91,6 +95,8 @@ public:
     // kRiffleSpan turn durations. False (nothing changes) while a leaf is in flight or held, or for a
     // position one leaf away or less (a plain turn).
     bool riffleTo(int position);
+    // The paper's thickness from now on (config.leafThickness), kept in [0, kMaxLeafThickness]; NaN: 0.
+    void setLeafThickness(double leafThickness);
     // Jumps to a position at once, dropping turns in flight.
     void jumpTo(int position);
     // Shows one page or two from now on, keeping the first visible page in view; turns in flight land
@@ -126,14 +132,20 @@ public:
     void setZoom(const ViewZoom& zoom);
     const ViewZoom& zoom() const { return zoom_; }
 
-    // How far the camera moves along the spine's normal, towards the unturned side, so the pages in
-    // view sit in the middle: half a page width towards a front cover alone on the unturned side,
-    // back again as it turns open; the same the other way for a back cover alone. 0 in single
-    // display or with config.center off. It follows the leaves' rotation, so the book slides as part
-    // of the turn (and of a drag) with no jump.
+    // How far the camera moves along the spine's normal, towards the unturned side, so what is in
+    // view sits in the middle: half a page width (plus half the edge band of the stack under it, see
+    // book_stacks.hpp) towards a front cover alone on the unturned side, back again as it turns open;
+    // the same the other way for a back cover alone. 0 for an open book, in single display or with
+    // config.center off. It follows the leaves' rotation, so the book slides as part of the turn (and
+    // of a drag) with no jump.
     double centerShift() const;
     // The same once turns in flight have landed (where the open pages will lie).
     double settledCenterShift() const;
+
+    // The top leaf of the turned (or unturned) stack: the nearest to the position that is not in flight
+    // (nor carried by a riffling leaf); -1 (or leafCount()) for an empty stack. The leaves below it
+    // down to 0 (up to leafCount() - 1) all rest in that stack.
+    int stackTop(bool turned) const;
 
     bool isHardLeaf(int leaf) const;
     // The pose of a leaf turning at progress p (soft: the schedule; hard: rigid).
@@ -159,6 +171,7 @@ private:
         double speed = 1.0;         // progress per turn duration
     };
     CurlParams poseOf(const Turn& turn) const;
+    double shiftFor(double unturnedSide, double turnedSide, const Stacks& stacks) const;
     int heldIndex() const;
     int frontPageOf(int leaf) const;
     int backPageOf(int leaf) const;

@@ -13,33 +13,20 @@
 
 namespace conecurl {
 
-StackLeaves stackLeaves(const Book& book, const BookFrame& frame) {
-    const int position = book.position();
+StackLeaves stackLeaves(const Book& book) {
+    // Each stack holds every leaf from its end of the book up to its top (Book::stackTop: the leaves in
+    // flight, and those a riffling leaf carries, lie between the two tops). In single display a
+    // position is a page, and a page is a leaf: the same counting either way.
     const int count = book.leafCount();
-    // In single display a position is a page, and a page is a leaf: the same counting either way.
-    auto inFlight = [&frame](int leaf) {
-        for (int i = 0; i < frame.count; ++i) {
-            if (!frame.leaves[i].resting && frame.leaves[i].leaf == leaf) return true;
-        }
-        return false;
-    };
+    const int turnedTop = book.stackTop(true);
+    const int unturnedTop = book.stackTop(false);
     StackLeaves out;
-    out.turned = std::clamp(position, 0, count);
-    out.unturned = count - out.turned;
-    for (int i = 0; i < frame.count; ++i) {
-        if (frame.leaves[i].resting) continue;
-        if (frame.leaves[i].leaf < position) --out.turned;
-        else --out.unturned;
-    }
-    // The top of each stack is the nearest leaf to the position that is not in flight (a few steps at most).
-    int top = position - 1;
-    while (top >= 0 && inFlight(top)) --top;
-    out.turnedTopHard = top >= 0 && book.isHardLeaf(top);
-    out.turnedBottomHard = out.turned > 0 && !inFlight(0) && book.isHardLeaf(0);
-    top = position;
-    while (top < count && inFlight(top)) ++top;
-    out.unturnedTopHard = top < count && book.isHardLeaf(top);
-    out.unturnedBottomHard = out.unturned > 0 && !inFlight(count - 1) && book.isHardLeaf(count - 1);
+    out.turned = turnedTop + 1;
+    out.unturned = count - unturnedTop;
+    out.turnedTopHard = out.turned > 0 && book.isHardLeaf(turnedTop);
+    out.turnedBottomHard = out.turned > 0 && book.isHardLeaf(0);
+    out.unturnedTopHard = out.unturned > 0 && book.isHardLeaf(unturnedTop);
+    out.unturnedBottomHard = out.unturned > 0 && book.isHardLeaf(count - 1);
     return out;
 }
 

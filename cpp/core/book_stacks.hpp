@@ -24,9 +24,9 @@ struct StackLeaves {
     }
 };
 
-// The leaves of `book` at rest on each side in `frame` (its frame(): the leaves in flight are the ones
-// not resting), from the book's position: O(turns in flight), not O(leaves).
-StackLeaves stackLeaves(const Book& book, const BookFrame& frame);
+// The leaves of `book` at rest on each side (those in flight, or carried by a riffling leaf, in
+// neither), from its stacks' tops: O(turns in flight), not O(leaves).
+StackLeaves stackLeaves(const Book& book);
 
 // One stack's depth below the table plane, in world units, in layers from the top: a board on top
 // (a hard top leaf), paper, a board at the bottom. Zero depth: no stack.

@@ -411,7 +411,8 @@ void BookRenderer::setSurfaceUniforms(const Book& book, const LeafDraw& leaf, co
     setUniform(p, uPageSize, pageSize, 2);
     setUniform(p, uEye, glm::value_ptr(camera.eye), 3);
     setUniform(p, uLighting, options_.lighting ? 1.0f : 0.0f);
-    setUniform(p, uGutter, options_.gutter ? 1.0f : 0.0f);
+    // The gutter shading of paper, or the hinge groove of a hard board (page.frag).
+    setUniform(p, uGutter, options_.gutter ? (leaf.hard ? 2.0f : 1.0f) : 0.0f);
     const int facingPage = placement.facingIsBackPage ? leaf.backPage : leaf.frontPage;
     const int awayPage = placement.facingIsBackPage ? leaf.frontPage : leaf.backPage;
     bindTexture(0, textureFor(facingPage));
@@ -424,9 +425,9 @@ void BookRenderer::drawLeaf(const Book& book, const LeafDraw& leaf, const Camera
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(grid_.indices.size()), GL_UNSIGNED_INT, nullptr);
 }
 
-void BookRenderer::updateStacks(const Book& book, const BookFrame& frame) {
+void BookRenderer::updateStacks(const Book& book) {
     const BookConfig& c = book.config();
-    const StackKey key{stackLeaves(book, frame), options_.thickness, c.pageWidth, c.pageHeight, c.display, c.binding};
+    const StackKey key{stackLeaves(book), c.leafThickness, c.pageWidth, c.pageHeight, c.display, c.binding};
     if (key == stackKey_) return;  // a turn changes the leaves on a side twice: as it lifts and as it lands
     stackKey_ = key;
     const std::vector<float> mesh = stackMesh(c, bookStacks(c, key.leaves, key.thickness));
@@ -457,7 +458,7 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
     drawingHeight_ = height;
     const Camera camera = cameraFor(book, width, height);
     updateGrid(book, camera, width, height);
-    updateStacks(book, frame);
+    updateStacks(book);
     ++framesDrawn_;
 
     bool anyLifted = false;

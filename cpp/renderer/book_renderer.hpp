@@ -36,8 +36,6 @@ struct RenderOptions {
     bool lighting = true;
     bool shadows = true;
     bool gutter = true;
-    // A leaf's thickness as a fraction of the page width, for the stacks' edges (book_stacks.hpp); 0: none.
-    double thickness = kDefaultLeafThickness;
 };
 
 class BookRenderer {
@@ -135,7 +133,7 @@ private:
     void ensureShadowTarget(int width, int height);
     void drawLeaf(const Book& book, const LeafDraw& leaf, const Camera& camera, bool receiveShadow);
     // The stacks' edge faces: their buffer is rebuilt only when what they depend on changes.
-    void updateStacks(const Book& book, const BookFrame& frame);
+    void updateStacks(const Book& book);
     void drawStacks(const Camera& camera);
     using PageTextures = std::vector<std::pair<int, GLuint>>;  // a few dozen at most: a list beats a hash map
     PageTextures::const_iterator findTexture(int page) const;

@@ -67,19 +67,19 @@ TEST(BookStacks, LeavesOnEachSideFollowThePositionAndLeaveOutLeavesInFlight) {
     EXPECT_EQ(book.leafCount(), 10);
     for (int p = 0; p <= 10; ++p) {
         book.jumpTo(p);
-        const StackLeaves s = stackLeaves(book, book.frame());
+        const StackLeaves s = stackLeaves(book);
         EXPECT_EQ(s.turned, p);
         EXPECT_EQ(s.unturned, 10 - p);
     }
     book.jumpTo(4);
     ASSERT_TRUE(book.startTurn(TurnDirection::Forward));
     ASSERT_TRUE(book.startTurn(TurnDirection::Forward));
-    StackLeaves s = stackLeaves(book, book.frame());
+    StackLeaves s = stackLeaves(book);
     EXPECT_EQ(s.turned, 4);    // leaves 4 and 5 are in the air: in neither stack
     EXPECT_EQ(s.unturned, 4);
     book.jumpTo(4);
     ASSERT_TRUE(book.startTurn(TurnDirection::Backward));
-    s = stackLeaves(book, book.frame());
+    s = stackLeaves(book);
     EXPECT_EQ(s.turned, 3);
     EXPECT_EQ(s.unturned, 6);
 }
@@ -91,7 +91,7 @@ TEST(BookStacks, OverTenTurnsTheTurnedStackDeepensAndTheUnturnedThins) {
     for (int turn = 0; turn < 10; ++turn) {
         ASSERT_TRUE(book.startTurn(TurnDirection::Forward));
         book.advance(10.0);  // lands
-        const Stacks s = bookStacks(book.config(), stackLeaves(book, book.frame()), kLeaf);
+        const Stacks s = bookStacks(book.config(), stackLeaves(book), kLeaf);
         EXPECT_GT(s.turned.total(), turned) << "turn " << turn;
         EXPECT_LT(s.unturned.total(), unturned) << "turn " << turn;
         turned = s.turned.total();
@@ -104,12 +104,12 @@ TEST(BookStacks, HardCoversOfAClosedAndAnOpenBook) {
     std::vector<bool> hard(20, false);
     hard[0] = hard[1] = hard[18] = hard[19] = true;
     Book book = makeBook(20, Display::Double, Binding::Left, hard);
-    StackLeaves s = stackLeaves(book, book.frame());
+    StackLeaves s = stackLeaves(book);
     EXPECT_TRUE(s.unturnedTopHard);
     EXPECT_TRUE(s.unturnedBottomHard);
     EXPECT_FALSE(s.turnedTopHard || s.turnedBottomHard);
     book.jumpTo(3);
-    s = stackLeaves(book, book.frame());
+    s = stackLeaves(book);
     EXPECT_FALSE(s.turnedTopHard);
     EXPECT_TRUE(s.turnedBottomHard);  // the front cover, under the turned leaves
     EXPECT_FALSE(s.unturnedTopHard);
@@ -132,7 +132,7 @@ TEST(BookStacks, FacesLieOutsideThePagesBelowTheTableFacingUpAndOut) {
     Book book = makeBook(20);
     book.jumpTo(3);
     const BookConfig& c = book.config();
-    const Stacks stacks = bookStacks(c, stackLeaves(book, book.frame()), kLeaf);
+    const Stacks stacks = bookStacks(c, stackLeaves(book), kLeaf);
     const std::vector<Vertex> mesh = vertices(stackMesh(c, stacks));
     ASSERT_EQ(mesh.size(), 2u * 3u * 6u);  // two stacks, three faces, one paper layer each
     const double deepest = std::max(stacks.turned.total(), stacks.unturned.total());
@@ -161,14 +161,14 @@ TEST(BookStacks, FacesLieOutsideThePagesBelowTheTableFacingUpAndOut) {
 TEST(BookStacks, RightToLeftPutsTheTurnedStackOnTheRightAndSingleDisplayLeavesItOut) {
     Book rtl = makeBook(20, Display::Double, Binding::Right);
     rtl.jumpTo(8);  // 8 leaves turned, 2 unturned: the turned stack is the deeper one
-    const Stacks s = bookStacks(rtl.config(), stackLeaves(rtl, rtl.frame()), kLeaf);
+    const Stacks s = bookStacks(rtl.config(), stackLeaves(rtl), kLeaf);
     double right = 0.0;
     for (const Vertex& v : vertices(stackMesh(rtl.config(), s))) right = std::max(right, v.x);
     EXPECT_NEAR(right - rtl.config().pageWidth, s.turned.total(), 1e-6);
 
     Book single = makeBook(20, Display::Single);
     single.jumpTo(8);
-    const Stacks t = bookStacks(single.config(), stackLeaves(single, single.frame()), kLeaf);
+    const Stacks t = bookStacks(single.config(), stackLeaves(single), kLeaf);
     const std::vector<Vertex> mesh = vertices(stackMesh(single.config(), t));
     EXPECT_EQ(mesh.size(), 3u * 6u);
     for (const Vertex& v : mesh) EXPECT_GE(v.x, 0.0);
@@ -179,7 +179,7 @@ TEST(BookStacks, PageEdgeLinesCountTheLeavesAndBoardsAreMarked) {
     hard[18] = hard[19] = true;
     Book book = makeBook(20, Display::Double, Binding::Left, hard);
     book.jumpTo(2);  // unturned: leaves 2..9, the last a board
-    const Stacks s = bookStacks(book.config(), stackLeaves(book, book.frame()), kLeaf);
+    const Stacks s = bookStacks(book.config(), stackLeaves(book), kLeaf);
     double maxS = 0.0;
     int board = 0;
     for (const Vertex& v : vertices(stackMesh(book.config(), s))) {

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "book_camera.hpp"
+#include "book_stacks.hpp"
 #include "leaf_placement.hpp"
 
 namespace {
@@ -24,8 +25,11 @@ using conecurl::kRiffleSpan;
 
 constexpr double kPi = 3.14159265358979323846;
 
-Book makeBook(int pageCount, Display display = Display::Double, Binding binding = Binding::Left, bool center = true) {
+// Paper of no thickness unless asked: the centre shift is then exactly half a page.
+Book makeBook(int pageCount, Display display = Display::Double, Binding binding = Binding::Left, bool center = true,
+              double leafThickness = 0.0) {
     BookConfig config;
+    config.leafThickness = leafThickness;
     config.pageCount = pageCount;
     config.display = display;
     config.binding = binding;
@@ -140,6 +144,23 @@ TEST(Riffle, IsRefusedOneLeafAwayWhileALeafMovesOrIsHeldAndClampsTheTarget) {
     EXPECT_FALSE(book.startTurn(conecurl::TurnDirection::Forward));
 }
 
+TEST(Riffle, CarriedLeavesAreInNeitherStackSoTheStacksGrowAsLeavesLandNotWhenTheRiffleStarts) {
+    Book book = makeBook(400);
+    book.jumpTo(20);
+    ASSERT_TRUE(book.riffleTo(120));
+    conecurl::StackLeaves s = conecurl::stackLeaves(book);
+    EXPECT_EQ(s.turned, 20);        // as before the riffle: nothing has landed yet
+    EXPECT_EQ(s.unturned, 200 - 120);  // the leaves from the target on
+    int lastTurned = s.turned;
+    while (book.animating()) {
+        book.advance(1.0 / 60.0);
+        s = conecurl::stackLeaves(book);
+        EXPECT_GE(s.turned, lastTurned);
+        lastTurned = s.turned;
+    }
+    EXPECT_EQ(lastTurned, 120);
+}
+
 TEST(Riffle, FewerLeavesThanSlotsTurnEachOnce) {
     Book book = makeBook(40);
     ASSERT_TRUE(book.riffleTo(3));
@@ -193,6 +214,33 @@ TEST(CenterShift, SlidesSmoothlyAndMonotonicallyAsTheCoverOpensAndBackAsItCloses
         last = book.centerShift();
     }
     EXPECT_NEAR(last, 0.5 * w, 1e-12);
+}
+
+TEST(CenterShift, WithThicknessAClosedBookCentresItsPageAndTheEdgeBandOfTheStackUnderIt) {
+    for (int pages : {8, 400}) {
+        Book book = makeBook(pages, Display::Double, Binding::Left, true, 0.01);
+        const double w = book.config().pageWidth;
+        const conecurl::Stacks closed = conecurl::bookStacks(book.config(), conecurl::stackLeaves(book), 0.01);
+        ASSERT_GT(closed.unturned.total(), 0.0);
+        EXPECT_EQ(closed.turned.total(), 0.0);
+        EXPECT_DOUBLE_EQ(book.centerShift(), 0.5 * (w + closed.unturned.total())) << pages << " pages";
+        EXPECT_DOUBLE_EQ(book.settledCenterShift(), book.centerShift());
+        book.jumpTo(2);
+        EXPECT_EQ(book.centerShift(), 0.0);  // open: where it always was
+        book.jumpTo(book.lastPosition());
+        const conecurl::Stacks back = conecurl::bookStacks(book.config(), conecurl::stackLeaves(book), 0.01);
+        EXPECT_DOUBLE_EQ(book.centerShift(), -0.5 * (w + back.turned.total()));
+        // Turning the cover over: the settled shift is where the turn lands, mid-turn it slides.
+        book.jumpTo(1);
+        ASSERT_TRUE(book.startTurn(conecurl::TurnDirection::Backward));
+        EXPECT_DOUBLE_EQ(book.settledCenterShift(), 0.5 * (w + closed.unturned.total()));
+        EXPECT_NEAR(book.centerShift(), 0.0, 1e-12);
+    }
+    Book thin = makeBook(8);
+    thin.setLeafThickness(std::nan(""));
+    EXPECT_EQ(thin.config().leafThickness, 0.0);
+    thin.setLeafThickness(1.0);
+    EXPECT_EQ(thin.config().leafThickness, conecurl::kMaxLeafThickness);
 }
 
 TEST(CenterShift, TheCameraLooksAtTheMiddleOfWhatIsOpenSoAClosedBookHasEqualMargins) {

@@ -88,7 +88,8 @@ export class BookView {
   readonly queuedTurns: number;
   /** The WebGL context is lost and not yet restored: turns in flight and a held leaf are paused. */
   readonly contextLost: boolean;
-  setOptions(options: RenderOptions): void;
+  /** The renderer's effects, and the paper's thickness (the book's: Book.setThickness). */
+  setOptions(options: RenderOptions & { thickness?: boolean | number }): void;
   /** Resolves true once every turn has landed, false if the book cannot turn that way. */
   next(): Promise<boolean>;
   prev(): Promise<boolean>;

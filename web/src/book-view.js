@@ -45,6 +45,7 @@ export class BookView {
       hardPages: options.hardPages,
       schedule: options.schedule,
       center: options.center,
+      thickness: options.thickness ?? true,
     });
     this._target = `!conecurl-canvas-${nextTargetId++}`;
     engine.specialHTMLTargets[this._target] = canvas;
@@ -57,7 +58,6 @@ export class BookView {
     }
     this.renderer.setOptions({
       lighting: options.lighting ?? true, shadows: options.shadows ?? true, gutter: options.gutter ?? true,
-      thickness: options.thickness ?? true,
     });
     this._loop = new engine.FrameLoop(this.book, this.renderer);
     this._ticks = { moving: engine.TICK_MOVING, settled: engine.TICK_SETTLED, pagesChanged: engine.TICK_PAGES_CHANGED };
@@ -236,8 +236,10 @@ export class BookView {
     this.requestRender();
   }
 
-  setOptions(options) {
-    this.renderer.setOptions(options);
+  /** { lighting, shadows, gutter } (the renderer's) and thickness (the book's: its stacks' depth, hence its layout). */
+  setOptions({ thickness, ...effects }) {
+    if (thickness !== undefined) this.book.setThickness(thickness);
+    this.renderer.setOptions(effects);
     this.requestRender();
   }
 

@@ -61,6 +61,10 @@ export interface BookOptions {
   hardPages?: number[];
   /** 'paper' (default, Nuon's three phases) or 'smooth' (the same key poses, C1 joins). */
   schedule?: 'paper' | 'smooth';
+  /** A closed book (one cover alone) sits centred and slides open as the cover turns; default true. */
+  center?: boolean;
+  /** A leaf's thickness as a fraction of the page width (0 to 0.02) for the stacks' depth and edges; true: 0.004; false or 0: none. RangeError otherwise. */
+  thickness?: boolean | number;
 }
 
 /** Book state and animation (C++). Invalid options throw a TypeError naming the option. Call delete(). */
@@ -84,6 +88,13 @@ export interface Book {
   advance(seconds: number): boolean;
   animating(): boolean;
   jumpTo(position: number): void;
+  /**
+   * Riffles to a far position: up to 6 leaves spread over the way, staggered, landing within
+   * RIFFLE_SPAN turn durations. False (nothing changes) one leaf away or less, or while a leaf moves or is held.
+   */
+  riffleTo(position: number): boolean;
+  /** The paper's thickness from now on, as the `thickness` option takes it (RangeError otherwise). */
+  setThickness(thickness: boolean | number): void;
   /** One page or two from now on, keeping the first visible page; turns in flight land. TypeError for other values. */
   setDisplay(display: 'single' | 'double'): void;
   /**
@@ -146,8 +157,6 @@ export interface RenderOptions {
   lighting?: boolean;
   shadows?: boolean;
   gutter?: boolean;
-  /** A leaf's thickness as a fraction of the page width (0 to 0.02) for the stacks' edges; true: 0.004; false or 0: none. */
-  thickness?: boolean | number;
 }
 
 /** The WebGL2 renderer of a book. Call delete() to release its context. */
