@@ -36,6 +36,20 @@ test('browser: demo "Jump to page" riffles to the page asked for (one turnstart 
   expect(await page.evaluate(() => window.starts.map((s) => s.riffle))).toEqual([true]);
 });
 
+test('browser: demo Thickness and Sound toggles change the running book live', async ({ page }) => {
+  await openReady(page, '/web/demo/');
+  await page.evaluate(() => { window.firstBook = window.conecurlDemo.book; });
+  expect(await page.evaluate(() => window.conecurlDemo.book.options.thickness)).toBe(true);
+  await page.uncheck('#thickness');
+  await page.check('#sound');
+  expect(await page.evaluate(() => [window.conecurlDemo.book.options.thickness, window.conecurlDemo.book.options.sound])).toEqual([false, true]);
+  // A gesture on the book starts the sound: its status leaves 'waiting'.
+  await page.click('#next');
+  await page.locator('#book canvas').click({ position: { x: 10, y: 10 } });
+  await expect.poll(() => page.evaluate(() => window.conecurlDemo.book.sound.state)).not.toBe('waiting');
+  expect(await page.evaluate(() => window.conecurlDemo.book === window.firstBook)).toBe(true);  // no rebuild
+});
+
 test('browser: demo turns with the arrow keys when the book has focus', async ({ page }) => {
   await openReady(page, '/web/demo/?page=9');
   await page.selectOption('#speed', '0.5');

@@ -88,6 +88,8 @@ function buildBook(startPage) {
       lighting: $('lighting').checked,
       shadows: $('shadows').checked,
       gutter: $('gutter').checked,
+      thickness: $('thickness').checked,
+      sound: $('sound').checked,
       label: 'The Curl of the Page, a demo book',
     });
     book.addEventListener('turnstart', () => { document.body.dataset.state = 'turning'; });
@@ -132,7 +134,8 @@ async function main() {
   }
   $('schedule').addEventListener('change', () => showSchedule(Number($('scrub').value)));
   $('display').addEventListener('change', () => book.setOptions({ display: $('display').value }));  // live
-  for (const id of ['lighting', 'shadows', 'gutter']) {
+  // Live: the effects, the stacks' thickness and the page sound (it starts with the next gesture on the book).
+  for (const id of ['lighting', 'shadows', 'gutter', 'thickness', 'sound']) {
     $(id).addEventListener('change', () => book.setOptions({ [id]: $(id).checked }));
   }
   // For the console and scripts/measure-turn.mjs (which times the engine's own BookView).
