@@ -185,6 +185,10 @@ const FRAMES = {
   'single-t0.30': 'position=2&display=single&turn=forward&t=0.3',
   'no-light-shadow-gutter-t0.30': 'position=1&turn=forward&t=0.3&lighting=off&shadows=off&gutter=off',
   'two-in-flight': 'position=1&turn=forward&t=0.45&then=0.12',
+  'closed-centred': 'pages=40&position=0&hard=0,39',
+  'closed-back-centred': 'pages=40&position=20&hard=0,39',
+  'riffle-forward': 'pages=40&position=2&riffle=16&at=0.55',
+  'riffle-home': 'pages=40&position=14&riffle=0&at=0.6&hard=0,39',
 };
 for (const [name, query] of Object.entries(FRAMES)) {
   test(`browser: book frame ${name} matches its reference image`, async ({ page }) => {
