@@ -313,51 +313,45 @@ export class BookController extends EventTarget {
 
   async _turn(direction) {
     this._alive();
-    if (this._zoomed()) this._zoomAbout(1, 0, 0);  // a turn asked for by code shows the whole book again
-    const stale = this._html?.staleAmong(this.openPages) ?? [];
-    if (stale.length > 0) {
-      await this._redraw(stale);
-      if (this._destroyed) return false;
-    }
+    const ready = this._readyToMove();
+    if (ready !== true && !(await ready)) return false;  // no wait unless a page is drawn again: next() starts at once
     if (!this._animates()) return this._jumpOneLeaf(direction);
-    const surface = this._surface;
-    const turning = surface.turn(direction);
-    if (surface.animating) {
-      this._hideLayers();
-      this._emit('turnstart', { direction, page: this.page });
-    }
-    this._store.update();
-    const turned = await turning;
-    if (this._destroyed) return false;
-    this._store.update();
-    if (turned) this._landed();
-    return turned;
+    return this._follow(this._surface.turn(direction), { direction });
   }
 
   // A riffle to a far position, once leaves in flight have landed (false if a later flip came first).
   async _riffle(target, flip) {
     await this._surface.settle();
-    if (this._destroyed || flip !== this._flips) return false;
-    if (this._zoomed()) this._zoomAbout(1, 0, 0);
-    const stale = this._html?.staleAmong(this.openPages) ?? [];
-    if (stale.length > 0) await this._redraw(stale);
-    if (this._destroyed || flip !== this._flips) return false;
+    if (this._destroyed || flip !== this._flips || !(await this._readyToMove()) || flip !== this._flips) return false;
     const direction = target > this._surface.position ? 'forward' : 'backward';
     const riffling = this._surface.riffle(target);
     if (!this._surface.animating) return this._turn(direction);  // refused: leaf by leaf then
-    this._hideLayers();
-    this._emit('turnstart', { direction, page: this.page, riffle: true });
+    return this._follow(riffling, { direction, riffle: true });
+  }
+
+  // Before leaves move: a turn asked for by code shows the whole book again, and open HTML pages whose
+  // content changed since their textures were made are drawn again: true at once if none, else a
+  // promise of whether the book is still alive once they are.
+  _readyToMove() {
+    if (this._zoomed()) this._zoomAbout(1, 0, 0);
+    const stale = this._html?.staleAmong(this.openPages) ?? [];
+    if (stale.length === 0) return true;
+    return Promise.all(stale.map((index) => this._store.refresh(index))).then(() => !this._destroyed);
+  }
+
+  // Leaves set moving by the surface (`moving` resolves whether they landed): turnstart, the pages they
+  // show, then turned.
+  async _follow(moving, detail) {
+    if (this._surface.animating) {
+      this._hideLayers();
+      this._emit('turnstart', { ...detail, page: this.page });
+    }
     this._store.update();
-    const landed = await riffling;
+    const landed = await moving;
     if (this._destroyed) return false;
     this._store.update();
     if (landed) this._landed();
     return landed;
-  }
-
-  // Open HTML pages whose content changed since their textures were made are drawn again before they move.
-  _redraw(pages) {
-    return Promise.all(pages.map((index) => this._store.refresh(index)));
   }
 
   /** Whether a press at a viewport point may turn a page there (the `turnArea` option). */
