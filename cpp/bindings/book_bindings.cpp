@@ -178,8 +178,9 @@ bool startHeld(Book& book, val grip) {
 // the distance in pixels left between them (0 where the pointer is within reach).
 double dragHeld(Book& book, val grip, double x, double y, double width, double height) {
     if (!book.holding()) js::throwError("Error", "no held turn to drag (startHeldTurn first)");
-    const DragPose solved = solveDragPose(book, cameraOf(book, width, height), gripFromJs(grip), pixelOf(x, y),
-                                          book.heldTarget());
+    cameraOf(book, width, height);  // checks the size
+    const DragPose solved = solveSlidingDragPose(book, static_cast<int>(width), static_cast<int>(height), gripFromJs(grip),
+                                                 pixelOf(x, y), book.heldTarget());
     book.setHeldTarget(solved.pose);
     return solved.errorPixels;
 }

@@ -303,13 +303,23 @@ int Book::stackTop(bool turned) const {
     return leaf;
 }
 
-double Book::centerShift() const {
+double Book::centerShift() const { return shiftOf(frame()); }
+
+double Book::centerShiftHolding(const CurlParams& pose) const {
+    BookFrame f = frame();
+    const int held = heldLeaf();
+    for (int i = 0; i < f.count; ++i) {
+        if (!f.leaves[i].resting && f.leaves[i].leaf == held) f.leaves[i].curl = pose;
+    }
+    return shiftOf(f);
+}
+
+double Book::shiftOf(const BookFrame& f) const {
     if (!config_.center || config_.display == Display::Single) return 0.0;
     // How much of a page lies on each side, leaf by leaf: a leaf turned by rho covers the turned side
     // by (1 - cos rho) / 2 of its width. A backward turn is posed mirrored: its rho runs the other way.
     double turnedSide = 0.0;
     double unturnedSide = 0.0;
-    const BookFrame f = frame();
     for (int i = 0; i < f.count; ++i) {
         const double over = 0.5 * (1.0 - std::cos(f.leaves[i].curl.rho));
         const double turned = f.leaves[i].mirrored ? 1.0 - over : over;

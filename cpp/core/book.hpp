@@ -141,6 +141,8 @@ public:
     double centerShift() const;
     // The same once turns in flight have landed (where the open pages will lie).
     double settledCenterShift() const;
+    // centerShift() with the held leaf shown at `pose` (the camera a drag's pose would be seen through).
+    double centerShiftHolding(const CurlParams& pose) const;
 
     // The top leaf of the turned (or unturned) stack: the nearest to the position that is not in flight
     // (nor carried by a riffling leaf); -1 (or leafCount()) for an empty stack. The leaves below it
@@ -172,6 +174,7 @@ private:
     };
     CurlParams poseOf(const Turn& turn) const;
     double shiftFor(double unturnedSide, double turnedSide, const Stacks& stacks) const;
+    double shiftOf(const BookFrame& frame) const;
     int heldIndex() const;
     int frontPageOf(int leaf) const;
     int backPageOf(int leaf) const;

@@ -84,9 +84,14 @@ int gripLeaf(const Book& book, const Grip& grip) {
 
 class PoseProblem {
 public:
-    PoseProblem(const Book& book, const BookCamera& camera, const Grip& grip, glm::dvec2 target)
+    // `cameraShift`: the centre shift `camera` was made with, for a book that slides as the leaf turns
+    // (a closed book's cover): each pose is then seen through the camera it would have. NaN: a camera
+    // that stays where it is.
+    PoseProblem(const Book& book, const BookCamera& camera, const Grip& grip, glm::dvec2 target,
+                double cameraShift = std::nan(""))
         : book_(book), camera_(camera), grip_(grip), target_(target), placement_(placementOf(book, grip)),
-          leaf_(gripLeaf(book, grip)), bounds_(boundsFor(book.isHardLeaf(leaf_))) {
+          leaf_(gripLeaf(book, grip)), bounds_(boundsFor(book.isHardLeaf(leaf_))), cameraShift_(cameraShift),
+          slide_(glm::dvec3(unturnedSide(book.config().binding), 0.0)) {
         // The shapes the schedule passes through, (cos theta, weighted log apex distance), densest
         // near the start where theta falls fastest. The prior is the distance from this curve: a
         // dragged page may take any of the schedule's shapes at any rotation.
@@ -101,7 +106,10 @@ public:
     double height() const { return book_.config().pageHeight; }
 
     glm::dvec3 worldOf(glm::dvec2 pagePoint, const CurlParams& pose) const {
-        return glm::dvec3(placement_.pageToWorld * glm::dvec4(curlPoint(pagePoint, pose), 1.0));
+        const glm::dvec3 world(placement_.pageToWorld * glm::dvec4(curlPoint(pagePoint, pose), 1.0));
+        if (std::isnan(cameraShift_)) return world;
+        // The camera moving by the pose's shift is the world moving the other way past this camera.
+        return world - (book_.centerShiftHolding(pose) - cameraShift_) * slide_;
     }
 
     glm::dvec2 pixelOf(const CurlParams& pose) const { return worldToPixel(camera_, worldOf(grip_.pagePoint, pose)); }
@@ -230,6 +238,8 @@ private:
     LeafPlacement placement_;
     int leaf_;
     Bounds bounds_;
+    double cameraShift_;
+    glm::dvec3 slide_;  // world direction the camera moves in as the shift grows
 };
 
 }  // namespace
@@ -285,9 +295,9 @@ glm::dvec2 gripPixel(const Book& book, const BookCamera& camera, const Grip& gri
     return PoseProblem(book, camera, grip, {0.0, 0.0}).pixelOf(pose);
 }
 
-DragPose solveDragPose(const Book& book, const BookCamera& camera, const Grip& grip, glm::dvec2 pixel,
-                       const CurlParams& start) {
-    const PoseProblem problem(book, camera, grip, pixel);
+namespace {
+
+DragPose solvePose(const PoseProblem& problem, const Book& book, const Grip& grip, const CurlParams& start) {
     const double h = problem.height();
     const Unknowns from = toUnknowns(start, h);
     auto pixelError = [&](const Unknowns& u) {
@@ -343,6 +353,20 @@ DragPose solveDragPose(const Book& book, const BookCamera& camera, const Grip& g
         }
     }
     return DragPose{sanitize(toParams(best, h)), bestError};
+}
+
+}  // namespace
+
+DragPose solveDragPose(const Book& book, const BookCamera& camera, const Grip& grip, glm::dvec2 pixel,
+                       const CurlParams& start) {
+    return solvePose(PoseProblem(book, camera, grip, pixel), book, grip, start);
+}
+
+DragPose solveSlidingDragPose(const Book& book, int width, int height, const Grip& grip, glm::dvec2 pixel,
+                              const CurlParams& start) {
+    const double shift = book.centerShift();  // the camera of the frame shown now
+    const BookCamera camera = bookCamera(book.config(), width, height, book.zoom(), shift);
+    return solvePose(PoseProblem(book, camera, grip, pixel, shift), book, grip, start);
 }
 
 bool shouldCompleteTurn(const Book& book, const BookCamera& camera, const Grip& grip, glm::dvec2 pixel,

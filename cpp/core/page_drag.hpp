@@ -44,6 +44,12 @@ struct DragPose {
 DragPose solveDragPose(const Book& book, const BookCamera& camera, const Grip& grip, glm::dvec2 pixel,
                        const CurlParams& start);
 
+// The same on a `width` x `height` canvas through the camera of the pose found: a closed book slides as
+// its cover turns (Book::centerShiftHolding), so the camera depends on the pose: the shift whose pose,
+// solved through its camera, has that shift, to a hundredth of a pixel (secant steps, a few at most).
+DragPose solveSlidingDragPose(const Book& book, int width, int height, const Grip& grip, glm::dvec2 pixel,
+                              const CurlParams& start);
+
 // On release at `pixel` moving at `velocity` (pixels per second): complete the turn when the pointer
 // is past the spine, unless flung back; fall back when short of it, unless flung on.
 bool shouldCompleteTurn(const Book& book, const BookCamera& camera, const Grip& grip, glm::dvec2 pixel,

@@ -154,3 +154,68 @@ test('browser: End, Home and a link to a far page riffle too; a near flip still 
   const near = await outcome();
   expect(near).toMatchObject({ page: 45, riffle: false, starts: 2 });
 });
+
+test('browser: dragging the cover of a closed book keeps its corner under the pointer while the book slides open (GPU vertices)', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  await page.evaluate(() => window.openBook({ pages: 8, display: 'double', duration: 600 }));
+  // The pointer follows the path the cover's bottom free corner takes in a scheduled turn, as drawn:
+  // a twin engine Book posed at each t gives the corner and the camera of that frame (it slides).
+  const path = await page.evaluate(() => {
+    const view = window.book.surface;
+    const { engine } = view;
+    const { width, height } = view.fitCanvas();
+    const rect = view.canvas.getBoundingClientRect();
+    const twin = engine.Book.create({ pageCount: 8, display: 'double' });
+    const out = [];
+    for (let i = 0; i <= 24; i++) {
+      twin.jumpTo(0);
+      twin.startTurn('forward');
+      twin.setLatestTurnProgress((0.85 * i) / 24);
+      const vp = twin.viewProjection(width, height);
+      const draw = twin.frame().find((leaf) => !leaf.resting);
+      const p = engine.leafPointToWorld(draw, 'left', twin.pageHeight(), twin.pageWidth(), 0);
+      const cx = vp[0] * p.x + vp[4] * p.y + vp[8] * p.z + vp[12];
+      const cy = vp[1] * p.x + vp[5] * p.y + vp[9] * p.z + vp[13];
+      const cw = vp[3] * p.x + vp[7] * p.y + vp[11] * p.z + vp[15];
+      out.push({ x: rect.left + ((cx / cw + 1) / 2) * rect.width, y: rect.top + ((1 - cy / cw) / 2) * rect.height });
+    }
+    twin.delete();
+    return out;
+  });
+  // Where the GPU drew the held leaf's bottom free corner, under the camera of that frame.
+  const corner = () => page.evaluate(() => {
+    const view = window.book.surface;
+    const { width, height } = view.fitCanvas();
+    const vp = view.book.viewProjection(width, height);
+    const rect = view.canvas.getBoundingClientRect();
+    const index = view.book.frame().findIndex((leaf) => !leaf.resting);
+    const vertices = view.renderer.captureLeaf(view.book, index);
+    const points = view.renderer.gridPoints();
+    const w = view.book.pageWidth();
+    let best = 0;
+    for (let i = 0; i < points.length / 2; i++) {
+      if (Math.hypot(points[2 * i] - w, points[2 * i + 1]) < Math.hypot(points[2 * best] - w, points[2 * best + 1])) best = i;
+    }
+    const [x, y, z] = [vertices[6 * best], vertices[6 * best + 1], vertices[6 * best + 2]];
+    const cx = vp[0] * x + vp[4] * y + vp[8] * z + vp[12];
+    const cy = vp[1] * x + vp[5] * y + vp[9] * z + vp[13];
+    const cw = vp[3] * x + vp[7] * y + vp[11] * z + vp[15];
+    return { x: rect.left + ((cx / cw + 1) / 2) * rect.width, y: rect.top + ((1 - cy / cw) / 2) * rect.height };
+  });
+  await page.mouse.move(path[0].x, path[0].y);
+  await page.mouse.down();
+  let worst = 0;
+  for (let i = 1; i < path.length; i++) {
+    await page.mouse.move(path[i].x, path[i].y);
+    if (i % 4 === 0 || i === path.length - 1) {
+      await page.waitForFunction(() => !window.book.surface.book.moving());
+      const drawn = await corner();
+      worst = Math.max(worst, Math.hypot(drawn.x - path[i].x, drawn.y - path[i].y));
+    }
+  }
+  console.log(`cover drag on a centred closed book: worst ${worst.toFixed(3)} CSS px from the pointer over ${path.length} moves`);
+  expect(worst, 'distance from the pointer to the drawn corner, CSS px').toBeLessThan(2);
+  await page.mouse.up();
+  await page.waitForFunction(() => !window.book.animating);
+  expect(await page.evaluate(() => window.book.page)).toBe(1);
+});

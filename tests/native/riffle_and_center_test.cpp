@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -12,6 +14,7 @@
 #include "book_camera.hpp"
 #include "book_stacks.hpp"
 #include "leaf_placement.hpp"
+#include "page_drag.hpp"
 
 namespace {
 
@@ -241,6 +244,36 @@ TEST(CenterShift, WithThicknessAClosedBookCentresItsPageAndTheEdgeBandOfTheStack
     EXPECT_EQ(thin.config().leafThickness, 0.0);
     thin.setLeafThickness(1.0);
     EXPECT_EQ(thin.config().leafThickness, conecurl::kMaxLeafThickness);
+}
+
+TEST(CenterShift, ADraggedCoverIsSolvedThroughTheCameraOfItsOwnPoseSoItsCornerStaysUnderThePointer) {
+    for (Binding binding : {Binding::Left, Binding::Right}) {
+        Book book = makeBook(8, Display::Double, binding, true, 0.004);
+        const conecurl::BookCamera rest = conecurl::bookCamera(book, 800, 600);
+        const conecurl::OpenPages open = conecurl::openPagePlaces(book, rest);
+        const conecurl::PixelRect r = open.places[0].rect;
+        const double freeX = binding == Binding::Left ? r.x + r.width - 2.0 : r.x + 2.0;
+        const auto grip = conecurl::gripAt(book, rest, {freeX, r.y + r.height - 2.0});
+        ASSERT_TRUE(grip);
+        ASSERT_TRUE(book.startHeldTurn(conecurl::TurnDirection::Forward, grip->flippedY));
+        double worstSliding = 0.0;
+        double worstFixed = 0.0;
+        for (int i = 1; i <= 10; ++i) {
+            // Where the corner is drawn at a pose of the turn: through the camera of that pose.
+            const conecurl::CurlParams target = book.scheduledPose(0, 0.08 * i);
+            const conecurl::BookCamera seen = conecurl::bookCamera(book.config(), 800, 600, book.zoom(), book.centerShiftHolding(target));
+            const glm::dvec2 pointer = conecurl::gripPixel(book, seen, *grip, target);
+            const conecurl::DragPose sliding = conecurl::solveSlidingDragPose(book, 800, 600, *grip, pointer, book.heldTarget());
+            const conecurl::DragPose fixed = conecurl::solveDragPose(book, conecurl::bookCamera(book, 800, 600), *grip, pointer, book.heldTarget());
+            book.setHeldPose(sliding.pose);
+            const glm::dvec2 drawn = conecurl::gripPixel(book, conecurl::bookCamera(book, 800, 600), *grip, book.heldPose());
+            worstSliding = std::max(worstSliding, glm::length(drawn - pointer));
+            const conecurl::BookCamera fixedSeen = conecurl::bookCamera(book.config(), 800, 600, book.zoom(), book.centerShiftHolding(fixed.pose));
+            worstFixed = std::max(worstFixed, glm::length(conecurl::gripPixel(book, fixedSeen, *grip, fixed.pose) - pointer));
+        }
+        EXPECT_LT(worstSliding, 0.05);  // pixels
+        EXPECT_GT(worstFixed, 1.0);     // solving through the camera of the pose before would miss it
+    }
 }
 
 TEST(CenterShift, TheCameraLooksAtTheMiddleOfWhatIsOpenSoAClosedBookHasEqualMargins) {
