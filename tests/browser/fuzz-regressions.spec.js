@@ -128,3 +128,18 @@ test('browser: an HTML page drawn while the book is squeezed to 3x1 px gets a te
   expect(result.state).toBe('loaded');
   expect(problems).toEqual([]);
 });
+
+test('browser: a far flip asked while a leaf turns, then a switch from single to double display, riffles to the page in the new display (it riffled to the old position: RangeError, seed 273907716)', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    await window.openBook({ pages: 9, display: 'single', duration: 300 });
+    const book = window.book;
+    book.next();
+    const flipping = book.flip(7);  // waits for the turn in flight, then riffles
+    book.setOptions({ display: 'double' });  // position 7 of single display is past double's last (5)
+    const outcome = await flipping.then(() => 'resolved', (error) => String(error));
+    await window.settle();
+    return { outcome, page: book.page, open: book.openPages, animating: book.animating };
+  });
+  expect(result).toEqual({ outcome: 'resolved', page: 7, open: [7, 8], animating: false });
+});

@@ -159,7 +159,7 @@ export class BookController extends EventTarget {
       const target = this._surface.positionOfPage(index);  // again each leaf: the display may switch
       if (this._surface.position === target) return;
       const far = Math.abs(target - this._surface.position) > NEAR_LEAVES;
-      const turned = await (far ? this._riffle(target, flip) : this._turn(target > this._surface.position ? 'forward' : 'backward'));
+      const turned = await (far ? this._riffle(index, flip) : this._turn(target > this._surface.position ? 'forward' : 'backward'));
       if (!turned || this._destroyed || flip !== this._flips) return;
     }
   }
@@ -319,10 +319,13 @@ export class BookController extends EventTarget {
     return this._follow(this._surface.turn(direction), { direction });
   }
 
-  // A riffle to a far position, once leaves in flight have landed (false if a later flip came first).
-  async _riffle(target, flip) {
+  // A riffle to page `index`, once leaves in flight have landed (false if a later flip came first). The
+  // position is found after the wait: the display may have switched meanwhile.
+  async _riffle(index, flip) {
     await this._surface.settle();
     if (this._destroyed || flip !== this._flips || !(await this._readyToMove()) || flip !== this._flips) return false;
+    const target = this._surface.positionOfPage(index);
+    if (target === this._surface.position) return true;
     const direction = target > this._surface.position ? 'forward' : 'backward';
     const riffling = this._surface.riffle(target);
     if (!this._surface.animating) return this._turn(direction);  // refused: leaf by leaf then
