@@ -143,3 +143,15 @@ test('browser: a far flip asked while a leaf turns, then a switch from single to
   });
   expect(result).toEqual({ outcome: 'resolved', page: 7, open: [7, 8], animating: false });
 });
+
+test('browser: destroy() in the task a far flip started in ends the flip quietly (the riffle read the destroyed surface: TypeError, seed 274878860)', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const outcome = await page.evaluate(async () => {
+    await window.openBook({ pages: 20, display: 'double', duration: 300 });
+    const book = window.book;
+    const flipping = book.flip(15);
+    Promise.resolve().then(() => book.destroy());  // after the riffle's first wait, before its next
+    return flipping.then(() => 'resolved', (error) => String(error));
+  });
+  expect(outcome).toBe('resolved');
+});

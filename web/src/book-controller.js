@@ -323,7 +323,9 @@ export class BookController extends EventTarget {
   // position is found after the wait: the display may have switched meanwhile.
   async _riffle(index, flip) {
     await this._surface.settle();
-    if (this._destroyed || flip !== this._flips || !(await this._readyToMove()) || flip !== this._flips) return false;
+    if (this._destroyed || flip !== this._flips) return false;
+    const ready = this._readyToMove();
+    if ((ready !== true && !(await ready)) || flip !== this._flips) return false;
     const target = this._surface.positionOfPage(index);
     if (target === this._surface.position) return true;
     const direction = target > this._surface.position ? 'forward' : 'backward';
