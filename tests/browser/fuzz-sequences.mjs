@@ -105,6 +105,12 @@ const flipIndex = fc.oneof(
   { weight: 1, arbitrary: fc.constantFrom(-1, 1.5, Number.NaN, Number.POSITIVE_INFINITY, '3', null, undefined, 1e9) },
 );
 
+// Where a live page change acts: mostly in or just past the book, sometimes not a page index at all.
+const spliceIndex = fc.oneof(
+  { weight: 6, arbitrary: fc.integer({ min: 0, max: 14 }) },
+  { weight: 1, arbitrary: fc.constantFrom(-1, 1.5, Number.NaN, '2', null) },
+);
+
 /** One call or event. Weights keep the costly ones (a new WebGL context, real frames) rare. */
 export const command = fc.oneof(
   { weight: 40, arbitrary: fc.constant(['next']) },
@@ -118,6 +124,9 @@ export const command = fc.oneof(
   { weight: 35, arbitrary: fc.tuple(fc.constant('pointer'), fc.constantFrom('down', 'move', 'move', 'move', 'up', 'cancel'), pointerKind, fraction, fraction) },
   { weight: 4, arbitrary: fc.constant(['leave']) },
   { weight: 1, arbitrary: fc.tuple(fc.constant('resize'), fc.integer({ min: 0, max: 320 }), fc.integer({ min: 0, max: 200 })) },
+  { weight: 5, arbitrary: fc.tuple(fc.constant('insert'), spliceIndex, fc.integer({ min: 1, max: 3 }), flag) },
+  { weight: 4, arbitrary: fc.tuple(fc.constant('remove'), spliceIndex, fc.oneof(fc.integer({ min: 1, max: 3 }), fc.constantFrom(0, -1, 2.5))) },
+  { weight: 4, arbitrary: fc.tuple(fc.constant('replace'), spliceIndex, flag) },
   { weight: 1, arbitrary: fc.constant(['destroy']) },
   { weight: 1, arbitrary: createCommand },
 );

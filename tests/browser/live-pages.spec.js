@@ -197,6 +197,50 @@ test('browser: HTML pages inserted into a live book are mounted and drawn, later
   expect(problems).toEqual([]);
 });
 
+test('browser: the first HTML pages inserted into a book of images bring their layer: each is mounted and drawn, also when asked while a leaf turns (the fuzz test found them loaded unmounted: no texture)', async ({ page }) => {
+  const problems = await openReady(page, '/tests/browser/fixtures/html-fixture.html');
+  const result = await page.evaluate(async () => {
+    const card = (text) => {
+      const div = document.createElement('div');
+      div.textContent = text;
+      div.style.cssText = 'width:100%;height:100%;background:#86efac';
+      return div;
+    };
+    window.book = await window.Flipbook.create(window.container,
+      { pages: [0, 1, 2].map((i) => window.makeNumberedPage(i)), display: 'double', startPage: 2, duration: 40 });
+    const book = window.book;
+    const changes = [];
+    for (let k = 0; k < 3; k++) {
+      book.next();
+      changes.push(book.insertPages(0, [card(`card ${k}`)]));  // waits for the turn, the first for the layer's module
+    }
+    await Promise.all(changes);
+    while (book.animating) await new Promise((resolve) => requestAnimationFrame(resolve));
+    await book.whenIdle();
+    const html = [0, 1, 2].map((i) => ({ state: book.pageState(i).state, texture: Boolean(book.surface.pageImageSize(i)) }));
+    return { html, sheets: book.element.querySelectorAll('.conecurl-html-page').length, count: book.pageCount };
+  });
+  expect(result.count).toBe(6);
+  expect(result.sheets).toBe(3);
+  expect(result.html.map((p) => p.state)).toEqual(['loaded', 'loaded', 'loaded']);
+  expect(problems).toEqual([]);
+});
+
+test('browser: a page change asked for right after create() lets the held events out first, so ready tells of the book as it was (fuzz seed 275635925)', async ({ page }) => {
+  const problems = await openReady(page, FIXTURE);
+  const heard = await page.evaluate(async () => {
+    const pages = [0, 1, 2, 3].map((i) => window.makeNumberedPage(i));
+    const book = await window.Flipbook.create(window.container, { pages, startPage: 1, display: 'single' });
+    const heard = [];
+    for (const type of ['ready', 'pageschange']) book.addEventListener(type, (e) => heard.push([type, e.detail.page, book.pageCount]));
+    await book.removePages(1, 3);  // at once, before the held events' task
+    await new Promise((resolve) => setTimeout(resolve, 50));
+    return heard;
+  });
+  expect(heard).toEqual([['ready', 1, 4], ['pageschange', 0, 1]]);
+  expect(problems).toEqual([]);
+});
+
 test('browser: with hash: true, pages inserted before the open page rewrite #page=N in place (no new history entry)', async ({ page }) => {
   const problems = await openReady(page, `${FIXTURE}#page=3`);
   const result = await page.evaluate(async () => {

@@ -190,7 +190,7 @@ export class BookController extends EventTarget {
       entries: this._pages, store: this._store, hardCovers: this._settings.hardCovers, surface: () => this._surface,
       html: () => this._html, attachHtml: (HtmlPages) => this._mountHtml(HtmlPages), page: () => this.page,
       pdf: () => Boolean(this._pdf), alive: () => this._alive(), shown: () => this._showOpenPages(),
-      emit: (type, detail) => this._emit(type, detail),
+      emit: (type, detail) => this._emit(type, detail), flushEvents: () => this._events.flush(),
     }));
   }
 

@@ -36,6 +36,11 @@ export class BookEvents {
     setTimeout(() => this.releaseNow(), 0);
   }
 
+  /** The book is about to change under what is held (its pages): once create() resolved, let it out first. */
+  flush() {
+    if (this._held && this._resolved) this.releaseNow();
+  }
+
   releaseNow() {
     const held = this._held ?? [];
     this._held = null;

@@ -82,8 +82,10 @@ export class HtmlPages {
   // An HTML page entry becomes page `index`: its element is mounted, its `src` rasterises it.
   _adopt(index, entry) {
     if (!entry.html) return;
-    this._pages.set(index, this._mount(index, entry.html, this._host));
-    entry.src = (i, size) => this.snapshot(i, size);
+    const page = this._mount(index, entry.html, this._host);
+    this._pages.set(index, page);
+    // By the page, not the index it had: pages inserted or removed before it renumber it while it loads.
+    entry.src = (_, size) => this.snapshot(page.index, size);
   }
 
   /**

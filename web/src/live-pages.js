@@ -8,7 +8,8 @@ export class LivePages {
   /**
    * @param {{ entries: object[], store: object, surface: () => object, html: () => object|null,
    *           attachHtml: (HtmlPages: Function) => void, page: () => number, hardCovers: boolean, pdf: () => boolean,
-   *           alive: () => void, shown: () => void, emit: (type: string, detail: object) => void }} book
+   *           alive: () => void, shown: () => void, emit: (type: string, detail: object) => void,
+   *           flushEvents: () => void }} book
    */
   constructor(book) {
     this._book = book;
@@ -19,9 +20,9 @@ export class LivePages {
   /** Inserts `pages` before page `at` (at === pageCount: after the last). */
   insert(at, pages) {
     const entries = this._entries('insertPages', pages, 'pages', this._count() + (Array.isArray(pages) ? pages.length : 0));
-    return this._enqueue(entries, () => {
+    return this._enqueue(entries, (HtmlPages) => {
       this._check('insertPages', 'at', at, this._count());
-      return this._splice('insert', at, 0, entries);
+      return this._splice('insert', at, 0, entries, HtmlPages);  // the first HTML pages of a book bring their layer
     });
   }
 
@@ -96,7 +97,12 @@ export class LivePages {
   // and the book rests. HTML pages coming into a book without any first load their module.
   async _enqueue(entries, apply) {
     const needsHtml = entries.some((entry) => entry.html) && !this._book.html();
-    if (this._pending === 0 && !needsHtml && !this._book.surface().animating) return apply(null);
+    // Events held from create() tell of the book before the change: they go out first.
+    const applyNow = (HtmlPages) => {
+      this._book.flushEvents();
+      return apply(HtmlPages);
+    };
+    if (this._pending === 0 && !needsHtml && !this._book.surface().animating) return applyNow(null);
     this._pending++;
     const previous = this._last;
     const run = (async () => {
@@ -108,7 +114,7 @@ export class LivePages {
         if (!surface.animating) break;
         await surface.settle();  // turns in flight land (and a held leaf is let go) before the pages change
       }
-      return apply(HtmlPages);
+      return applyNow(HtmlPages);
     })();
     this._last = run;
     try {
