@@ -155,3 +155,20 @@ test('browser: destroy() in the task a far flip started in ends the flip quietly
   });
   expect(outcome).toBe('resolved');
 });
+
+test('browser: an animated flip whose page is removed while it turns ends quietly where the book is (it asked the engine for a page past the end: RangeError, seed 275849420)', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    await window.openBook({ pages: 6, display: 'double', duration: 200, startPage: 1 });
+    const book = window.book;
+    const flipping = book.flip(5);  // two leaves on: leaf by leaf
+    await book.removePages(1, 3);  // waits for the first leaf to land; page 5 is gone after it
+    const outcome = await flipping.then(() => 'resolved', (error) => String(error));
+    await window.settle();
+    return { outcome, count: book.pageCount, page: book.page, animating: book.animating };
+  });
+  expect(result.outcome).toBe('resolved');
+  expect(result.count).toBe(3);
+  expect(result.page).toBeLessThan(3);
+  expect(result.animating).toBe(false);
+});

@@ -156,6 +156,7 @@ export class BookController extends EventTarget {
       return;
     }
     for (;;) {
+      if (index >= this.pageCount) return;  // pages removed meanwhile (removePages): that page is gone
       const target = this._surface.positionOfPage(index);  // again each leaf: the display may switch
       if (this._surface.position === target) return;
       const far = Math.abs(target - this._surface.position) > NEAR_LEAVES;
@@ -325,7 +326,7 @@ export class BookController extends EventTarget {
     await this._surface.settle();
     if (this._destroyed || flip !== this._flips) return false;
     const ready = this._readyToMove();
-    if ((ready !== true && !(await ready)) || flip !== this._flips) return false;
+    if ((ready !== true && !(await ready)) || flip !== this._flips || index >= this.pageCount) return false;
     const target = this._surface.positionOfPage(index);
     if (target === this._surface.position) return true;
     const direction = target > this._surface.position ? 'forward' : 'backward';
