@@ -1,7 +1,7 @@
 // Browser: dragging a page by its corner with mouse and touch — the grabbed corner follows the pointer
 // (measured from the GPU's own vertices), release completes or falls back, hovering lifts the corner.
 import { test, expect } from '@playwright/test';
-import { openReady } from './helpers.js';
+import { dragAlong, openReady } from './helpers.js';
 
 const FIXTURE = '/tests/browser/fixtures/flipbook-fixture.html';
 
@@ -65,25 +65,10 @@ function gpuCornerCss(page) {
   });
 }
 
-async function settleFrames(page) {
-  // The held pose catches up within a few frames; SwiftShader frames are slow, so wait for rest.
-  await page.waitForFunction(() => !window.book.surface.book.moving());
-}
-
 for (const corner of ['bottom', 'top']) {
   test(`browser: a mouse dragging the ${corner} corner keeps it within 2 px of the pointer (GPU vertices), and release past the spine turns the page`, async ({ page }) => {
     const path = await openBookAndCornerPath(page, { corner });
-    await page.mouse.move(path[0].x, path[0].y);
-    await page.mouse.down();
-    let worst = 0;
-    for (let i = 1; i < path.length; i++) {
-      await page.mouse.move(path[i].x, path[i].y);
-      if (i % 4 === 0 || i === path.length - 1) {
-        await settleFrames(page);
-        const drawn = await gpuCornerCss(page);
-        worst = Math.max(worst, Math.hypot(drawn.x - path[i].x, drawn.y - path[i].y));
-      }
-    }
+    const worst = await dragAlong(page, path, () => gpuCornerCss(page));
     expect(worst, 'distance from the pointer to the drawn corner, CSS px').toBeLessThan(2);
     await page.mouse.up();
     await page.waitForFunction(() => window.events.some((e) => e.type === 'turned'));

@@ -22,3 +22,23 @@ export async function withoutWebGL2(page) {
     };
   });
 }
+
+/**
+ * Presses the mouse at path[0] and moves it along `path` (viewport points); at every 4th point and the
+ * last, once the held leaf has caught up, measures how far `drawn()` (a viewport point) is from the
+ * pointer. Returns the worst distance in CSS px; the button stays down.
+ */
+export async function dragAlong(page, path, drawn) {
+  await page.mouse.move(path[0].x, path[0].y);
+  await page.mouse.down();
+  let worst = 0;
+  for (let i = 1; i < path.length; i++) {
+    await page.mouse.move(path[i].x, path[i].y);
+    if (i % 4 === 0 || i === path.length - 1) {
+      await page.waitForFunction(() => !window.book.surface.book.moving());
+      const at = await drawn();
+      worst = Math.max(worst, Math.hypot(at.x - path[i].x, at.y - path[i].y));
+    }
+  }
+  return worst;
+}

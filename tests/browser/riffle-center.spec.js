@@ -2,7 +2,7 @@
 // far page riffles: several leaves in flight at once (counted from the engine's frame), landing within
 // RIFFLE_SPAN (under 2) turn durations of the engine's clock, showing the pages between on the way.
 import { test, expect } from '@playwright/test';
-import { openReady } from './helpers.js';
+import { dragAlong, openReady } from './helpers.js';
 
 const FIXTURE = '/tests/browser/fixtures/flipbook-fixture.html';
 
@@ -202,17 +202,7 @@ test('browser: dragging the cover of a closed book keeps its corner under the po
     const cw = vp[3] * x + vp[7] * y + vp[11] * z + vp[15];
     return { x: rect.left + ((cx / cw + 1) / 2) * rect.width, y: rect.top + ((1 - cy / cw) / 2) * rect.height };
   });
-  await page.mouse.move(path[0].x, path[0].y);
-  await page.mouse.down();
-  let worst = 0;
-  for (let i = 1; i < path.length; i++) {
-    await page.mouse.move(path[i].x, path[i].y);
-    if (i % 4 === 0 || i === path.length - 1) {
-      await page.waitForFunction(() => !window.book.surface.book.moving());
-      const drawn = await corner();
-      worst = Math.max(worst, Math.hypot(drawn.x - path[i].x, drawn.y - path[i].y));
-    }
-  }
+  const worst = await dragAlong(page, path, corner);
   console.log(`cover drag on a centred closed book: worst ${worst.toFixed(3)} CSS px from the pointer over ${path.length} moves`);
   expect(worst, 'distance from the pointer to the drawn corner, CSS px').toBeLessThan(2);
   await page.mouse.up();
