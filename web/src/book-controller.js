@@ -14,10 +14,11 @@ import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { LivePages } from './live-pages.js';
 import { PageStore } from './page-store.js';
 import { createLinkLayer } from './link-layer.js';
-import { freeEdge, inTurnArea } from './turn-area.js';
+import { turnsAt } from './turn-area.js';
 import { attachInput } from './book-input.js';
 import { watchSize } from './size-watch.js';
-import { MAX_ZOOM, displayFor, isZoomed, openPages } from './layout.js';
+import { MAX_ZOOM, displayFor, openPages } from './layout.js';
+import { BookZoom } from './book-zoom.js';
 
 const REFIT_DELAY_MS = 150;
 const NEAR_LEAVES = 2;  // flip() turns this many leaves one by one; farther, it riffles  // images are fitted to a new size or zoom once it has come to rest
@@ -41,7 +42,14 @@ export class BookController extends EventTarget {
     this._surface = null;
     this._shell = createShell(container, { label: settings.label, direction: settings.direction });
     this._canvas = this._shell.canvas;
-    this._restingTouchAction = this._canvas.style.touchAction;
+    this._zoom = new BookZoom(this._canvas, {
+      surface: () => this._surface,
+      moved: () => this._layoutLayers(),
+      changed: (scale) => {
+        this._refitSoon();  // sharp pages once it rests
+        this._emit('zoom', { scale });
+      },
+    });
     this._store = new PageStore(this._pages, settings, {
       surface: () => this._surface,
       openPages: () => this.openPages,
@@ -109,13 +117,13 @@ export class BookController extends EventTarget {
   prev() { return this._turn('backward'); }
 
   /** View magnification, 1 (the whole book) to MAX_ZOOM. Setting it zooms about the middle of the book. */
-  get zoom() { return this._surface ? this._surface.zoom : 1; }
+  get zoom() { return this._zoom.scale; }
   set zoom(scale) {
     this._alive();
     if (!(Number.isFinite(scale) && scale >= 1 && scale <= MAX_ZOOM)) {
       throw new RangeError(`conecurl: zoom must be a number from 1 to ${MAX_ZOOM}, got ${String(scale)}`);
     }
-    this._zoomAboutCentre(scale);
+    this._zoom.aboutCentre(scale);
   }
 
   /**
@@ -227,8 +235,11 @@ export class BookController extends EventTarget {
   _animates() { return this._surface.kind === 'webgl' && !this._reducedMotion?.matches; }
 
   async _build() {
-    if (this._pages.some((entry) => entry.html)) await this._attachHtmlPages();
-    this._layoutSize = this._cssSize();
+    // HTML pages live over the canvas while they lie open (html-pages.js, loaded only for books that have them).
+    const HtmlPages = this._pages.some((entry) => entry.html) ? (await import('./html-pages.js')).HtmlPages : null;
+    if (HtmlPages && !this._destroyed) this._mountHtml(HtmlPages);
+    const { width, height } = this._shell.root.getBoundingClientRect();
+    this._layoutSize = { width, height };
     this._surface = this._makeSurface(displayFor(this._settings.display, this._layoutSize));
     // While leaves move, the pages they show change (turns that waited start late): the surface says when.
     this._surface.onPagesChanged = () => { if (!this._destroyed) this._store.update(); };
@@ -251,13 +262,7 @@ export class BookController extends EventTarget {
     this._emit('ready', { page: this.page });
   }
 
-  // HTML pages live over the canvas while they lie open (html-pages.js, loaded only for books that have
-  // them), under the links.
-  async _attachHtmlPages() {
-    const { HtmlPages } = await import('./html-pages.js');
-    if (!this._destroyed) this._mountHtml(HtmlPages);
-  }
-
+  // The HTML pages' layer, under the links.
   _mountHtml(HtmlPages) {
     this._html = new HtmlPages(this._shell.root, this._pages, {
       direction: this._settings.direction,
@@ -281,10 +286,10 @@ export class BookController extends EventTarget {
       canvas: this._canvas, element: this._shell.root, surface: this._surface, direction: this._settings.direction,
     }, {
       zoom: () => this.zoom,
-      zoomed: () => this._zoomed(),
-      zoomAbout: (scale, x, y) => this._zoomAbout(scale, x, y),
-      zoomAboutCentre: (scale) => this._zoomAboutCentre(scale),
-      panBy: (dx, dy) => this._panBy(dx, dy),
+      zoomed: () => this._zoom.zoomed,
+      zoomAbout: (scale, x, y) => { if (!this._destroyed) this._zoom.about(scale, x, y); },
+      zoomAboutCentre: (scale) => { if (!this._destroyed) this._zoom.aboutCentre(scale); },
+      panBy: (dx, dy) => this._zoom.panBy(dx, dy),
       turn: (direction) => { if (!this._destroyed) this._turn(direction).catch(() => {}); },  // input after destroy() is dropped
       jump: (end) => { this.flip(end === 'first' ? 0 : this.pageCount - 1).catch(() => {}); },  // Home, End: a riffle
       turnsFrom: (clientX, clientY) => this._turnsFrom(clientX, clientY),
@@ -339,7 +344,7 @@ export class BookController extends EventTarget {
   // content changed since their textures were made are drawn again: true at once if none, else a
   // promise of whether the book is still alive once they are.
   _readyToMove() {
-    if (this._zoomed()) this._zoomAbout(1, 0, 0);
+    if (this._zoom.zoomed) this._zoom.about(1, 0, 0);
     const stale = this._html?.staleAmong(this.openPages) ?? [];
     if (stale.length === 0) return true;
     return Promise.all(stale.map((index) => this._store.refresh(index))).then(() => !this._destroyed);
@@ -362,13 +367,9 @@ export class BookController extends EventTarget {
 
   /** Whether a press at a viewport point may turn a page there (the `turnArea` option). */
   _turnsFrom(clientX, clientY) {
-    const area = this._settings.turnArea;
-    if (area === 'page' || area === 'none') return area === 'page';
     const box = this._canvas.getBoundingClientRect();
-    const [x, y] = [clientX - box.left, clientY - box.top];
-    const place = this._surface.openPagePlaces()
-      .find((p) => x >= p.x && x <= p.x + p.width && y >= p.y && y <= p.y + p.height);
-    return Boolean(place) && inTurnArea(area, place, freeEdge(this._settings.direction, place.turned), x, y);
+    const { turnArea, direction } = this._settings;
+    return turnsAt(turnArea, () => this._surface.openPagePlaces(), direction, clientX - box.left, clientY - box.top);
   }
 
   // Reduced motion, or still pages: a turn is a cut to the next spread, with the same events.
@@ -396,7 +397,6 @@ export class BookController extends EventTarget {
   }
 
   // ---- overlay layers: laid over the open pages while the book rests, hidden while a leaf moves --
-
   _layoutLayers() {
     if (this._destroyed || !this._surface) return;
     if (this._surface.animating) {
@@ -419,12 +419,6 @@ export class BookController extends EventTarget {
   }
 
   // ---- size and pixel ratio ------------------------------------------------------------------
-
-  _cssSize() {
-    const { width, height } = this._shell.root.getBoundingClientRect();
-    return { width, height };
-  }
-
   // The container or the pixel ratio changed: switch single/double for 'auto' (same surface, same
   // page), draw at the new size, and once resizing rests bring the images to the size now wanted.
   _relayout() {
@@ -443,35 +437,6 @@ export class BookController extends EventTarget {
   _refitSoon() {
     clearTimeout(this._refitTimer);
     this._refitTimer = setTimeout(() => this._store.refit(), REFIT_DELAY_MS);
-  }
-
-  // ---- zoom ------------------------------------------------------------------------------------
-
-  _zoomed() { return isZoomed(this.zoom); }
-
-  _zoomAboutCentre(scale) {
-    const box = this._canvas.getBoundingClientRect();
-    this._zoomAbout(scale, box.left + box.width / 2, box.top + box.height / 2);
-  }
-
-  /** Zooms to `scale` about a viewport point (the table point under it stays there). */
-  _zoomAbout(scale, clientX, clientY) {
-    if (this._destroyed) return;
-    const before = this.zoom;
-    this._surface.zoomAbout(Math.min(MAX_ZOOM, Math.max(1, scale)), clientX, clientY);
-    const after = this.zoom;
-    this._layoutLayers();
-    // Zoomed in, a finger pans the view; at 1x the browser may scroll the page across the turn again.
-    this._canvas.style.touchAction = isZoomed(after) ? 'none' : this._restingTouchAction;
-    if (after === before) return;
-    this._refitSoon();  // sharp pages once it rests
-    this._emit('zoom', { scale: after });
-  }
-
-  /** Moves the zoomed view by CSS pixels (a pan), as far as the pages still fill it. */
-  _panBy(dxCss, dyCss) {
-    this._surface.panBy(dxCss, dyCss);
-    this._layoutLayers();
   }
 
   _emit(type, detail) {

@@ -18,6 +18,16 @@ function bandDepth(width, height, edge) {
   return Math.min(across / 2, Math.max(MIN_BAND_PX, BAND * across));
 }
 
+/**
+ * Whether a press at (x, y) in the canvas's CSS px may turn a page: on the open page `places()` puts
+ * there, within `turnArea` (places are only asked for when the area depends on them).
+ */
+export function turnsAt(turnArea, places, direction, x, y) {
+  if (turnArea === 'page' || turnArea === 'none') return turnArea === 'page';
+  const place = places().find((p) => x >= p.x && x <= p.x + p.width && y >= p.y && y <= p.y + p.height);
+  return Boolean(place) && inTurnArea(turnArea, place, freeEdge(direction, place.turned), x, y);
+}
+
 /** Whether a point (in the units of `rect`) on an open page whose free edge is `edge` may start a turn. */
 export function inTurnArea(turnArea, rect, edge, x, y) {
   if (turnArea === 'page') return true;
