@@ -21,6 +21,39 @@ try {
   suites.push({ name: 'browser', passed: stats.expected, failed: stats.unexpected + stats.flaky, skipped: stats.skipped });
 } catch { suites.push({ name: 'browser', passed: 0, failed: 1, note: 'no report' }); }
 
+// Where the time went: each suite's wall time (times.tsv, written by scripts/test.sh) and the slowest
+// tests of all suites, so that a slow suite can be cut where it is slow.
+const slowest = [];
+for (const m of read('native.log').matchAll(/Test +#\d+: (\S+) \.*\s+\w+\s+([\d.]+) sec/g)) {
+  slowest.push({ name: `native: ${m[1]}`, seconds: Number(m[2]) });
+}
+for (const m of tap.matchAll(/^\s*(?:not )?ok \d+ - (.*)\n\s*---\n\s*duration_ms: ([\d.]+)/gm)) {
+  slowest.push({ name: m[1], seconds: Number(m[2]) / 1000 });
+}
+try {
+  const walk = (suite) => {
+    for (const spec of suite.specs ?? []) {
+      for (const t of spec.tests ?? []) {
+        for (const r of t.results ?? []) slowest.push({ name: `${spec.file}: ${spec.title}`, seconds: r.duration / 1000 });
+      }
+    }
+    for (const child of suite.suites ?? []) walk(child);
+  };
+  for (const suite of JSON.parse(read('browser.json')).suites ?? []) walk(suite);
+} catch { /* no browser report: said above */ }
+const times = read('times.tsv').trim().split('\n').filter(Boolean).map((line) => line.split('\t'));
+if (times.length > 0) {
+  const total = times.reduce((sum, [, seconds]) => sum + Number(seconds), 0);
+  console.log(`time by suite: ${times.map(([name, seconds]) => `${name} ${seconds} s`).join(', ')}; ${total} s in all`);
+}
+if (slowest.length > 0) {
+  console.log('slowest tests:');
+  const clip = (text) => (text.length > 130 ? `${text.slice(0, 127)}...` : text);
+  for (const { name, seconds } of slowest.sort((a, b) => b.seconds - a.seconds).slice(0, 15)) {
+    console.log(`  ${seconds.toFixed(1).padStart(6)} s  ${clip(name)}`);
+  }
+}
+
 let passed = 0, failed = 0, skipped = 0;
 for (const s of suites) {
   passed += s.passed; failed += s.failed; skipped += s.skipped || 0;

@@ -6,14 +6,17 @@ cd "$(dirname "$0")/.."
 source scripts/env.sh
 bash scripts/setup.sh || { echo "setup failed"; exit 1; }
 
-mkdir -p build/test-logs
 logs=build/test-logs
+rm -rf "$logs"  # a suite that did not run this time must not be summed from an earlier run's report
+mkdir -p "$logs"
 status=0
-run() {  # run NAME COMMAND...: tee output into build/test-logs/NAME.log
+run() {  # run NAME COMMAND...: tee output into build/test-logs/NAME.log, its seconds into times.tsv
   local name=$1; shift
   echo "=== $name"
+  local started=$SECONDS
   "$@" 2>&1 | tee "$logs/$name.log"
   local rc=${PIPESTATUS[0]}
+  printf '%s\t%s\n' "$name" $((SECONDS - started)) >> "$logs/times.tsv"
   [ "$rc" -eq 0 ] || { echo "=== $name FAILED (exit $rc)"; status=1; }
   return 0
 }
