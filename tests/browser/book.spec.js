@@ -119,22 +119,29 @@ test('browser: two leaves in flight are both drawn over the right page beneath',
 });
 
 test('browser: nothing is drawn and no animation frame is requested while the book rests', async ({ page }) => {
+  // The page runs on Playwright's clock, paused once the book is up: timers and animation frames come
+  // only as runFor() lets them, so a turn lasts as many frames (1 s: ~60), and "a second at rest" is as
+  // many frames, on any machine however loaded.
+  await page.clock.install();
   await page.addInitScript(() => {
     window.rafCalls = 0;
     const raf = window.requestAnimationFrame.bind(window);
     window.requestAnimationFrame = (callback) => { window.rafCalls++; return raf(callback); };
   });
   await openReady(page, `${FIXTURE}?position=1`);
-  await page.waitForTimeout(300);
+  await page.clock.pauseAt(await page.evaluate(() => Date.now() + 1000));
+  await page.clock.runFor(500);  // the frame the book asked for as it opened
   const idle = async () => page.evaluate(() => ({ frames: window.fixture.view.framesDrawn, raf: window.rafCalls }));
   const before = await idle();
-  await page.waitForTimeout(700);
+  await page.clock.runFor(1000);
   expect(await idle()).toEqual(before);
-  const turned = await page.evaluate(() => window.fixture.view.next());
-  expect(turned).toBe(true);
+  await page.evaluate(() => { window.turning = window.fixture.view.next(); });
+  await page.clock.runFor(1500);  // the turn lasts 1 s
+  expect(await page.evaluate(() => window.turning)).toBe(true);
   const after = await idle();
   expect(after.frames - before.frames, 'a turn draws frames').toBeGreaterThan(5);
-  await page.waitForTimeout(700);
+  expect(after.raf - before.raf, 'one animation frame asked for each').toBeGreaterThan(5);
+  await page.clock.runFor(1000);
   expect(await idle(), 'and stops once it lands').toEqual(after);
 });
 
@@ -204,7 +211,9 @@ test('browser: ten quick turns end on the right spread, and a quick back-and-for
     const turns = [];
     for (let i = 0; i < 10; i++) {
       turns.push(view.next());
-      await new Promise((r) => setTimeout(r, 30));
+      // The next turn is asked for once this one has drawn a frame: quick, leaves still in flight.
+      const drawn = view.framesDrawn;
+      while (view.framesDrawn === drawn) await new Promise((r) => requestAnimationFrame(r));
     }
     await Promise.all(turns);
     return view.position;
@@ -255,7 +264,9 @@ test('browser: after WebGL context loss and restore every GPU object and page is
     const lost = event('webglcontextlost');
     lose.loseContext();
     await lost;
-    await new Promise((resolve) => setTimeout(resolve, 50));  // Chrome ignores a restore in the same task
+    // Chrome allows a restore only once the lost event's dispatch has returned (it reads preventDefault
+    // then): any later task, however slow the machine.
+    await new Promise((resolve) => setTimeout(resolve, 0));
     const restored = event('webglcontextrestored');
     lose.restoreContext();
     await restored;

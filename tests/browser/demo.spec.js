@@ -15,13 +15,13 @@ test('browser: demo Next and Prev buttons turn a leaf each way and settle', asyn
   await openReady(page, '/web/demo/');
   await page.selectOption('#speed', '0.5');
   await page.click('#next');
-  await expect(page.locator('body')).toHaveAttribute('data-state', 'open', { timeout: 15000 });
+  await expect(page.locator('body')).toHaveAttribute('data-state', 'open', { timeout: 30_000 });
   await expect(page.locator('#where')).toHaveText('Pages 2–3 of 40');
   await page.click('#next');
-  await expect(page.locator('#where')).toHaveText('Pages 4–5 of 40');
+  await expect(page.locator('#where')).toHaveText('Pages 4–5 of 40', { timeout: 30_000 });
   await page.click('#prev');
-  await expect(page.locator('#where')).toHaveText('Pages 2–3 of 40');
-  await expect(page.locator('body')).toHaveAttribute('data-state', 'open', { timeout: 15000 });
+  await expect(page.locator('#where')).toHaveText('Pages 2–3 of 40', { timeout: 30_000 });
+  await expect(page.locator('body')).toHaveAttribute('data-state', 'open', { timeout: 30_000 });
 });
 
 test('browser: demo "Jump to page" riffles to the page asked for (one turnstart with riffle: true)', async ({ page }) => {
@@ -32,7 +32,7 @@ test('browser: demo "Jump to page" riffles to the page asked for (one turnstart 
   });
   await page.fill('#jump-page', '30');
   await page.click('#jump button');
-  await expect(page.locator('#where')).toHaveText('Pages 30–31 of 40', { timeout: 20000 });
+  await expect(page.locator('#where')).toHaveText('Pages 30–31 of 40', { timeout: 30_000 });
   expect(await page.evaluate(() => window.starts.map((s) => s.riffle))).toEqual([true]);
 });
 
@@ -46,7 +46,7 @@ test('browser: demo Thickness and Sound toggles change the running book live', a
   // A gesture on the book starts the sound: its status leaves 'waiting'.
   await page.click('#next');
   await page.locator('#book canvas').click({ position: { x: 10, y: 10 } });
-  await expect.poll(() => page.evaluate(() => window.conecurlDemo.book.sound.state)).not.toBe('waiting');
+  await expect.poll(() => page.evaluate(() => window.conecurlDemo.book.sound.state), { timeout: 30_000 }).not.toBe('waiting');
   expect(await page.evaluate(() => window.conecurlDemo.book === window.firstBook)).toBe(true);  // no rebuild
 });
 
@@ -57,9 +57,9 @@ test('browser: demo turns with the arrow keys when the book has focus', async ({
   await page.focus('#book [aria-roledescription="book"]');
   // SwiftShader under a loaded CI machine draws few frames a second; each advances at most 0.25 s.
   await page.keyboard.press('ArrowRight');
-  await expect(page.locator('#where')).toHaveText('Pages 12–13 of 40', { timeout: 15000 });
+  await expect(page.locator('#where')).toHaveText('Pages 12–13 of 40', { timeout: 30_000 });
   await page.keyboard.press('ArrowLeft');
-  await expect(page.locator('#where')).toHaveText('Pages 10–11 of 40', { timeout: 15000 });
+  await expect(page.locator('#where')).toHaveText('Pages 10–11 of 40', { timeout: 30_000 });
 });
 
 test('browser: demo ?t=0.25 opens frozen at that frame with the schedule read out', async ({ page }) => {
@@ -72,7 +72,12 @@ test('browser: demo switches display and direction without errors', async ({ pag
   const problems = await openReady(page, '/web/demo/?page=4');
   for (const [id, value] of [['display', 'single'], ['direction', 'rtl'], ['direction', 'vertical'], ['display', 'double']]) {
     await page.selectOption(`#${id}`, value);
-    await page.waitForTimeout(200);
+    // The book has the new setting (display: live; direction: a new book), its pages loaded and a frame drawn.
+    await page.waitForFunction(([id, value]) => window.conecurlDemo.book.options[id] === value, [id, value]);
+    await page.evaluate(async () => {
+      await window.conecurlDemo.book.whenIdle();
+      await new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve)));
+    });
   }
   await expect(page.locator('#where')).toContainText('of 40');
   expect(problems).toEqual([]);
@@ -88,7 +93,7 @@ test('browser: demo switches the schedule to smooth: the plot and readout follow
   expect(smooth).toMatch(/^t 0\.070/);
   expect(smooth).not.toBe(paper);  // another theta and Ay between the key poses
   await page.click('#next');
-  await expect(page.locator('#where')).toContainText('Pages 2–3 of 40');
+  await expect(page.locator('#where')).toContainText('Pages 2–3 of 40', { timeout: 30_000 });
   expect(problems).toEqual([]);
 });
 
@@ -102,26 +107,25 @@ test('browser: demo book turns when its corner is dragged across the spine', asy
   await page.mouse.down();
   for (let i = 1; i <= 12; i++) await page.mouse.move(from.x - (i / 12) * rect.width * 0.8, from.y - i * 4);
   await page.mouse.up();
-  await expect(page.locator('#where')).toHaveText('Pages 12–13 of 40', { timeout: 15000 });
+  await expect(page.locator('#where')).toHaveText('Pages 12–13 of 40', { timeout: 30_000 });
 });
 
 test('browser: demo shows its PDF example through pdf.js, and the contents links turn to their pages', async ({ page }) => {
   const problems = await openReady(page, '/web/demo/');
   await page.selectOption('#source', 'pdf');
-  await expect(page.locator('#where')).toHaveText('Page 1 of 12', { timeout: 20000 });
+  await expect(page.locator('#where')).toHaveText('Page 1 of 12', { timeout: 30_000 });
   await page.click('#next');
-  await expect(page.locator('#where')).toHaveText('Pages 2–3 of 12', { timeout: 20000 });
+  await expect(page.locator('#where')).toHaveText('Pages 2–3 of 12', { timeout: 30_000 });
   const contentsLinks = page.locator('#book .conecurl-links a');
-  await expect(contentsLinks).toHaveCount(9, { timeout: 20000 });
+  await expect(contentsLinks).toHaveCount(9, { timeout: 30_000 });
   await contentsLinks.nth(4).click();  // "5. Cones, not cylinders", on page 7
-  await expect(page.locator('#where')).toHaveText('Pages 6–7 of 12', { timeout: 30000 });
+  await expect(page.locator('#where')).toHaveText('Pages 6–7 of 12', { timeout: 30_000 });
   expect(problems).toEqual([]);
 });
 
 test('browser: the demo passes axe-core with no serious or critical violation (contrast, names matching visible text, ...)', async ({ page }) => {
-  await page.goto('/web/demo/');
-  await page.waitForFunction(() => document.querySelector('#book canvas') !== null, null, { timeout: 20_000 });
-  await page.waitForTimeout(500);  // the plot and the readout drawn
+  await openReady(page, '/web/demo/');  // the demo says it is ready once the plot and the readout are drawn
+  await page.evaluate(() => window.conecurlDemo.book.whenIdle());  // and the book's pages
   const { violations } = await new AxeBuilder({ page }).analyze();
   const serious = violations.filter((v) => v.impact === 'serious' || v.impact === 'critical')
     .map((v) => `${v.impact} ${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);

@@ -65,6 +65,29 @@ function gpuCornerCss(page) {
   });
 }
 
+/**
+ * Mouse input through CDP, each event stamped with the time it happened: a release's velocity (from the
+ * pointer events' timeStamps) is then what the test says, not how fast this machine delivers events.
+ * `ms`: how long after the previous event this one comes.
+ */
+async function timedMouse(page) {
+  const cdp = await page.context().newCDPSession(page);
+  let time = Date.now() / 1000;
+  let down = false;
+  const send = (type, { x, y }, ms) => {
+    time += ms / 1000;
+    return cdp.send('Input.dispatchMouseEvent', {
+      type, x, y, button: down || type === 'mouseReleased' ? 'left' : 'none', buttons: down ? 1 : 0,
+      clickCount: type === 'mouseMoved' ? 0 : 1, timestamp: time,
+    });
+  };
+  return {
+    move: (p, ms) => send('mouseMoved', p, ms),
+    down: (p, ms) => { down = true; return send('mousePressed', p, ms); },
+    up: (p, ms) => { down = false; return send('mouseReleased', p, ms); },
+  };
+}
+
 for (const corner of ['bottom', 'top']) {
   test(`browser: a mouse dragging the ${corner} corner keeps it within 2 px of the pointer (GPU vertices), and release past the spine turns the page`, async ({ page }) => {
     const path = await openBookAndCornerPath(page, { corner });
@@ -82,12 +105,15 @@ for (const corner of ['bottom', 'top']) {
 
 test('browser: a drag released short of the spine falls back with turncancel and the book stays', async ({ page }) => {
   const path = await openBookAndCornerPath(page);
-  await page.mouse.move(path[0].x, path[0].y);
-  await page.mouse.down();
-  for (let i = 1; i <= 2; i++) await page.mouse.move(path[i].x, path[i].y, { steps: 2 });
-  await page.waitForTimeout(150);  // stand still: no fling
-  await page.mouse.move(path[2].x + 0.5, path[2].y);
-  await page.mouse.up();
+  const mouse = await timedMouse(page);
+  await mouse.move(path[0], 0);
+  await mouse.down(path[0], 16);
+  for (let i = 1; i <= 2; i++) {
+    await mouse.move({ x: (path[i - 1].x + path[i].x) / 2, y: (path[i - 1].y + path[i].y) / 2 }, 16);
+    await mouse.move(path[i], 16);
+  }
+  await mouse.move({ x: path[2].x + 0.5, y: path[2].y }, 150);  // stood still 150 ms: no fling
+  await mouse.up({ x: path[2].x + 0.5, y: path[2].y }, 16);
   await page.waitForFunction(() => window.events.some((e) => e.type === 'turncancel' || e.type === 'turned'));
   await page.waitForFunction(() => !window.book.animating);
   const state = await page.evaluate(() => ({ types: window.events.map((e) => e.type), pageNow: window.book.page }));
@@ -100,10 +126,12 @@ test('browser: a drag released short of the spine falls back with turncancel and
 
 test('browser: a quick fling towards the spine completes the turn from a short drag', async ({ page }) => {
   const path = await openBookAndCornerPath(page);
-  await page.mouse.move(path[0].x, path[0].y);
-  await page.mouse.down();
-  for (let i = 1; i <= 8; i++) await page.mouse.move(path[i].x, path[i].y);  // fast: no waits between moves
-  await page.mouse.up();
+  const mouse = await timedMouse(page);
+  await mouse.move(path[0], 0);
+  await mouse.down(path[0], 16);
+  // Short: the same four moves 3 s apart fall back (turncancel); a move every 8 ms is a fling.
+  for (let i = 1; i <= 4; i++) await mouse.move(path[i], 8);
+  await mouse.up(path[4], 8);
   await page.waitForFunction(() => window.events.some((e) => e.type === 'turned' || e.type === 'turncancel'));
   await page.waitForFunction(() => !window.book.animating);
   expect(await page.evaluate(() => window.events.map((e) => e.type))).toEqual(['turnstart', 'turned']);
@@ -113,17 +141,24 @@ test('browser: hovering the mouse near a corner lifts it, and moving away lays i
   const path = await openBookAndCornerPath(page);
   await page.waitForFunction(() => !window.book.animating);
   const shot = async () => page.screenshot({ clip: { x: path[0].x - 80, y: path[0].y - 80, width: 90, height: 90 } });
+  // The corner as drawn once the picture stops changing (two screenshots alike, each a new frame).
+  const stillShot = async () => {
+    for (let last = await shot(); ;) {
+      const next = await shot();
+      if (next.equals(last)) return next;
+      last = next;
+    }
+  };
   await page.mouse.move(path[0].x - 300, path[0].y - 150);
-  await page.waitForTimeout(300);
-  const flat = await shot();
+  await page.waitForFunction(() => !window.book.animating && !window.book.surface.book.holding());
+  const flat = await stillShot();
   await page.mouse.move(path[0].x - 4, path[0].y - 4);
   await page.waitForFunction(() => window.book.surface.book.holding() && !window.book.surface.book.moving());
-  const lifted = await shot();
+  const lifted = await stillShot();  // the hint has eased in all the way
   expect(lifted.equals(flat)).toBe(false);
   await page.mouse.move(path[0].x - 300, path[0].y - 150);
   await page.waitForFunction(() => !window.book.animating);
-  await page.waitForTimeout(200);
-  expect((await shot()).equals(flat)).toBe(true);
+  expect((await stillShot()).equals(flat)).toBe(true);
   expect(await page.evaluate(() => window.book.page)).toBe(1);
 });
 
@@ -132,19 +167,20 @@ test('browser: a touch drag from the corner across the spine turns the page, onc
   const page = await context.newPage();
   const path = await openBookAndCornerPath(page);
   const cdp = await context.newCDPSession(page);
-  const touch = (type, p) => cdp.send('Input.dispatchTouchEvent', {
-    type, touchPoints: type === 'touchEnd' ? [] : [{ x: p.x, y: p.y, id: 1 }],
+  // Each event stamped with the time it happened (`ms` after the previous one), as timedMouse does.
+  let time = Date.now() / 1000;
+  const touch = (type, p, ms = 16) => cdp.send('Input.dispatchTouchEvent', {
+    type, touchPoints: type === 'touchEnd' ? [] : [{ x: p.x, y: p.y, id: 1 }], timestamp: (time += ms / 1000),
   });
   await touch('touchStart', path[0]);
   // A finger pulls the corner towards the spine first: the canvas has touch-action pan-y, so a
   // stroke that starts up or down scrolls the page instead of turning it.
   for (const dx of [-8, -16, -24]) await touch('touchMove', { x: path[0].x + dx, y: path[0].y });
   for (let i = 1; i < path.length; i++) await touch('touchMove', path[i]);
-  await page.waitForTimeout(150);
-  await touch('touchMove', path[path.length - 1]);
+  await touch('touchMove', path[path.length - 1], 150);  // the finger stood still 150 ms
   await touch('touchEnd', path[path.length - 1]);
   await page.waitForFunction(() => window.events.some((e) => e.type === 'turned'));
-  await page.waitForTimeout(300);
+  await page.evaluate(() => window.settle());  // a second turn (a swipe taken too) would be under way or done
   expect(await page.evaluate(() => window.book.page)).toBe(3);
   // The drag was not also taken for a swipe: one turn, no more.
   expect(await page.evaluate(() => window.events.map((e) => e.type))).toEqual(['turnstart', 'turned']);
@@ -158,8 +194,8 @@ test('browser: a click on a corner lifted by hovering carries the lifted leaf on
   await page.mouse.down();
   await page.mouse.up();
   await page.waitForFunction(() => window.events.some((e) => e.type === 'turned'));
-  await page.waitForFunction(() => !window.book.animating);
-  await page.waitForTimeout(200);
+  // No turn moving or waiting, and no click held back to tell a double-click: a second turn would show.
+  await page.evaluate(() => window.settle());
   expect(await page.evaluate(() => window.events.map((e) => e.type))).toEqual(['turnstart', 'turned']);
   expect(await page.evaluate(() => window.book.page)).toBe(3);
 });

@@ -53,6 +53,35 @@ const readBack = (page, points, box) => page.evaluate(({ points, box }) => {
   return { colours: points.map(([x, y]) => at(x, y)), dark };
 }, { points, box });
 
+/**
+ * Resolves once no turn moves or waits, no click waits to tell a double-click, and no page is loading:
+ * a turn that a press set going (or queued) shows by then.
+ */
+const settle = (page) => page.evaluate(async () => {
+  const busy = () => window.book.animating || window.book.surface.queuedTurns > 0;
+  const frame = () => new Promise((resolve) => requestAnimationFrame(resolve));
+  for (;;) {
+    if (busy()) {
+      await frame();
+      continue;
+    }
+    await window.book.whenIdle();
+    await frame();  // a turn that waited for the idle has started by the next frame
+    if (!busy()) return;
+  }
+});
+
+/** From now on, records each page image the book uploads: { index, moving } in window.uploads. */
+const recordUploads = (page) => page.evaluate(() => {
+  const surface = window.book.surface;
+  const setPageImage = surface.setPageImage.bind(surface);
+  window.uploads = [];
+  surface.setPageImage = (index, ...rest) => {
+    window.uploads.push({ index, moving: window.book.animating });
+    return setPageImage(index, ...rest);
+  };
+});
+
 const isRed = ([r, g, b]) => r > 140 && g < 90 && b < 90;
 const centre = (r) => [r.x + r.width / 2, r.y + r.height / 2];
 
@@ -72,14 +101,17 @@ test('browser: an HTML page lies live over its place: typing, clicking and its l
   for (let i = 0; i < 3; i++) await page.mouse.click(...centre(before.button));
   await page.mouse.click(...centre(before.link));
   await page.mouse.click(...centre(before.block));
-  await page.waitForTimeout(500);  // past a click series and the texture's refresh delay
+  await settle(page);  // past a click series: a click that reached the book would have turned it
   const after = await parts(page);
   expect([after.typed, after.count]).toEqual(['Hello', '3']);
   expect(await page.evaluate(() => [window.book.page, window.events.length, location.hash])).toEqual([1, 0, '#ordered']);
 
-  // The texture (under the live page) was made again: the block is red where the DOM has it; the
-  // field shows more dark pixels (the typed text) than before.
-  await page.evaluate(() => window.book.whenIdle());
+  // The texture (under the live page) is made again once the content has rested (the refresh delay):
+  // the block is red where the DOM has it; the field shows more dark pixels (the typed text) than before.
+  await expect.poll(async () => {
+    await page.evaluate(() => window.book.whenIdle());
+    return (await readBack(page, [], after.input)).dark;
+  }, { timeout: 30_000 }).toBeGreaterThan(textureBefore.dark + 20);
   const texture = await readBack(page, [centre(after.block)], after.input);
   expect(isRed(textureBefore.colours[0])).toBe(true);
   expect(isRed(texture.colours[0])).toBe(true);
@@ -109,7 +141,7 @@ test('browser: a press on an HTML page\'s content never turns it, a drag from it
   await page.mouse.down();
   await page.mouse.move(box.x + box.width * 0.1, box.y + box.height * 0.35, { steps: 8 });
   await page.mouse.up();
-  await page.waitForTimeout(400);
+  await settle(page);  // past a click series: a press that reached the book would have turned it
   expect(await page.evaluate(() => [window.book.page, window.events.length])).toEqual([1, 0]);
   // From the free edge (the right one, in the band left to the canvas): the leaf follows and turns.
   await page.mouse.move(box.x + box.width * 0.97, box.y + box.height * 0.6);
@@ -123,8 +155,10 @@ test('browser: a press on an HTML page\'s content never turns it, a drag from it
 test('browser: an HTML page changed while it is elsewhere shows the change when it next lies open', async ({ page }) => {
   await openHtmlBook(page, { book: { startPage: 4 } });
   expect(await page.evaluate(() => window.book.pageState(2).state)).toBe('loaded');  // kept, out of sight
+  await recordUploads(page);
   await page.evaluate(() => { document.querySelector('#form .block').style.background = 'rgb(30, 30, 200)'; });
-  await page.waitForTimeout(400);
+  // Its texture is made again once the change has rested (the refresh delay), out of sight as it is.
+  await page.waitForFunction(() => window.uploads.some((u) => u.index === 2));
   await page.evaluate(async () => { await window.book.whenIdle(); await window.book.flip(1, { animate: false }); });
   const { block } = await parts(page);
   const { colours: [colour] } = await readBack(page, [centre(block)]);
@@ -172,7 +206,8 @@ test('browser: <cone-flipbook> takes its child elements as pages: an <img> an im
 });
 
 test('browser: 200 create/destroy cycles of a book with an HTML page keep the JS heap flat and leave the element where it was', async ({ page }) => {
-  test.setTimeout(180_000);
+  // About 110 s on a busy 2-core machine (each cycle rasterises the HTML page): the limit allows five times that.
+  test.setTimeout(600_000);
   await openReady(page, FIXTURE);
   const cdp = await page.context().newCDPSession(page);
   const heap = async () => {
@@ -207,8 +242,7 @@ test('browser: turnArea limits where a press turns image pages too: \'edges\' tu
     return { x: canvas.left + right.x + fx * right.width, y: canvas.top + right.y + fy * right.height };
   }, { turnArea, fx, fy }).then(async (at) => {
     await page.mouse.click(at.x, at.y);
-    await page.waitForTimeout(400);  // a click waits to tell a double-click
-    await page.evaluate(() => window.book.whenIdle());
+    await settle(page);  // a click waits to tell a double-click, then turns (or not)
     return page.evaluate(() => window.book.page);
   });
   expect(await tapsTurn('page', 0.5, 0.5)).toBe(3);
@@ -282,51 +316,50 @@ test('browser: a playing <video> on an HTML page goes on playing on its texture 
     html.append(video);
     await video.play();
     const pages = Array.from({ length: 6 }, (_, i) => (i === 2 ? html : window.makeNumberedPage(i)));
-    window.book = await window.Flipbook.create(window.container, { pages, display: 'double', startPage: 1, duration: 20000 });
+    // A turn of 10 minutes: it outlasts the test, so the page is still moving however slow the machine.
+    window.book = await window.Flipbook.create(window.container, { pages, display: 'double', startPage: 1, duration: 600_000 });
     await window.book.whenIdle();
     window.turning = window.book.next();
+    window.colours = [];
   });
-  // Sample the turning page until both colours showed (a loaded machine may skip video frames, so a
-  // fixed number of samples could all land on one colour): the count that matters is two colours
-  // seen while the leaf is still moving, within at most 60 samples (the turn lasts 20 s).
-  const colours = [];
-  while (colours.length < 60 && new Set(colours).size < 2) {
-    await page.waitForTimeout(100);
-    colours.push(await page.evaluate(() => {
-      window.book.surface.drawNow();
-      const pixels = window.book.surface.readPixels();
-      let red = 0;
-      let blue = 0;
-      for (let k = 0; k < pixels.data.length; k += 4) {
-        const [r, g, b] = [pixels.data[k], pixels.data[k + 1], pixels.data[k + 2]];
-        if (r > 140 && g < 90 && b < 90) red++;
-        if (b > 140 && r < 90 && g < 90) blue++;
-      }
-      return red > blue ? 'red' : 'blue';
-    }));
-  }
-  console.log(`video on a turning page, dominant colour every 100 ms until both showed: ${colours.join(' ')}`);
+  // Sample the turning page every animation frame until both colours showed (a loaded machine may skip
+  // video frames, so a fixed number of samples could all land on one colour), or the turn landed.
+  await page.waitForFunction(() => {
+    window.book.surface.drawNow();
+    const pixels = window.book.surface.readPixels();
+    let red = 0;
+    let blue = 0;
+    for (let k = 0; k < pixels.data.length; k += 4) {
+      const [r, g, b] = [pixels.data[k], pixels.data[k + 1], pixels.data[k + 2]];
+      if (r > 140 && g < 90 && b < 90) red++;
+      if (b > 140 && r < 90 && g < 90) blue++;
+    }
+    window.colours.push(red > blue ? 'red' : 'blue');
+    return new Set(window.colours).size === 2 || !window.book.animating;
+  }, null, { polling: 'raf' });
+  const { colours, animating } = await page.evaluate(() => ({ colours: window.colours, animating: window.book.animating }));
+  const runs = colours.reduce((out, c) => (out.at(-1)?.[0] === c ? (out.at(-1)[1]++, out) : [...out, [c, 1]]), []);
+  console.log(`video on a turning page, dominant colour each frame until both showed: ${runs.map(([c, n]) => `${c} x${n}`).join(', ')}`);
   expect(new Set(colours).size).toBe(2);  // both colours showed while the page moved
-  expect(await page.evaluate(() => window.book.animating)).toBe(true);  // all of it mid-turn
+  expect(animating).toBe(true);  // all of it mid-turn
 });
 
 test('browser: an HTML page changed while leaves move is drawn again once the book lands, never during the turning frames', async ({ page }) => {
+  // The page runs on Playwright's clock, paused while the leaf moves: the 800 ms below are 800 ms of the
+  // page's timers and animation frames, past the refresh delay and still mid-turn on any machine.
+  await page.clock.install();
   await openHtmlBook(page, { book: { duration: 2500 } });
+  await recordUploads(page);
+  await page.clock.pauseAt(await page.evaluate(() => Date.now() + 1000));
   await page.evaluate(() => {
-    const surface = window.book.surface;
-    const setPageImage = surface.setPageImage.bind(surface);
-    window.uploads = [];
-    surface.setPageImage = (index, ...rest) => {
-      window.uploads.push({ index, moving: window.book.animating });
-      return setPageImage(index, ...rest);
-    };
     window.turning = window.book.next();
+    document.querySelector('#form .block').style.background = 'rgb(30, 30, 200)';
   });
-  await page.waitForFunction(() => window.book.animating);
-  await page.evaluate(() => { document.querySelector('#form .block').style.background = 'rgb(30, 30, 200)'; });
-  await page.waitForTimeout(800);  // well past the refresh delay, still mid-turn
+  expect(await page.evaluate(() => window.book.animating)).toBe(true);
+  await page.clock.runFor(800);  // well past the refresh delay (150 ms), still mid-turn (2500 ms)
   expect(await page.evaluate(() => window.book.animating)).toBe(true);
   expect(await page.evaluate(() => window.uploads.filter((u) => u.index === 2))).toEqual([]);
+  await page.clock.resume();
   await page.evaluate(() => window.turning);
   await page.waitForFunction(() => window.uploads.some((u) => u.index === 2));
   expect(await page.evaluate(() => window.uploads.filter((u) => u.index === 2).map((u) => u.moving))).toEqual([false]);

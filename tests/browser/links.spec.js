@@ -46,7 +46,7 @@ test('browser: page links are anchors placed over the open pages, a click fires 
   // The external link: the page's listener cancels navigation; no turn starts.
   await page.evaluate(() => window.book.addEventListener('link', (e) => { if (e.detail.href.startsWith('https:')) e.preventDefault(); }));
   await page.mouse.click(list[0].x + 5, list[0].y + 5);
-  await page.waitForTimeout(500);
+  await page.evaluate(() => window.settle());  // no click held back to tell a double-click, no turn moving or waiting
   expect(await page.evaluate(() => ({ events: window.events.map((e) => e.type), page: window.book.page, url: location.pathname })))
     .toEqual({ events: ['link'], page: 1, url: '/tests/browser/fixtures/flipbook-fixture.html' });
   expect(await page.evaluate(() => window.pwned)).toBeUndefined();
@@ -104,5 +104,5 @@ test('browser: a PDF\'s link annotations (a URI and a page destination) become l
   expect(list[0].y).toBeCloseTo(spread.y + (60 / 500) * spread.h, 0);
   expect(list[1].x).toBeGreaterThan(spread.x + spread.w / 2);
   await page.mouse.click(list[1].x + 5, list[1].y + 5);
-  await page.waitForFunction(() => window.book.page === 5 && !window.book.animating, null, { timeout: 20000 });
+  await page.waitForFunction(() => window.book.page === 5 && !window.book.animating);  // bounded by the test's timeout
 });

@@ -61,7 +61,8 @@ test('browser: Ctrl+wheel zooms about the pointer, a drag pans, clicks and keys 
   await page.mouse.click(point.x, point.y);
   await page.evaluate(() => window.book.element.focus());
   await page.keyboard.press('ArrowRight');
-  await page.waitForTimeout(300);
+  // The click's series is over (it waits to tell a double-click) and no turn moves or waits.
+  await page.evaluate(() => window.settle());
   expect(await page.evaluate(() => ({ page: window.book.page, turns: window.events.filter((e) => e.type === 'turnstart').length })))
     .toEqual({ page: 1, turns: 0 });
   // 0 goes back to the whole book, and a click turns again.
@@ -96,7 +97,7 @@ test('browser: double-click zooms in 2x at the pointer and out again; + and - st
   const point = await page.evaluate(() => window.halfPoint(0.3, 0.6));
   await page.mouse.dblclick(point.x, point.y);
   await page.waitForFunction(() => window.book.zoom === 2);
-  await page.waitForTimeout(500);
+  await page.evaluate(() => window.settle());  // its clicks' series is over, and no turn moves or waits
   expect(await page.evaluate(() => window.book.page)).toBe(1);  // the double-click did not turn
   await page.mouse.dblclick(point.x, point.y);
   await page.waitForFunction(() => window.book.zoom === 1);
