@@ -504,26 +504,30 @@ test('browser: a devicePixelRatio change (and back) resizes the canvas and bring
   const cdp = await page.context().newCDPSession(page);
   // Chromium's emulation notifies media queries of a new ratio only with a viewport change, so the
   // viewport also changes by a pixel; the container (and so the book's CSS size) stays 640x400.
-  const setRatio = async (deviceScaleFactor, width) => {
+  // `textureFollows()` waits until page 1's texture has come to the new size (it follows once resizing
+  // rests, decoded again): an expect.poll of `texture()`, its size or a part of it.
+  const texture = (part = (size) => size) => expect.poll(async () => part(await page.evaluate(() => window.book.surface.pageImageSize(1))),
+    'the texture follows the new ratio');
+  const setRatio = async (deviceScaleFactor, width, textureFollows) => {
     await page.evaluate(() => {
       window.resized = new Promise((resolve) => window.book.addEventListener('resize', (e) => resolve(e.detail), { once: true }));
     });
     await cdp.send('Emulation.setDeviceMetricsOverride', { width, height: 600, deviceScaleFactor, mobile: false });
-    return page.evaluate(async () => {
-      const detail = await window.resized;
-      await new Promise((resolve) => setTimeout(resolve, 400));  // textures follow once resizing rests
+    const detail = await page.evaluate(() => window.resized);
+    await textureFollows();
+    return page.evaluate(async (detail) => {
       await new Promise((resolve) => requestAnimationFrame(resolve));
       return { detail, dpr: devicePixelRatio, canvasWidth: window.book.surface.canvas.width, size: window.book.surface.pageImageSize(1) };
-    });
+    }, detail);
   };
   const before = await page.evaluate(() => window.before);
-  const doubled = await setRatio(2, 801);
+  const doubled = await setRatio(2, 801, () => texture((size) => size.width).toBeGreaterThanOrEqual(2 * before.width - 2));
   expect(doubled.dpr).toBe(2);
   expect(doubled.detail).toEqual({ width: 640, height: 400, display: 'double' });
   expect(doubled.canvasWidth).toBe(1280);
   expect(doubled.size.width).toBeGreaterThanOrEqual(2 * before.width - 2);
   expect(doubled.size.width).toBeLessThanOrEqual(2 * before.width + 2);
-  const back = await setRatio(1, 800);  // the book watches the new ratio after a change
+  const back = await setRatio(1, 800, () => texture().toEqual(before));  // the book watches the new ratio after a change
   expect(back.dpr).toBe(1);
   expect(back.canvasWidth).toBe(640);
   expect(back.size).toEqual(before);

@@ -221,11 +221,13 @@ test('browser: removing <cone-flipbook> destroys its book and releases its canva
     const whileShown = window.liveCanvases();
 
     document.getElementById('elsewhere').append(element);  // a move: removed and inserted in one task
-    await new Promise((resolve) => setTimeout(resolve, 50));
+    // The element decides in a microtask after disconnectedCallback whether it was moved or removed:
+    // a task later it has, on any machine.
+    await new Promise((resolve) => setTimeout(resolve));
     const moved = { same: element.book === book, alive: book.surface !== null };
 
     element.remove();
-    await new Promise((resolve) => setTimeout(resolve, 50));
+    await new Promise((resolve) => setTimeout(resolve));  // as above: the removal is decided in a microtask
     const removed = {
       book: element.book,
       destroyed: book.surface === null,

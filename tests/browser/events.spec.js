@@ -20,7 +20,8 @@ async function readmeExample(page) {
     const heard = [];
     book.addEventListener('pageerror', (event) => heard.push([event.detail.index, event.detail.reason, event.detail.error.message]));
     book.addEventListener('ready', (event) => heard.push(['ready', event.detail.page]));
-    await new Promise((resolve) => setTimeout(resolve, 50));
+    // The held events go out together just after create resolves, ready the last of them.
+    await new Promise((resolve) => book.addEventListener('ready', resolve, { once: true }));
     const states = [0, 1, 2, 3, 7].map((i) => {
       const { state, reason, error } = book.pageState(i);
       return [i, state, reason ?? null, error ? error.name : null];
@@ -100,7 +101,8 @@ test.describe('without WebGL2', () => {
       const book = await StaticBook.create(document.getElementById('container'), { pages, display: 'double', startPage: 1 });
       const heard = [];
       book.addEventListener('pageerror', (event) => heard.push([event.detail.index, event.detail.reason]));
-      await new Promise((resolve) => setTimeout(resolve, 50));
+      // The held events go out together just after create resolves, ready the last of them.
+      await new Promise((resolve) => book.addEventListener('ready', resolve, { once: true }));
       const state = book.pageState(2);
       book.destroy();
       return { heard, state: [state.state, state.reason] };

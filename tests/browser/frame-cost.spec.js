@@ -78,7 +78,9 @@ function countCalls() {
 
 /**
  * Per-frame deltas of the counters over `frames` animation frames taken in the middle of a turn, of a
- * new book with `options` (null: of the book open now).
+ * new book with `options` (null: of the book open now). Only frames after which the leaf is still in
+ * flight count: where a slow machine lets a turn land before enough frames were taken, the next turn
+ * (back the other way) gives the rest, so the figures never depend on how fast frames come.
  */
 async function countTurningFrames(page, options, frames = 6) {
   if (options) await page.evaluate((options) => window.openBook(options), options);
@@ -86,20 +88,31 @@ async function countTurningFrames(page, options, frames = 6) {
     await window.settle();
     const book = window.book;
     const nextFrame = () => new Promise((resolve) => requestAnimationFrame(resolve));
-    const turning = book.next();
-    for (let i = 0; i < 4; i++) await nextFrame();  // past the turn's first frames (residency, events)
-    const samples = [];
-    for (let i = 0; i <= frames; i++) {
-      await nextFrame();
-      samples.push({ ...window.__counts, glByName: { ...window.__counts.glByName } });
+    const sample = () => ({ ...window.__counts, glByName: { ...window.__counts.glByName } });
+    const deltas = [];
+    // Landed, as the turned event says (book.animating would add a call into the engine to the count).
+    let landed = false;
+    book.addEventListener('turned', () => { landed = true; });
+    for (let turns = 0; deltas.length < frames; turns++) {
+      if (turns === 10) throw new Error(`only ${deltas.length} of ${frames} turning frames in ${turns} turns: each landed first`);
+      landed = false;
+      const turning = turns % 2 === 0 ? book.next() : book.prev();
+      for (let i = 0; i < 4; i++) await nextFrame();  // past the turn's first frames (residency, events)
+      let previous = sample();
+      while (deltas.length < frames) {
+        await nextFrame();
+        if (landed) break;  // a frame since the last sample landed the leaf: not a turning frame
+        const now = sample();
+        deltas.push({
+          wasm: now.wasm - previous.wasm,
+          gl: now.gl - previous.gl,
+          glByName: Object.fromEntries(Object.entries(now.glByName)
+            .map(([name, n]) => [name, n - (previous.glByName[name] || 0)]).filter(([, n]) => n > 0)),
+        });
+        previous = now;
+      }
+      if (!(await turning)) throw new Error('a turn for the count did not land');
     }
-    const deltas = samples.slice(1).map((s, i) => ({
-      wasm: s.wasm - samples[i].wasm,
-      gl: s.gl - samples[i].gl,
-      glByName: Object.fromEntries(Object.entries(s.glByName)
-        .map(([name, n]) => [name, n - (samples[i].glByName[name] || 0)]).filter(([, n]) => n > 0)),
-    }));
-    await turning;
     return deltas;
   }, { frames });
 }
@@ -200,8 +213,11 @@ test('browser: pages that arrive together mid-turn are uploaded one a frame, nev
     const drawsPerFrame = [];
     let last = window.__counts.texImageFromImage;
     let lastDraws = window.__counts.glByName.drawElements;
-    for (let i = 0; i < 20; i++) {
+    // Every frame of the turn from here on (at least 12 on any machine: the engine's clock advances at
+    // most 0.25 s a frame), the frame that lands it not counted.
+    for (;;) {
       await nextFrame();
+      if (!book.animating) break;
       perFrame.push(window.__counts.texImageFromImage - last);
       drawsPerFrame.push(window.__counts.glByName.drawElements - lastDraws);
       last = window.__counts.texImageFromImage;
@@ -211,7 +227,8 @@ test('browser: pages that arrive together mid-turn are uploaded one a frame, nev
     await window.settle();
     return { perFrame, drawsPerFrame, resident: [3, 4].map((p) => book.pageState(p).state) };
   });
-  console.log(`uploads per turning frame after the gate opened: ${result.perFrame.join(' ')}; draw calls per frame ${result.drawsPerFrame.join(' ')}`);
+  console.log(`${result.perFrame.length} turning frames after the gate opened: uploads per frame ${result.perFrame.join('')}; `
+    + `draw calls per frame ${result.drawsPerFrame.join('')}`);
   expect(Math.max(...result.perFrame)).toBe(1);
   // One frame drawn per animation frame (a shadow pass and three leaves at most): an upload must not
   // start a second chain of frames.
@@ -259,7 +276,7 @@ test('browser: large encoded pages are decoded at the size they are drawn, off t
 
 test('browser: decoded pages are not held twice: the ImageBitmaps decoded for textures are closed once uploaded, and after a lost context the pages are decoded again (counts, pixels)', async ({ page }) => {
   await openReady(page, FIXTURE);
-  const result = await page.evaluate(async () => {
+  const before = await page.evaluate(async () => {
     // Eight PNG pages (Blobs), page i filled with its own grey 20 + 25 i.
     const canvas = Object.assign(document.createElement('canvas'), { width: 200, height: 250 });
     const g = canvas.getContext('2d');
@@ -272,9 +289,9 @@ test('browser: decoded pages are not held twice: the ImageBitmaps decoded for te
     await window.openBook({ pages, display: 'double', startPage: 3, loadWindow: 2, lighting: false, shadows: false, gutter: false });
     await window.settle();
     const book = window.book;
-    const open = () => window.__bitmaps.filter((bitmap) => bitmap.width > 0).length;
+    window.openBitmaps = () => window.__bitmaps.filter((bitmap) => bitmap.width > 0).length;
     // The grey at the middle of each open page, as page numbers.
-    const shown = () => {
+    window.shownGreys = () => {
       book.surface.drawNow();
       const pixels = book.surface.readPixels();
       return book.openPagePlaces().map((place) => {
@@ -283,21 +300,28 @@ test('browser: decoded pages are not held twice: the ImageBitmaps decoded for te
         return (pixels.data[(y * pixels.width + x) * 4] - 20) / 25;
       });
     };
-    const before = { decoded: window.__bitmaps.length, open: open(), resident: book.residentPages.length, shown: shown() };
+    const before = { decoded: window.__bitmaps.length, open: window.openBitmaps(), resident: book.residentPages.length, shown: window.shownGreys() };
     const gl = book.surface.canvas.getContext('webgl2');
     const lose = gl.getExtension('WEBGL_lose_context');
     const event = (name) => new Promise((resolve) => book.surface.canvas.addEventListener(name, resolve, { once: true }));
     const lost = event('webglcontextlost');
     lose.loseContext();
     await lost;
-    await new Promise((resolve) => setTimeout(resolve, 50));  // Chrome ignores a restore in the same task
+    // Chrome ignores a restore asked for in the task that dispatched webglcontextlost: one task later
+    // it takes it, on any machine.
+    await new Promise((resolve) => setTimeout(resolve));
     const restored = event('webglcontextrestored');
     lose.restoreContext();
     await restored;
-    await new Promise((resolve) => setTimeout(resolve, 300));
-    await book.whenIdle();
-    return { before, after: { decoded: window.__bitmaps.length, open: open(), textures: book.surface.renderer.residentPageImages(), shown: shown() } };
+    return before;
   });
+  // The restored context has a texture for every resident page again: each decoded anew and uploaded.
+  await page.waitForFunction((resident) => window.book.surface.renderer.residentPageImages() === resident, before.resident);
+  const after = await page.evaluate(async () => {
+    await window.book.whenIdle();
+    return { decoded: window.__bitmaps.length, open: window.openBitmaps(), textures: window.book.surface.renderer.residentPageImages(), shown: window.shownGreys() };
+  });
+  const result = { before, after };
   console.log(`decoded pages: ${JSON.stringify(result)}`);
   expect(result.before.resident).toBeGreaterThanOrEqual(6);
   expect(result.before.decoded).toBeGreaterThanOrEqual(result.before.resident);

@@ -36,15 +36,21 @@ async function startNext(dir) {
     try {
       if ((await fetch(url)).ok) return { child, url };
     } catch { /* not listening yet */ }
-    if (tries > 100) throw new Error('next start did not answer in 20 s');
+    // Polled every 0.2 s; the bound is only for a server that never answers (it answers in seconds).
+    if (tries > 1000) throw new Error('next start did not answer in 200 s');
     await new Promise((resolve) => setTimeout(resolve, 200));
   }
 }
 
-test.describe.configure({ mode: 'serial' });  // one tarball, two builds, two servers
+// One tarball, two builds, two servers. Each app test takes 8-14 s alone: a limit for a machine
+// several times slower.
+test.describe.configure({ mode: 'serial', timeout: 120_000 });
 test.use({ viewport: { width: 800, height: 900 } });
 
 test.beforeAll(async () => {
+  // Packing, installing and three production builds: about 75 s alone on two cores; a limit for a
+  // machine several times slower.
+  test.setTimeout(600_000);
   // Inside the repository (build/ is ignored), so that the apps find React and Vue in its node_modules.
   fs.mkdirSync(path.join(repositoryRoot, 'build'), { recursive: true });
   work = fs.mkdtempSync(path.join(repositoryRoot, 'build/frameworks-'));
@@ -90,8 +96,11 @@ async function openApp(page, app) {
   return problems;
 }
 
-// Waits until the book's state (through the app's window hooks) says `predicate`.
-const waitFor = (page, predicate, arg) => page.waitForFunction(predicate, arg, { timeout: 10_000 });
+// Waits until the book's state (through the app's window hooks) says `predicate` (a wait that is met
+// returns at once: the bound is only for one that never is).
+const waitFor = (page, predicate, arg) => page.waitForFunction(predicate, arg, { timeout: 60_000 });
+// Polls a screenshot of the book until it shows `pages` (a book drawn once its pages have loaded).
+const showsPages = (locator, pages) => expect.poll(async () => shownPages(await pageShares(locator)), { timeout: 60_000 }).toEqual(pages);
 
 test('browser (React): a controlled <Flipbook> under StrictMode is one book on one canvas; useFlipbook controls elsewhere turn it, page, pages and display props apply live, children are its pages', async ({ page }) => {
   const problems = await openApp(page, 'react-app');
@@ -140,11 +149,11 @@ test('browser (React): a controlled <Flipbook> under StrictMode is one book on o
 
   // Children: an <img>, an HTML <section> (React keeps rendering it), an <img>.
   const children = page.locator('#children-book');
-  expect(shownPages(await pageShares(children))).toEqual([0]);
+  await showsPages(children, [0]);  // its own pages loaded (the app says nothing of this book's ready)
   // Focus the book (a click would have to find the middle of a cover that now sits centred).
   await page.evaluate(() => document.querySelector('#children-book [tabindex="0"]').focus());
   await page.keyboard.press('ArrowRight');
-  await expect.poll(() => greenShare(children), { timeout: 15_000 }).toBeGreaterThan(0.15);
+  await expect.poll(() => greenShare(children), { timeout: 60_000 }).toBeGreaterThan(0.15);
   expect(await page.locator('#html-page h2').textContent()).toBe('An HTML page');
 
   // A bad prop is an error the app hears, naming it; the other books go on.
@@ -154,6 +163,8 @@ test('browser (React): a controlled <Flipbook> under StrictMode is one book on o
 });
 
 test('browser (React): 50 StrictMode mounts and unmounts leave no canvas, no live WebGL context, no context warning and a flat JS heap', async ({ page }) => {
+  // 55 books made and destroyed (20-50 s alone on two cores): a limit for a machine 5x slower.
+  test.setTimeout(300_000);
   await page.addInitScript(() => {
     // Every WebGL2 context made, to count those still live afterwards.
     window.contexts = [];
@@ -215,10 +226,10 @@ test('browser (Vue): v-model:page, pages and display apply live on one canvas, t
   }))).toEqual({ sameCanvas: true, ready: 1, changes: [{ change: 'insert', at: 0, count: 1, pageCount: 7, page: 1 }] });
 
   const children = page.locator('#children-book');
-  expect(shownPages(await pageShares(children))).toEqual([0]);
+  await showsPages(children, [0]);  // its own pages loaded (the app says nothing of this book's ready)
   await page.evaluate(() => document.querySelector('#children-book [tabindex="0"]').focus());
   await page.keyboard.press('ArrowRight');
-  await expect.poll(() => greenShare(children), { timeout: 15_000 }).toBeGreaterThan(0.15);
+  await expect.poll(() => greenShare(children), { timeout: 60_000 }).toBeGreaterThan(0.15);
   expect(problems).toEqual([]);
 });
 

@@ -233,8 +233,9 @@ test('browser: a page change asked for right after create() lets the held events
     const book = await window.Flipbook.create(window.container, { pages, startPage: 1, display: 'single' });
     const heard = [];
     for (const type of ['ready', 'pageschange']) book.addEventListener(type, (e) => heard.push([type, e.detail.page, book.pageCount]));
+    const ready = new Promise((resolve) => book.addEventListener('ready', resolve, { once: true }));
     await book.removePages(1, 3);  // at once, before the held events' task
-    await new Promise((resolve) => setTimeout(resolve, 50));
+    await ready;  // let out by the page change, or by the held events' task if it held them on
     return heard;
   });
   expect(heard).toEqual([['ready', 1, 4], ['pageschange', 0, 1]]);

@@ -14,11 +14,15 @@ test('browser: hash: true opens at #page=N, each turn writes #page= as a history
   expect(opened).toBe(2);  // #page=3 counts from 1
   await page.evaluate(async () => { await window.book.next(); await window.book.next(); });
   expect(await page.evaluate(() => location.hash)).toBe('#page=5');
-  // Navigates, then waits for the book to come to rest at the page expected (or the test times out).
+  // Navigates and waits until the book has heard it: every navigation here fires popstate, then
+  // hashchange, and the book's listeners (added before ours) have run once ours hears hashchange.
+  // Then waits for the turn the book started to land at the page expected (bounded only by the test's
+  // timeout), and for the book to settle, so that a page left alone is judged after the book reacted.
   const pageAfter = async (navigate, expected) => {
+    await page.evaluate(() => { window.addressHeard = new Promise((resolve) => addEventListener('hashchange', resolve, { once: true })); });
     await page.evaluate(navigate);
-    await page.waitForFunction(({ page: p, hash }) => location.hash === hash && window.book.page === p && !window.book.animating,
-      expected, { timeout: 10_000 }).catch(() => {});
+    await page.evaluate(() => window.addressHeard);
+    await page.waitForFunction(({ page: p, hash }) => location.hash === hash && window.book.page === p && !window.book.animating, expected);
     await page.evaluate(() => window.settle());
     return page.evaluate(() => ({ page: window.book.page, hash: location.hash }));
   };

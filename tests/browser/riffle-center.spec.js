@@ -126,13 +126,16 @@ test('browser: End, Home and a link to a far page riffle too; a near flip still 
     requestAnimationFrame(count);
     window.seen = seen;
   });
-  const outcome = () => page.evaluate(async () => {
-    await new Promise((resolve) => setTimeout(resolve, 50));
-    await window.settle();
-    const { seen, book } = window;
-    seen.done = true;
-    return { most: seen.most, page: book.page, starts: seen.starts.length, riffle: seen.starts.some((s) => s.riffle) };
-  });
+  // Once the action's first turnstart is heard (each action here turns), waits until the book rests.
+  const outcome = async () => {
+    await page.waitForFunction(() => window.seen.starts.length > 0);
+    return page.evaluate(async () => {
+      await window.settle();
+      const { seen, book } = window;
+      seen.done = true;
+      return { most: seen.most, page: book.page, starts: seen.starts.length, riffle: seen.starts.some((s) => s.riffle) };
+    });
+  };
   await page.evaluate(() => window.book.element.focus());
   await watch();
   await page.keyboard.press('End');

@@ -52,6 +52,17 @@ const SINGLE = [[0.5, 0.85]];
 
 const openBook = (page, options) => page.evaluate((options) => window.openBook(options), options);
 const announcement = (page) => page.evaluate(() => window.book.element.querySelector('[aria-live]').textContent);
+/** Resolves after `count` animation frames: a window counted in the frames a clock or callback would use. */
+const framesPass = (page, count) => page.evaluate((count) => new Promise((resolve) => {
+  const frame = (n) => (n === 0 ? resolve() : requestAnimationFrame(() => frame(n - 1)));
+  frame(count);
+}), count);
+/**
+ * A window for something that must NOT happen after destroy() (a late animation frame, timer or load
+ * callback): 30 animation frames, and a timer longer than any the book sets (CLICK_SERIES_MS, 300 ms),
+ * set after all of them, so those fire first on any machine. A slow machine only stretches the window.
+ */
+const quietWindow = (page) => Promise.all([framesPass(page, 30), page.evaluate(() => new Promise((resolve) => setTimeout(resolve, 400)))]);
 
 /** Records the book's events from the moment it is made (Flipbook and StaticBook alike). */
 async function recordEvents(page) {
@@ -120,8 +131,10 @@ test('browser: a cross-origin page without CORS fires a pageerror naming CORS (U
     foreign.src = `${otherOrigin}${path}?as=img`;
     await foreign.decode();
     const pages = [window.makeNumberedPage(0), `${otherOrigin}${path}`, `${otherOrigin}${path}?cors=1`, foreign];
-    await window.openBook({ pages, display: 'double', startPage: 1, loadWindow: 4 });
-    await new Promise((resolve) => setTimeout(resolve));  // the first view's events come just after create
+    const ready = new Promise((resolve) => { window.readyHeard = resolve; });
+    await window.openBook({ pages, display: 'double', startPage: 1, loadWindow: 4, on: { ready: () => window.readyHeard() } });
+    await ready;  // the first view's events come just after create, ready the last of them
+    await window.book.whenIdle();  // and the pages loaded around it have loaded or failed
     const view = window.book.surface;
     view.drawNow();
     const pixels = view.readPixels();  // would throw on a tainted canvas
@@ -436,7 +449,7 @@ function loseContext(page) {
 function restoreContext(page) {
   return page.evaluate(async () => {
     const canvas = window.book.surface.canvas;
-    await new Promise((resolve) => setTimeout(resolve, 50));
+    await new Promise((resolve) => setTimeout(resolve));  // a later task than the loss, on any machine
     const restored = new Promise((resolve) => canvas.addEventListener('webglcontextrestored', resolve, { once: true }));
     window.loseExtension.restoreContext();
     await restored;
@@ -470,7 +483,10 @@ test('browser: a WebGL context lost mid-turn pauses the turn; on restore every t
   const pausedAt = await flyingRho(page);
   // The container is resized meanwhile: the book lays out and asks for a frame, which must not run the clock.
   await page.evaluate(() => { document.getElementById('container').style.width = '620px'; });
-  await page.waitForTimeout(500);  // half the turn's duration
+  await page.waitForFunction(() => window.events.some((e) => e.type === 'resize' && e.detail.width === 620));
+  // Nothing may move now: 30 frames (half the turn's duration at 60 frames a second) in which a clock
+  // that ran would move the leaf; a slow machine gives them more time, so it would move it further.
+  await framesPass(page, 30);
   expect(await flyingRho(page), 'the turn does not move while the context is lost').toBe(pausedAt);
   expect(await page.evaluate(() => [window.book.surface.contextLost, window.book.animating,
     window.events.filter((e) => e.type === 'turned').length])).toEqual([true, true, 0]);
@@ -512,7 +528,7 @@ test('browser: a WebGL context lost mid-drag pauses the held page; after restore
   await loseContext(page);
   const far = await at(0.15, 0.85);
   await page.mouse.move(far.x, far.y, { steps: 4 });  // the pointer goes on while the context is lost
-  await page.waitForTimeout(300);
+  await framesPass(page, 20);  // frames in which a held pose that followed the pointer would move
   expect(await flyingPose(page), 'the held page waits while the context is lost').toEqual(held);
   await restoreContext(page);
   await poseAtRest();
@@ -657,8 +673,10 @@ test('browser: calls during a turn queue; destroy() mid-turn leaves no animation
     window.bookContext = book.surface.canvas.getContext('webgl2');
     const first = book.next();
     const queued = [book.next(), book.flip(7)];  // asked mid-turn: they wait their turn
+    // Checked every animation frame, as the leaf moves: the engine's clock advances at most 0.25 s a
+    // frame, so the first turn is still in flight when this sees it past 0.2, however slow the machine.
     await new Promise((resolve) => {
-      const check = () => ((book.surface.book.frame().find((leaf) => !leaf.resting)?.curl.rho ?? 0) > 0.2 ? resolve() : setTimeout(check, 20));
+      const check = () => ((book.surface.book.frame().find((leaf) => !leaf.resting)?.curl.rho ?? 0) > 0.2 ? resolve() : requestAnimationFrame(check));
       check();
     });
     const inFlight = {
@@ -697,7 +715,7 @@ test('browser: calls during a turn queue; destroy() mid-turn leaves no animation
   const destroyed = 'Error: conecurl: this flipbook was destroyed';
   // page and display still answer: where the book was going (three leaves were in flight: spread 3).
   expect(during.after).toEqual({ next: destroyed, prev: destroyed, flip: destroyed, setOptions: destroyed, previewTurn: destroyed, page: 5, display: 'double' });
-  await page.waitForTimeout(300);  // a late callback (frame, timer, load) would show up now
+  await quietWindow(page);  // a late callback (frame, timer, load) would show up now
   const left = await leftovers(page);
   expect(left).toEqual({
     frames: 0, listeners: baseline.listeners, observers: 0, glObjects: 0, contextReleased: true,
@@ -713,8 +731,17 @@ test('browser: destroy() mid-drag and while pages load leaves nothing behind eit
   await trackEmbind(page);
   const baseline = await page.evaluate(() => ({ listeners: window.held.listeners(), heapBytes: window.engine.heapBytesInUse() }));
   await page.evaluate(async () => {
-    // Page 5 onwards load slowly (a page function that waits): they are still loading at destroy().
-    const slow = (i) => () => new Promise((resolve) => setTimeout(() => resolve(window.makeNumberedPage(i)), 2000));
+    // Page 5 onwards load slowly (a page function that waits at a gate the test opens after
+    // destroy()): they are still loading at destroy(), however slow the machine.
+    let open;
+    const gate = new Promise((resolve) => { open = resolve; });
+    window.slowPages = { asked: 0, arrived: 0, open };
+    const slow = (i) => async () => {
+      window.slowPages.asked++;
+      await gate;
+      window.slowPages.arrived++;
+      return window.makeNumberedPage(i);
+    };
     const pages = Array.from({ length: 10 }, (_, i) => (i < 5 ? window.makeNumberedPage(i) : slow(i)));
     const book = await window.Flipbook.create(document.getElementById('container'), { pages, display: 'double', startPage: 1, loadWindow: 1 });
     window.book = book;
@@ -733,7 +760,10 @@ test('browser: destroy() mid-drag and while pages load leaves nothing behind eit
   expect(await page.evaluate(() => { window.book.destroy(); return window.held.frames(); })).toBe(0);
   await page.mouse.move(corner.x, corner.y, { steps: 2 });
   await page.mouse.up();
-  await page.waitForTimeout(2300);  // the slow pages arrive after the book is gone
+  // The slow pages arrive after the book is gone; then what the book would do with them has its window.
+  await page.evaluate(() => window.slowPages.open());
+  await page.waitForFunction(() => window.slowPages.asked > 0 && window.slowPages.arrived === window.slowPages.asked);
+  await quietWindow(page);
   const left = await leftovers(page);
   expect(left).toEqual({
     frames: 0, listeners: baseline.listeners, observers: 0, glObjects: 0, contextReleased: true,
@@ -796,7 +826,18 @@ test('browser: 200 create/destroy cycles keep the JS heap and the wasm heap flat
 
 test('browser: strings from options, alt text, URLs and error messages are never parsed as HTML: the label, the page text, and <cone-flipbook>\'s error panel show them literally', async ({ page }) => {
   const hostile = '<img src=x onerror="window.pwned=1"><script>window.pwned=2</script>';
+  // An <img src=x> made from the hostile string would fail to load and run its onerror. A probe
+  // <img src=x> asked for after it fails no sooner: once the probe's error is heard (and a task more),
+  // an injected onerror would have run, however slow the machine.
+  const addProbe = () => page.evaluate(() => {
+    window.probeFailed = () => new Promise((resolve) => {
+      const probe = new Image();
+      probe.onload = probe.onerror = () => setTimeout(resolve);
+      probe.src = 'x';
+    });
+  });
   await openReady(page, FIXTURE);
+  await addProbe();
   const book = await page.evaluate(async (hostile) => {
     window.pwned = 0;
     const pages = [{ src: window.makeNumberedPage(0), alt: hostile }, `/no/such/${hostile}.png`];
@@ -806,8 +847,10 @@ test('browser: strings from options, alt text, URLs and error messages are never
       if (event.type === 'pageerror') errors.push(event.detail.error.message);
       return original.call(this, event);
     };
-    await window.openBook({ pages, display: 'single', label: hostile });
-    await new Promise((resolve) => setTimeout(resolve, 100));  // an injected onerror would have run by now
+    const failed = new Promise((resolve) => { window.pageFailed = resolve; });
+    await window.openBook({ pages, display: 'single', label: hostile, on: { pageerror: () => window.pageFailed() } });
+    await failed;  // the 404 page's pageerror, with its URL in the message
+    await window.probeFailed();  // an injected onerror would have run by now
     const root = window.book.element;
     return {
       label: root.getAttribute('aria-label'),
@@ -825,12 +868,13 @@ test('browser: strings from options, alt text, URLs and error messages are never
 
   await page.goto(ELEMENT_FIXTURE);
   await page.waitForFunction(() => document.body.dataset.ready);
+  await addProbe();
   const panel = await page.evaluate(async (hostile) => {
     window.pwned = 0;
     const element = window.makeElement({ pages: window.pageUrl(0), duration: hostile });
     document.getElementById('stage').append(element);
-    await element.whenReady().catch(() => {});
-    await new Promise((resolve) => setTimeout(resolve, 100));
+    await element.whenReady().catch(() => {});  // it rejects: the bad duration
+    await window.probeFailed();  // an injected onerror would have run by now
     const shown = element.shadowRoot.querySelector('[part=error]');
     return { text: shown.querySelector('p').textContent, elements: shown.querySelectorAll('img, script').length, pwned: window.pwned };
   }, hostile);
