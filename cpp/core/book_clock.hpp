@@ -28,7 +28,7 @@ struct PagesOnScreen {
 };
 PagesOnScreen pagesOnScreen(const BookFrame& frame);
 
-// How the leaves moved in the last tick, for a page sound that follows the hand (web/src/page-sound.js).
+// How the leaves moved in the last tick, for a page sound that follows the hand (web/src/book/page-sound.js).
 struct LeafMotion {
     double speed = 0.0;       // |d rho / dt| of the fastest leaf in flight, rad/s, since the previous tick
     bool hard = false;        // that leaf turns rigidly (a cover)

@@ -1,9 +1,9 @@
-// Node tests of web/src/layout.js, the engine's layout in plain JS for the 2D fallback: its positions,
+// Node tests of web/src/engine/layout.js, the engine's layout in plain JS for the 2D fallback: its positions,
 // page places and zoom equal the wasm engine's, and the generated constants equal the C++ header's.
 import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
-import * as layout from '../../web/src/layout.js';
+import * as layout from '../../web/src/engine/layout.js';
 import * as generated from '../../dist/engine-constants.js';
 import { loadEngineForNode } from './load-engine.mjs';
 

@@ -43,3 +43,46 @@ test('node: every file under web/src has at most 350 lines, or says at its top w
   }).map((file) => `${relative(root, file)} (${readFileSync(file, 'utf8').split('\n').length} lines)`);
   assert.deepEqual(long, []);
 });
+
+// The layers of web/src, lowest first (docs/architecture.md): a module imports from its own folder or
+// from a layer below it, never from one above. The entry points at the top of web/src may import any.
+const LAYERS = ['engine', 'pages', 'surfaces', 'input', 'layers', 'book', 'components', '.'];
+
+/** The modules a JS source imports (static and dynamic), comments left out: JSDoc may name any type. */
+export function importsOf(source) {
+  const code = source.replace(/\/\*[\s\S]*?\*\//g, '').replace(/(^|[^:'"`])\/\/.*$/gm, '$1');
+  return [...code.matchAll(/(?:^\s*import\s[^'"]*?from\s*|^\s*export\s[^'"]*?from\s*|\bimport\s*\(\s*)['"](\.{1,2}\/[^'"]+)['"]/gm)].map((m) => m[1]);
+}
+
+/** Every import in web/src/**.js that goes up the layers: "file -> import (layer -> layer)". */
+export function upwardImports(sourceRoot) {
+  const upward = [];
+  for (const file of filesUnder(sourceRoot, ['.js'])) {
+    const from = relative(sourceRoot, file).split('/');
+    const fromLayer = from.length > 1 ? from[0] : '.';
+    for (const target of importsOf(readFileSync(file, 'utf8'))) {
+      const to = relative(sourceRoot, join(file, '..', target)).split('/');
+      if (to[0] === '..') continue;  // outside web/src: the built engine in dist/
+      const toLayer = to.length > 1 ? to[0] : '.';
+      if (!LAYERS.includes(fromLayer) || !LAYERS.includes(toLayer)) {
+        upward.push(`${from.join('/')} -> ${target}: a folder outside the layers (${fromLayer}, ${toLayer})`);
+      } else if (LAYERS.indexOf(toLayer) > LAYERS.indexOf(fromLayer)) {
+        upward.push(`${from.join('/')} -> ${target} (${fromLayer} imports ${toLayer}, a layer above it)`);
+      }
+    }
+  }
+  return upward;
+}
+
+test('node: web/src is folders by layer and no module imports from a layer above its own', () => {
+  const sourceRoot = join(root, 'web/src');
+  const folders = readdirSync(sourceRoot).filter((name) => statSync(join(sourceRoot, name)).isDirectory());
+  assert.deepEqual(folders.sort(), LAYERS.filter((layer) => layer !== '.').sort());
+  assert.deepEqual(upwardImports(sourceRoot), []);
+});
+
+test('node: the layer check sees an upward import, static or dynamic, and passes one in a comment', () => {
+  assert.deepEqual(importsOf("import { a } from '../book/options.js';\nconst m = await import('./x.js');\nexport { b } from './y.js';"),
+    ['../book/options.js', './x.js', './y.js']);
+  assert.deepEqual(importsOf("/** @param {import('../book/flipbook.js').Flipbook} b */\n// import('../up.js')\nconst url = 'http://x/y';"), []);
+});

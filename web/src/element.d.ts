@@ -1,7 +1,7 @@
 // Types of <cone-flipbook> (element.js): the element class, its events, and its tag in
 // HTMLElementTagNameMap so document.querySelector('cone-flipbook') is typed.
-import type { Flipbook, FlipbookCreateError, FlipbookEventMap, PageEntry, PagesChangeDetail, PageSource } from './flipbook.js';
-import type { StaticBook } from './static-book.js';
+import type { Flipbook, FlipbookCreateError, FlipbookEventMap, PageEntry, PagesChangeDetail, PageSource } from './book/flipbook.js';
+import type { StaticBook } from './book/static-book.js';
 
 export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' | keyof FlipbookEventMap>,
   Omit<FlipbookEventMap, 'error'> {

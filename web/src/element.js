@@ -1,12 +1,12 @@
 // <cone-flipbook>: the Flipbook as an HTML element, for pages without a build step. Attributes mirror
 // the options; its child elements can be the pages (an <img> an image page, any other element a live
 // HTML page), and are what a browser without JavaScript shows.
-import { Flipbook } from './flipbook.js';
-import { BOOK_EVENTS } from './book-events.js';
-import { DEFAULTS } from './options.js';
+import { Flipbook } from './book/flipbook.js';
+import { BOOK_EVENTS } from './book/book-events.js';
+import { DEFAULTS } from './book/options.js';
 import {
   ATTRIBUTES, ATTRIBUTE_OF_OPTION, LIVE_ATTRIBUTES, PROPERTY_OPTIONS, TAG, defineOptionProperties, readOptionAttribute, setOptionAttribute,
-} from './element-attributes.js';
+} from './components/element-attributes.js';
 
 // On a server (no DOM) the module still imports: the class has no element to be, and nothing is defined.
 const ElementBase = globalThis.HTMLElement ?? class {};

@@ -7,8 +7,8 @@ import {
   useRef, useState,
 } from 'react';
 import { createPortal } from 'react-dom';
-import { BookMount } from './book-mount.js';
-import { EVENT_HANDLERS, pageBoxes } from './framework-props.js';
+import { BookMount } from './components/book-mount.js';
+import { EVENT_HANDLERS, pageBoxes } from './components/framework-props.js';
 
 // The box the book fills, as <cone-flipbook> sizes itself; the `style` prop overrides any of it.
 const BOX_STYLE = { display: 'block', position: 'relative', width: '100%', aspectRatio: '16 / 10' };

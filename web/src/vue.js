@@ -3,9 +3,9 @@
 // default slot can hold the pages, and next/prev/flip/page/zoom are exposed. Nothing here needs a DOM
 // until the component is mounted, so it renders on a server as a sized, empty box.
 import { Teleport, defineComponent, getCurrentInstance, h, onBeforeUnmount, onMounted, onUpdated, ref } from 'vue';
-import { BOOK_EVENTS } from './book-events.js';
-import { BookMount } from './book-mount.js';
-import { OPTION_PROPS, pageBoxes } from './framework-props.js';
+import { BOOK_EVENTS } from './book/book-events.js';
+import { BookMount } from './components/book-mount.js';
+import { OPTION_PROPS, pageBoxes } from './components/framework-props.js';
 
 // The box the book fills, as <cone-flipbook> sizes itself; a `style` attribute overrides any of it.
 const BOX_STYLE = { display: 'block', position: 'relative', width: '100%', aspectRatio: '16 / 10' };

@@ -2,7 +2,7 @@
 // 2D CanvasSurface, so a page that embeds a book never shows an empty box. Input, loading, links, zoom,
 // events and screen-reader support are Flipbook's own; turns cut straight to the next spread.
 import { BookController } from './book-controller.js';
-import { CanvasSurface } from './canvas-surface.js';
+import { CanvasSurface } from '../surfaces/canvas-surface.js';
 import { validateOptions } from './options.js';
 
 export class StaticBook extends BookController {

@@ -8,7 +8,7 @@ const HINT_MS = 160;                // the hover hint eases in over this long
 
 export class PointerDrag {
   /**
-   * @param {import('./book-view.js').BookView} view
+   * @param {import('../surfaces/book-view.js').BookView} view
    * @param {{ onTurnStart?: (direction: 'forward'|'backward') => void,
    *           onTurnEnd?: (completed: boolean) => Promise<void>|void,
    *           onHintStart?: () => void, (a corner lifts as the mouse hovers it)

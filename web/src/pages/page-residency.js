@@ -1,7 +1,7 @@
 // Which pages keep a texture: the bounded page cache of Flipbook as plain functions (no DOM, no GL),
 // so the policy is tested on its own and GPU memory does not grow with the length of the book.
 
-import { MAX_TURNS_IN_FLIGHT, splicePageMap, splicedPage } from './layout.js';
+import { MAX_TURNS_IN_FLIGHT, splicePageMap, splicedPage } from '../engine/layout.js';
 
 export { MAX_TURNS_IN_FLIGHT };  // turns the book can have in flight at once (the engine's constant)
 

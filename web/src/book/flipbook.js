@@ -1,12 +1,12 @@
 // The public entry point: a flipbook in a container element. Flipbook is the book controller
 // (book-controller.js) over the WebGL surface, BookView on the wasm engine, sharing the page's WebGL
 // contexts with other books; without WebGL2 or the engine, create() leaves a StaticBook in its place.
-import { loadEngine } from './engine.js';
-import { BookView } from './book-view.js';
+import { loadEngine } from '../engine/load-engine.js';
+import { BookView } from '../surfaces/book-view.js';
 import { BookController } from './book-controller.js';
 import { describeValue, hardPageIndices, validateOptions } from './options.js';
-import { contextBudget } from './context-budget.js';
-import { softwareWebGL } from './software-gl.js';
+import { contextBudget } from '../surfaces/context-budget.js';
+import { softwareWebGL } from '../surfaces/software-gl.js';
 
 // Failures after which a book can still be shown, as still pages: Flipbook.create falls back on these.
 const FALLBACK_CODES = ['webgl2-unavailable', 'engine-unavailable'];
@@ -22,7 +22,7 @@ async function openPdfOption(options) {
   if (pdfWorkerSrc !== undefined && typeof pdfWorkerSrc !== 'string') {
     throw new TypeError(`conecurl: option 'pdfWorkerSrc' must be a URL string, got ${describeValue(pdfWorkerSrc)}`);
   }
-  const { openPdf } = await import('./pdf-pages.js');
+  const { openPdf } = await import('../pages/pdf-pages.js');
   return openPdf(pdf, { workerSrc: pdfWorkerSrc });
 }
 

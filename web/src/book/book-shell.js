@@ -1,6 +1,6 @@
 // The elements a Flipbook puts in its container: a focusable region that holds the canvas, a polite
 // live region announcing the open pages, and visually hidden text of those pages for screen readers.
-import { keyShortcuts } from './input-keys.js';
+import { keyShortcuts } from '../input/input-keys.js';
 
 // The focus ring, and HTML pages with turnArea 'page': a press on their content turns the page unless
 // it lands on something interactive (html-pages.js).

@@ -1,8 +1,8 @@
 // Types shared by conecurl/react and conecurl/vue: the book options a component takes as props, and
 // the handle its ref (React) or exposed instance (Vue) gives.
-import type { FlipbookOptions } from './flipbook.js';
-import type { Flipbook } from './flipbook.js';
-import type { StaticBook } from './static-book.js';
+import type { FlipbookOptions } from '../book/flipbook.js';
+import type { Flipbook } from '../book/flipbook.js';
+import type { StaticBook } from '../book/static-book.js';
 
 /**
  * The book's options as props, except `startPage` (use `page` or `defaultPage`) and `on` (use the

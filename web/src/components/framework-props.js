@@ -1,8 +1,8 @@
 // What the React and Vue components share: which props are book options, which of those change on the
 // live book and which need a new one, the handler of each book event, pages compared by content, and
 // the pages a component's children make. Read from options.js and book-events.js, never copied.
-import { BOOK_EVENTS } from './book-events.js';
-import { LIVE_OPTIONS, OPTION_NAMES } from './options.js';
+import { BOOK_EVENTS } from '../book/book-events.js';
+import { LIVE_OPTIONS, OPTION_NAMES } from '../book/options.js';
 
 /** Options a component passes through as props: startPage comes from page/defaultPage, `on` from the handlers. */
 export const OPTION_PROPS = [...OPTION_NAMES.filter((name) => name !== 'startPage' && name !== 'on'), 'pdf', 'pdfWorkerSrc'];

@@ -1,5 +1,5 @@
 // Types of BookView, the JS view of one book on a canvas. Kept beside book-view.js.
-import type { Book, BookRenderer, ConeCurlEngine, LoadEngineOptions, RenderOptions } from './engine.js';
+import type { Book, BookRenderer, ConeCurlEngine, LoadEngineOptions, RenderOptions } from '../engine/load-engine.js';
 
 export interface BookViewOptions extends LoadEngineOptions, RenderOptions {
   /** An engine already loaded with loadEngine(). */
@@ -112,7 +112,7 @@ export class BookView {
    * Told after each frame how the leaves moved (FrameLoop.motion: a second call into the engine a frame,
    * made only while this is set; the page sound sets it). Null by default.
    */
-  onMotion: ((motion: import('./engine.js').LeafMotion) => void) | null;
+  onMotion: ((motion: import('../engine/load-engine.js').LeafMotion) => void) | null;
   /** True: textures are copies, so an ImageBitmap given to setPageImage may be closed once set. */
   readonly copiesImages: boolean;
   /** Called after a lost context is restored with the pages whose ImageBitmap was closed: set them again. */

@@ -1,6 +1,6 @@
 // <cone-flipbook>'s attributes: each one's Flipbook option and parser, which apply live, and the option
 // properties frameworks set (element.js uses them; the element's behaviour stays there).
-import { LIVE_OPTIONS } from './options.js';
+import { LIVE_OPTIONS } from '../book/options.js';
 
 export const TAG = 'cone-flipbook';
 

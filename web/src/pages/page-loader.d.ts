@@ -1,5 +1,5 @@
 // Types of the page loader (page-loader.js). Kept beside page-loader.js.
-import type { PageErrorReason, PageSource } from './flipbook.js';
+import type { PageErrorReason, PageSource } from '../book/flipbook.js';
 
 /** Why a page could not be shown; `reason` says which kind of failure it was. */
 export class PageLoadError extends Error {

@@ -107,7 +107,7 @@ export class LivePages {
     const previous = this._last;
     const run = (async () => {
       await previous.catch(() => {});
-      const HtmlPages = needsHtml ? (await import('./html-pages.js')).HtmlPages : null;
+      const HtmlPages = needsHtml ? (await import('../layers/html-pages.js')).HtmlPages : null;
       for (;;) {
         this._book.alive();
         const surface = this._book.surface();

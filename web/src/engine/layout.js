@@ -3,7 +3,7 @@
 import {
   DEFAULT_PAGE_HEIGHT, DEFAULT_PAGE_WIDTH, FRAME_MARGIN, MAX_LEAF_THICKNESS, MAX_TURNS_IN_FLIGHT, MAX_ZOOM, PAPER_BLUE, PAPER_GREEN,
   PAPER_RED,
-} from '../../dist/engine-constants.js';
+} from '../../../dist/engine-constants.js';
 
 export { MAX_LEAF_THICKNESS, MAX_TURNS_IN_FLIGHT, MAX_ZOOM };
 /** The renderer's placeholder paper, as a CSS colour. */

@@ -1,8 +1,8 @@
 // The options of a book (Flipbook and its static fallback) checked in one place: every bad value is
 // a TypeError that names the option and says what is allowed, before anything is built.
 import { BOOK_EVENTS } from './book-events.js';
-import { MAX_LEAF_THICKNESS } from './layout.js';
-import { TURN_AREAS } from './turn-area.js';
+import { MAX_LEAF_THICKNESS } from '../engine/layout.js';
+import { TURN_AREAS } from '../input/turn-area.js';
 
 const BOOLEAN = (v) => typeof v === 'boolean' || 'true or false';
 export const MAX_PAGES = 1_000_000;  // the engine's Book refuses more (book_bindings.cpp)

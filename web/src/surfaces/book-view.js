@@ -3,10 +3,10 @@
 // moves and costs one call into the engine per frame. It is the book controller's WebGL surface.
 // Over 350 lines because it is also the public lower layer (README "Using the engine from JavaScript"),
 // member by member a few lines over the engine, with the context-loss path that keeps it drawing.
-import { loadEngine } from './engine.js';
-import { PageLoadError } from './page-loader.js';
-import { atSize, naturalSize, uploadSizeFor } from './texture-upload.js';
-import { splicePageMap, splicedPage } from './layout.js';
+import { loadEngine } from '../engine/load-engine.js';
+import { PageLoadError } from '../pages/page-loader.js';
+import { atSize, naturalSize, uploadSizeFor } from '../pages/texture-upload.js';
+import { splicePageMap, splicedPage } from '../engine/layout.js';
 
 export { uploadSizeFor };
 

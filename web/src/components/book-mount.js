@@ -3,9 +3,9 @@
 // inserted, removed or replaced in it, any other change builds a new book at the page shown), destroyed
 // on unmount, however often that happens (StrictMode mounts twice); its events go to the handler props,
 // its state to subscribers.
-import { Flipbook } from './flipbook.js';
-import { BOOK_EVENTS } from './book-events.js';
-import { DEFAULTS, LIVE_OPTIONS } from './options.js';
+import { Flipbook } from '../book/flipbook.js';
+import { BOOK_EVENTS } from '../book/book-events.js';
+import { DEFAULTS, LIVE_OPTIONS } from '../book/options.js';
 import { clampPage, fixedOptionsDiffer, optionsOf, pageChanges, samePages } from './framework-props.js';
 
 export class BookMount {

@@ -1,7 +1,7 @@
 // Types of Flipbook, the public entry point. Kept beside flipbook.js.
 import type { StaticBook } from './static-book.js';
-import type { BookView } from './book-view.js';
-import type { CanvasSurface } from './canvas-surface.js';
+import type { BookView } from '../surfaces/book-view.js';
+import type { CanvasSurface } from '../surfaces/canvas-surface.js';
 
 export type PageImage = string | HTMLImageElement | HTMLCanvasElement | ImageBitmap | Blob;
 /**

@@ -12,12 +12,12 @@ import { createShell } from './book-shell.js';
 import { BookEvents } from './book-events.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { LivePages } from './live-pages.js';
-import { PageStore } from './page-store.js';
-import { createLinkLayer } from './link-layer.js';
-import { turnsAt } from './turn-area.js';
-import { attachInput } from './book-input.js';
+import { PageStore } from '../pages/page-store.js';
+import { createLinkLayer } from '../layers/link-layer.js';
+import { turnsAt } from '../input/turn-area.js';
+import { attachInput } from '../input/book-input.js';
 import { watchSize } from './size-watch.js';
-import { MAX_ZOOM, displayFor, openPages } from './layout.js';
+import { MAX_ZOOM, displayFor, openPages } from '../engine/layout.js';
 import { BookZoom } from './book-zoom.js';
 
 const REFIT_DELAY_MS = 150;
@@ -236,7 +236,7 @@ export class BookController extends EventTarget {
 
   async _build() {
     // HTML pages live over the canvas while they lie open (html-pages.js, loaded only for books that have them).
-    const HtmlPages = this._pages.some((entry) => entry.html) ? (await import('./html-pages.js')).HtmlPages : null;
+    const HtmlPages = this._pages.some((entry) => entry.html) ? (await import('../layers/html-pages.js')).HtmlPages : null;
     if (HtmlPages && !this._destroyed) this._mountHtml(HtmlPages);
     const { width, height } = this._shell.root.getBoundingClientRect();
     this._layoutSize = { width, height };

@@ -4,7 +4,7 @@
 import { loadPage, pageFailure } from './page-loader.js';
 import { PageCache } from './page-residency.js';
 import { uploadSizeFor } from './texture-upload.js';
-import { isZoomed, splicePageMap } from './layout.js';
+import { isZoomed, splicePageMap } from '../engine/layout.js';
 
 const TEXTURE_OVERSAMPLE = 1.5;  // images up to this many pixels per device pixel of the page on screen
 const REFIT_RATIO = 1.25;        // a kept image is handed over again only when this far off the size wanted

@@ -1,6 +1,6 @@
 // The book's zoom and pan as the controller asks for them: magnify about a viewport point or the
 // middle, pan, and what follows each (layers laid again, touch-action, sharper pages, the `zoom` event).
-import { MAX_ZOOM, isZoomed } from './layout.js';
+import { MAX_ZOOM, isZoomed } from '../engine/layout.js';
 
 export class BookZoom {
   /**
