@@ -1,6 +1,7 @@
 // Node tests of the layering rules that review alone lets slip: nothing outside web/src reads a
-// module's `_private` fields (tests, demo, scripts drive the public API), and every file under
-// web/src holds one concern, which shows as a short file (over 350 lines it says why at its top).
+// module's `_private` fields (tests, demo, scripts drive the public API), nor does another module in
+// web/src (a subclass reads its base class's through `this`), and every file under web/src holds one
+// concern, which shows as a short file (over 350 lines it says why at its top).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readdirSync, readFileSync, statSync } from 'node:fs';
@@ -32,6 +33,65 @@ test('node: no test, demo or script reads a field or method that starts with _ (
     });
   }
   assert.deepEqual(reads, []);
+});
+
+// A module's `_` members are its own: it reads them on any object (another instance, a lease of its
+// budget), and a subclass reads its base class's through `this` (Flipbook's this._build()); no module
+// reads another's `_` members on another object (book._build() from flipbook.js).
+const stripComments = (source) => source.replace(/\/\*[\s\S]*?\*\//g, '').replace(/(^|[^:'"`])\/\/.*$/gm, '$1');
+
+/** The `_` members a JS source defines: fields it assigns on `this`, and methods, getters and fields of its classes. */
+export function privateMembersDefined(source) {
+  const code = stripComments(source);
+  return new Set([
+    ...[...code.matchAll(/\bthis\.(_\w+)\s*(?:=(?!=)|\?\?=|\|\|=|&&=|\+=|-=)/g)].map((m) => m[1]),
+    ...[...code.matchAll(/^\s*(?:static\s+)?(?:async\s+)?(?:get\s+|set\s+)?\*?(_\w+)\s*(?:\(|=(?!=))/gm)].map((m) => m[1]),
+  ]);
+}
+
+/** Every `._name` a JS source reads, as [receiver, name]: receiver 'this' for this._name (or super._name), else 'other'. */
+export function privateReads(source) {
+  return [...stripComments(source).matchAll(/(\bthis|\bsuper|[\w$\])?]+)\s*\??\.(_[A-Za-z]\w*)/g)]
+    .map((m) => [m[1] === 'this' || m[1] === 'super' ? 'this' : 'other', m[2]]);
+}
+
+/** Reads in web/src of another module's `_` members: "file: receiver._name". */
+export function foreignPrivateReads(sourceRoot) {
+  const files = filesUnder(sourceRoot, ['.js']);
+  const sources = new Map(files.map((file) => [file, readFileSync(file, 'utf8')]));
+  // The modules of a file's base classes (class X extends Y, Y imported from a module of web/src), transitively.
+  const baseModules = (file, seen = new Set()) => {
+    for (const [, base] of stripComments(sources.get(file)).matchAll(/class\s+\w+\s+extends\s+(\w+)/g)) {
+      const from = new RegExp(`import\\s*\\{[^}]*\\b${base}\\b[^}]*\\}\\s*from\\s*['"](\\.{1,2}/[^'"]+)['"]`).exec(sources.get(file))?.[1];
+      const module = from && join(file, '..', from);
+      if (module && sources.has(module) && !seen.has(module)) {
+        seen.add(module);
+        baseModules(module, seen);
+      }
+    }
+    return seen;
+  };
+  const foreign = [];
+  for (const file of files) {
+    const own = privateMembersDefined(sources.get(file));
+    const inherited = new Set([...baseModules(file)].flatMap((base) => [...privateMembersDefined(sources.get(base))]));
+    for (const [receiver, name] of privateReads(sources.get(file))) {
+      if (own.has(name) || (receiver === 'this' && inherited.has(name))) continue;
+      foreign.push(`${relative(sourceRoot, file)}: ${receiver === 'this' ? 'this' : '(another object)'}.${name}`);
+    }
+  }
+  return [...new Set(foreign)];
+}
+
+test('node: no module under web/src reads another module\'s _ members, except a subclass its base class\'s through this', () => {
+  assert.deepEqual(foreignPrivateReads(join(root, 'web/src')), []);
+});
+
+test('node: the _ check sees book._build() from a module that does not define it, and passes this._build() in a subclass', () => {
+  assert.deepEqual(privateReads('book._build(); this._events.flush(); // other._x\nsuper._y;'),
+    [['other', '_build'], ['this', '_events'], ['this', '_y']]);
+  assert.deepEqual([...privateMembersDefined('class A {\n  _open() {}\n  get _size() {}\n  async _load() { this._n = 1; this._m ??= 2; }\n}')].sort(),
+    ['_load', '_m', '_n', '_open', '_size']);
 });
 
 test('node: every file under web/src has at most 350 lines, or says at its top why it has more', () => {

@@ -20,8 +20,8 @@ import { watchSize } from './size-watch.js';
 import { MAX_ZOOM, displayFor, openPages } from '../engine/layout.js';
 import { BookZoom } from './book-zoom.js';
 
-const REFIT_DELAY_MS = 150;
-const NEAR_LEAVES = 2;  // flip() turns this many leaves one by one; farther, it riffles  // images are fitted to a new size or zoom once it has come to rest
+const REFIT_DELAY_MS = 150;  // images are fitted to a new size or zoom once it has come to rest
+const NEAR_LEAVES = 2;  // flip() turns this many leaves one by one; farther, it riffles
 
 export class BookController extends EventTarget {
   /**

@@ -3,9 +3,27 @@
 // added right after `await Flipbook.create(...)` hears the first view's page errors), and the `on`
 // option's listeners are registered before anything happens.
 
+/**
+ * Every event a book dispatches and the fields of its detail ('?': not always there), as
+ * FlipbookEventMap in flipbook.d.ts types them (tests/node/typings.test.mjs compares the two, and
+ * tests/browser/element.spec.js each event dispatched with this).
+ */
+export const EVENT_DETAILS = {
+  ready: ['page'],
+  progress: ['loaded', 'total', 'pending'],
+  pageerror: ['index', 'error', 'reason'],
+  turnstart: ['direction', 'page', 'drag?', 'riffle?'],
+  turned: ['page'],
+  turncancel: ['page'],
+  resize: ['width', 'height', 'display'],
+  zoom: ['scale'],
+  sharpened: ['index', 'width'],
+  link: ['page', 'href', 'toPage?'],
+  pageschange: ['change', 'at', 'count', 'pageCount', 'page'],
+  error: ['error'],
+};
 /** Every event a book dispatches. */
-export const BOOK_EVENTS = ['ready', 'progress', 'pageerror', 'turnstart', 'turned', 'turncancel', 'resize',
-  'zoom', 'sharpened', 'link', 'pageschange', 'error'];
+export const BOOK_EVENTS = Object.keys(EVENT_DETAILS);
 
 export class BookEvents {
   /** @param {EventTarget} target the book @param {Record<string, Function>} [on] listeners by event type */

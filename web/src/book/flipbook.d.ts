@@ -178,8 +178,12 @@ export interface FlipbookEventMap {
   ready: CustomEvent<{ page: number }>;
   /** After each page load settles: pages ready now (loaded or failed), the page count, loads still running. */
   progress: CustomEvent<{ loaded: number; total: number; pending: number }>;
-  /** A turn begins: from next()/prev()/flip(), a click, tap, swipe or key, or a drag (`drag: true`). */
-  turnstart: CustomEvent<{ direction: 'forward' | 'backward'; page: number; drag?: boolean }>;
+  /**
+   * A turn begins: from next()/prev()/flip(), a click, tap, swipe or key, or a drag (`drag: true`); a
+   * flip() to a page more than two leaves away riffles, several leaves at once, with one turnstart
+   * (`riffle: true`) and one `turned` when they land.
+   */
+  turnstart: CustomEvent<{ direction: 'forward' | 'backward'; page: number; drag?: boolean; riffle?: boolean }>;
   turned: CustomEvent<{ page: number }>;
   /** The view's magnification changed (1 to 4). */
   zoom: CustomEvent<{ scale: number }>;
@@ -258,7 +262,7 @@ export class BookController extends EventTarget {
   /** Pages loaded or failed so far, the page count, and loads running now (what `progress` said last). */
   readonly progress: { loaded: number; total: number; pending: number };
   /** The options in effect, defaults filled in (a frozen copy). */
-  readonly options: Readonly<Required<Omit<FlipbookOptions, 'pdf' | 'pdfWorkerSrc' | 'wasmUrl' | 'on'>>> & FlipbookOptions;
+  readonly options: Readonly<Required<Omit<FlipbookOptions, 'pdf' | 'pdfWorkerSrc' | 'wasmUrl' | 'rememberPage' | 'on'>>> & FlipbookOptions;
   /**
    * What draws the book, for tools and tests (reading pixels, counting frames): a BookView (WebGL2) or
    * a CanvasSurface (still pages); null after destroy(). Drive the book through its own members.
@@ -294,9 +298,11 @@ export class BookController extends EventTarget {
    */
   zoom: number;
   /**
-   * Turns leaf by leaf to page `index` (or jumps with animate: false, or under
-   * prefers-reduced-motion); RangeError if out of range, TypeError for bad options. A later flip()
-   * takes over: an animated flip still under way stops turning and resolves.
+   * Turns to page `index`: leaf by leaf when it is one or two leaves away, and when it is more than two
+   * leaves away by a riffle (several leaves at once, one `turnstart` with `riffle: true`, then
+   * `turned`); jumps with animate: false, under prefers-reduced-motion and on still pages (StaticBook).
+   * RangeError if out of range, TypeError for bad options. A later flip() takes over: an animated flip
+   * still under way stops turning and resolves.
    */
   flip(index: number, options?: { animate?: boolean }): Promise<void>;
   /**

@@ -46,15 +46,20 @@ export class Flipbook extends BookController {
       throw error;
     }
     if (pdf) settings.pageAspect = pdf.aspect;  // page shape from the PDF's first page
-    const book = new this(container, settings, pdf);  // `this`: subclasses get their own instances
+    return new this(container, settings, pdf)._open();  // `this`: subclasses get their own instances
+  }
+
+  // Loads the engine and builds the first view (BookController's _build and _events, reached through
+  // `this`, as a subclass does); resolves with the book once its pages have loaded or failed.
+  async _open() {
     try {
-      book._engine = await loadEngine(settings.wasmUrl ? { wasmUrl: settings.wasmUrl } : {});
-      await book._build();
+      this._engine = await loadEngine(this._settings.wasmUrl ? { wasmUrl: this._settings.wasmUrl } : {});
+      await this._build();
     } catch (error) {
-      throw await book._fail(error);
+      throw await this._fail(error);
     }
-    book._events.releaseSoon();  // what happened while loading the first view is heard from now on
-    return book;
+    this._events.releaseSoon();  // what happened while loading the first view is heard from now on
+    return this;
   }
 
   constructor(container, settings, pdf = null) {

@@ -41,6 +41,10 @@ const OPTION_CHECKS = {
 };
 /** Every option validateOptions() knows (Flipbook.create also takes pdf and pdfWorkerSrc in place of pages). */
 export const OPTION_NAMES = Object.keys(OPTION_CHECKS);
+/** The options of a PDF book, in place of `pages`: Flipbook.create checks them (flipbook.js) and opens the PDF. */
+export const PDF_OPTIONS = ['pdf', 'pdfWorkerSrc'];
+/** Every option Flipbook.create takes: FlipbookOptions in flipbook.d.ts (tests/node/typings.test.mjs checks it). */
+export const CREATE_OPTIONS = [...OPTION_NAMES, ...PDF_OPTIONS];
 export const DEFAULTS = {
   display: 'auto', direction: 'ltr', startPage: 0, duration: 1000, schedule: 'paper', center: true, hardCovers: false,
   lighting: true, shadows: true, gutter: true, thickness: true, loadWindow: 4, label: 'Book', fallback: true, hash: false,

@@ -24,6 +24,19 @@ export class StaticBook extends BookController {
       center: this._settings.center,
     });
   }
+
+  // Builds the first view (BookController's _build, through `this`); resolves with the book once its
+  // pages have loaded or failed, destroys it if that fails.
+  async _open() {
+    try {
+      await this._build();
+    } catch (error) {
+      this.destroy();
+      throw error;
+    }
+    this._events.releaseSoon();  // what happened while loading the first view is heard from now on
+    return this;
+  }
 }
 
 /**
@@ -31,13 +44,5 @@ export class StaticBook extends BookController {
  * now owns. Resolves once the open pages have loaded or failed.
  */
 export async function openStaticBook(container, settings, pdf = null, Class = StaticBook) {
-  const book = new Class(container, settings, pdf);
-  try {
-    await book._build();
-  } catch (error) {
-    book.destroy();
-    throw error;
-  }
-  book._events.releaseSoon();  // what happened while loading the first view is heard from now on
-  return book;
+  return new Class(container, settings, pdf)._open();
 }

@@ -1,6 +1,8 @@
-// <cone-flipbook>'s attributes: each one's Flipbook option and parser, which apply live, and the option
-// properties frameworks set (element.js uses them; the element's behaviour stays there).
-import { LIVE_OPTIONS } from '../book/options.js';
+// <cone-flipbook>'s attributes: each one's Flipbook option and parser, which apply live, the options that
+// have none and why, and the option properties frameworks set: which values a property keeps as given
+// and how the others are written to the attribute (element.js uses them; the element's behaviour stays
+// there). tests/node/typings.test.mjs holds every option to an attribute or a reason, and element.d.ts to these.
+import { LIVE_OPTIONS, describeValue } from '../book/options.js';
 
 export const TAG = 'cone-flipbook';
 
@@ -62,8 +64,15 @@ export const ATTRIBUTES = {
   'remember-page': ['rememberPage', parseText],
   'wasm-url': ['wasmUrl', parseText],
   antialias: ['antialias', parseAntialias],
+  'turn-area': ['turnArea', parseText],
+  label: ['label', parseText],
+  fallback: ['fallback', parseBoolean],
   pdf: ['pdf', parseText],
   'pdf-worker-src': ['pdfWorkerSrc', parseText],
+};
+/** Options with no attribute, and why. */
+export const NO_ATTRIBUTE = {
+  on: "listeners by event name: the element dispatches every book event itself, so listen on it (addEventListener, or a framework's event binding)",
 };
 export const ATTRIBUTE_OF_OPTION = Object.fromEntries(Object.entries(ATTRIBUTES).map(([name, [option]]) => [option, name]));
 /** Attributes applied to the running book (Flipbook.setOptions), no rebuild. */
@@ -81,26 +90,43 @@ export function readOptionAttribute(element, option) {
   try { return ATTRIBUTES[attribute][1](raw, attribute); } catch { return raw; }  // a bad value is reported by the build
 }
 
-/** Writes an option to its attribute (String(value)); null or undefined removes it. */
+const plainObject = (value) => value !== null && typeof value === 'object' && Object.getPrototypeOf(value) === Object.prototype;
+
+/**
+ * Property values an attribute cannot hold, by option: given as a property, such a value is kept as
+ * given (the property reads it back, the book gets it) and wins over the attribute (the pages, over
+ * the child elements too). `strings`: the attribute takes only a string from a property.
+ */
+export const KEPT_VALUES = {
+  pages: { keeps: Array.isArray, strings: true, allowed: 'an array of pages or a string of URLs' },
+  pdf: { keeps: (value) => value instanceof ArrayBuffer || value instanceof Uint8Array, strings: true,
+    allowed: 'a URL string, an ArrayBuffer or a Uint8Array' },
+  autoplay: { keeps: plainObject, allowed: 'true, false, { interval, loop } or the milliseconds between turns' },
+};
+
+/** Whether a property value for `option` is kept as given rather than written to the attribute. */
+export const keepsValue = (option, value) => Boolean(KEPT_VALUES[option]?.keeps(value));
+
+/**
+ * Writes an option's property value to its attribute (a string, number or boolean as text); null or
+ * undefined removes it. A TypeError naming the property for a value no attribute holds.
+ */
 export function setOptionAttribute(element, option, value) {
   const attribute = ATTRIBUTE_OF_OPTION[option];
-  if (value === null || value === undefined) element.removeAttribute(attribute);
-  else element.setAttribute(attribute, String(value));
-}
-
-// Every other option is a property too (Svelte, Angular and others set properties when an element has
-// them): reading gives the attribute's value, parsed; writing sets or (null) removes the attribute.
-export const PROPERTY_OPTIONS = Object.values(ATTRIBUTES).map(([option]) => option);
-
-/** Defines the option properties `prototype` does not define itself (display, pages and pdf it does). */
-export function defineOptionProperties(prototype) {
-  for (const [option] of Object.values(ATTRIBUTES)) {
-    if (option in prototype) continue;
-    Object.defineProperty(prototype, option, {
-      configurable: true,
-      get() { return readOptionAttribute(this, option); },
-      set(value) { setOptionAttribute(this, option, value); },
-    });
+  if (value === null || value === undefined) {
+    element.removeAttribute(attribute);
+    return;
   }
+  const strings = KEPT_VALUES[option]?.strings;
+  if (typeof value !== 'string' && (strings || !(typeof value === 'number' || typeof value === 'boolean'))) {
+    throw new TypeError(`conecurl: <${TAG}> property '${option}' must be ${KEPT_VALUES[option]?.allowed
+      ?? 'a string, number or boolean (as its attribute takes)'}, got ${typeof value === 'object' ? describeValue(value) : typeof value}`);
+  }
+  element.setAttribute(attribute, String(value));
 }
+
+// Every option with an attribute is a property too (Svelte, Angular and others set properties when an
+// element has them): reading gives the value kept (KEPT_VALUES) or the attribute's, parsed; writing
+// keeps the value or sets (null: removes) the attribute.
+export const PROPERTY_OPTIONS = Object.values(ATTRIBUTES).map(([option]) => option);
 

@@ -2,10 +2,12 @@
 // live book and which need a new one, the handler of each book event, pages compared by content, and
 // the pages a component's children make. Read from options.js and book-events.js, never copied.
 import { BOOK_EVENTS } from '../book/book-events.js';
-import { LIVE_OPTIONS, OPTION_NAMES } from '../book/options.js';
+import { CREATE_OPTIONS, LIVE_OPTIONS } from '../book/options.js';
 
 /** Options a component passes through as props: startPage comes from page/defaultPage, `on` from the handlers. */
-export const OPTION_PROPS = [...OPTION_NAMES.filter((name) => name !== 'startPage' && name !== 'on'), 'pdf', 'pdfWorkerSrc'];
+export const OPTION_PROPS = CREATE_OPTIONS.filter((name) => name !== 'startPage' && name !== 'on');
+/** Props of both components beside the options and the event handlers: the page shown, controlled or not. */
+export const PAGE_PROPS = ['page', 'defaultPage'];
 /**
  * Props a change of which builds a new book at the page shown; LIVE_OPTIONS go to the running book
  * (setOptions), and `pages` too, as the changes pageChanges() finds.

@@ -6,7 +6,8 @@ let shared = null;
 
 /**
  * @param {{ wasmUrl?: string, wasmBinary?: ArrayBuffer|Uint8Array, locateFile?: (file: string) => string }} [options]
- * @returns {Promise<object>} the Embind module: curlAt, curlPoint, PageRenderer, ...
+ * @returns {Promise<object>} the Embind module (ConeCurlEngine in load-engine.d.ts): the curl math
+ *   (curlAt, curlPoint, ...) and the classes Book, FrameLoop and BookRenderer (cpp/bindings)
  */
 export function loadEngine(options = {}) {
   const custom = options.wasmUrl || options.wasmBinary || options.locateFile;

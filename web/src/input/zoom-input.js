@@ -1,6 +1,6 @@
 // Zoom and pan input for a book's canvas: Ctrl/⌘ + wheel (and trackpad pinch, which browsers send as
 // Ctrl + wheel), two-finger pinch, double-click, and dragging to pan while zoomed. It only reads the
-// DOM; what a zoom or a pan does is the book's (book-controller.js, through its surface).
+// DOM; what a zoom or a pan does is the book's (book/book-zoom.js, through its surface).
 import { isZoomed } from '../engine/layout.js';
 
 const WHEEL_ZOOM_PER_PIXEL = 0.0025;  // zoom factor exp(-deltaY * this): a notch of 100 px is about 1.28x
