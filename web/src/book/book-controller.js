@@ -1,27 +1,20 @@
-// The book controller: what a book is doing and what it tells its user, whichever surface draws it.
-// It holds the options, the pages and their states (page-store.js), the turns asked for, zoom, size and
-// events; input modules (book-input.js) and overlay layers attach to it; a surface (BookView over the
-// wasm engine, or the 2D CanvasSurface) animates and draws. Flipbook and StaticBook are this class over
-// each surface; the calls a surface answers are listed in docs/architecture.md.
-// Over 350 lines because it is the whole public API of both book classes, each member documented;
-// the work behind them is in the modules it imports.
-import { followPage, openingPage } from './page-memory.js';
-import { autoplaySettings, startAutoplay } from './autoplay.js';
-import { startPageSound } from './page-sound.js';
+// The book controller: what a book is doing and what it tells its user, whichever surface draws it, and
+// the public API of Flipbook and StaticBook (this class over each surface). It holds the options, the
+// pages and their states (page-store.js), zoom, size, the open pages shown and events; turns are carried
+// out by book-turns.js, and its parts (input, overlay layers, live pages, watchers) are wired to it by
+// book-wiring.js through one port (`_makePort`). The calls a surface answers are in docs/architecture.md.
+import { openingPage } from './page-memory.js';
 import { createShell } from './book-shell.js';
 import { BookEvents } from './book-events.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
-import { LivePages } from './live-pages.js';
-import { PageStore } from '../pages/page-store.js';
-import { createLinkLayer } from '../layers/link-layer.js';
-import { turnsAt } from '../input/turn-area.js';
-import { attachInput } from '../input/book-input.js';
-import { watchSize } from './size-watch.js';
+import { BookTurns } from './book-turns.js';
+import {
+  attachBookInput, followSurface, makeHtmlPages, makeLinkLayer, makeLivePages, makePageStore, makeZoom,
+  startCompanions, watchBookSize,
+} from './book-wiring.js';
 import { MAX_ZOOM, displayFor, openPages } from '../engine/layout.js';
-import { BookZoom } from './book-zoom.js';
 
 const REFIT_DELAY_MS = 150;  // images are fitted to a new size or zoom once it has come to rest
-const NEAR_LEAVES = 2;  // flip() turns this many leaves one by one; farther, it riffles
 
 export class BookController extends EventTarget {
   /**
@@ -38,33 +31,15 @@ export class BookController extends EventTarget {
     this._pages = pageEntries(settings.pages, { copy: !pdf });
     this._events = new BookEvents(this, settings.on);  // `on` listeners first; events of create() held
     this._destroyed = false;
-    this._flips = 0;  // counts flip() calls: a later one stops an earlier one's leaf-by-leaf turning
     this._surface = null;
     this._shell = createShell(container, { label: settings.label, direction: settings.direction });
     this._canvas = this._shell.canvas;
-    this._zoom = new BookZoom(this._canvas, {
-      surface: () => this._surface,
-      moved: () => this._layoutLayers(),
-      changed: (scale) => {
-        this._refitSoon();  // sharp pages once it rests
-        this._emit('zoom', { scale });
-      },
-    });
-    this._store = new PageStore(this._pages, settings, {
-      surface: () => this._surface,
-      openPages: () => this.openPages,
-      emit: (type, detail) => this._emit(type, detail),
-      // A source may have learned its page's text and links while making it (a PDF page). Not while a
-      // leaf moves or is lifted by a hover hint: the landing, or the hint's end, shows them again.
-      onOpenPageLoaded: (index) => {
-        if (!this._surface.animating && this.openPages.includes(index)) this._showOpenPages();
-      },
-    });
+    this._port = this._makePort();  // what the parts below may ask of the book (book-wiring.js)
+    this._zoom = makeZoom(this._port);
+    this._store = makePageStore(this._port);
+    this._turns = new BookTurns(this._port);
     this._html = null;  // HTML pages, once _build() has loaded their module
-    this._layers = [createLinkLayer(this._shell.root, {
-      linksOf: (page) => this._pages[page].links,
-      onActivate: (link, event) => this._onLink(link, event),
-    })];
+    this._layers = [makeLinkLayer(this._port)];
     this._reducedMotion = typeof matchMedia === 'function' ? matchMedia('(prefers-reduced-motion: reduce)') : null;
   }
 
@@ -113,8 +88,8 @@ export class BookController extends EventTarget {
     return this._store.whenIdle();
   }
 
-  next() { return this._turn('forward'); }
-  prev() { return this._turn('backward'); }
+  next() { return this._turns.turn('forward'); }
+  prev() { return this._turns.turn('backward'); }
 
   /** View magnification, 1 (the whole book) to MAX_ZOOM. Setting it zooms about the middle of the book. */
   get zoom() { return this._zoom.scale; }
@@ -153,24 +128,7 @@ export class BookController extends EventTarget {
       throw new RangeError(`conecurl: page ${index} is not in 0..${this.pageCount - 1}`);
     }
     // The latest flip wins: an animated flip still under way stops where it is (and resolves).
-    const flip = ++this._flips;
-    const surface = this._surface;
-    if (!animate || !this._animates()) {
-      const target = surface.positionOfPage(index);
-      if (surface.position === target && !surface.animating) return;
-      surface.jumpTo(target);
-      this._store.update();
-      this._landed();
-      return;
-    }
-    for (;;) {
-      if (index >= this.pageCount) return;  // pages removed meanwhile (removePages): that page is gone
-      const target = this._surface.positionOfPage(index);  // again each leaf: the display may switch
-      if (this._surface.position === target) return;
-      const far = Math.abs(target - this._surface.position) > NEAR_LEAVES;
-      const turned = await (far ? this._riffle(index, flip) : this._turn(target > this._surface.position ? 'forward' : 'backward'));
-      if (!turned || this._destroyed || flip !== this._flips) return;
-    }
+    return this._turns.flip(index, animate);
   }
 
   /**
@@ -195,12 +153,7 @@ export class BookController extends EventTarget {
 
   _live() {
     this._alive();
-    return (this._livePages ??= new LivePages({
-      entries: this._pages, store: this._store, hardCovers: this._settings.hardCovers, surface: () => this._surface,
-      html: () => this._html, attachHtml: (HtmlPages) => this._mountHtml(HtmlPages), page: () => this.page,
-      pdf: () => Boolean(this._pdf), alive: () => this._alive(), shown: () => this._showOpenPages(),
-      emit: (type, detail) => this._emit(type, detail), flushEvents: () => this._events.flush(),
-    }));
+    return (this._livePages ??= makeLivePages(this._port));
   }
 
   destroy() {
@@ -217,9 +170,7 @@ export class BookController extends EventTarget {
     for (const layer of this._layers) layer.remove();
     this._input?.stop();
     this._stopWatchingSize?.();
-    this._stopFollowingPage?.();
-    this._stopAutoplay?.();
-    this._sound?.stop();
+    this._stopCompanions?.();  // page memory, autoplay, the page sound
     clearTimeout(this._refitTimer);
     this._surface?.destroy({ releaseContext: true });  // the canvas goes: give its WebGL context up now
     this._surface = null;
@@ -241,153 +192,62 @@ export class BookController extends EventTarget {
     const { width, height } = this._shell.root.getBoundingClientRect();
     this._layoutSize = { width, height };
     this._surface = this._makeSurface(displayFor(this._settings.display, this._layoutSize));
-    // While leaves move, the pages they show change (turns that waited start late): the surface says when.
-    this._surface.onPagesChanged = () => { if (!this._destroyed) this._store.update(); };
-    // After a lost context, pages whose images the store closed once uploaded are decoded again.
-    this._surface.onImagesLost = (pages) => { if (!this._destroyed) this._store.reloadLost(pages); };
+    followSurface(this._port);  // the pages a moving leaf shows, images lost with a context
     this._surface.jumpTo(this._surface.positionOfPage(openingPage(this._settings, this.pageCount)));
-    this._attachInput();
-    this._stopWatchingSize = watchSize(this._shell.root, this._layoutSize, (size) => {
-      if (this._destroyed) return;
-      this._layoutSize = size;
-      this._relayout();
-    });
+    this._input = attachBookInput(this._port);
+    this._stopWatchingSize = watchBookSize(this._port, this._layoutSize);
     this._showOpenPages();
     this._store.update();
-    this._stopFollowingPage = followPage(this, this._settings);  // #page=N and the remembered page
-    const autoplay = autoplaySettings(this._settings.autoplay);
-    if (autoplay) this._stopAutoplay = startAutoplay(this, this._shell.root, autoplay);
-    this._sound = startPageSound(this, this._shell.root, { animates: () => this._animates() });
+    const companions = startCompanions(this, this._port);  // page memory, autoplay, the page sound
+    this._sound = companions.sound;
+    this._stopCompanions = companions.stop;
     await this.whenIdle();
     this._emit('ready', { page: this.page });
   }
 
   // The HTML pages' layer, under the links.
   _mountHtml(HtmlPages) {
-    this._html = new HtmlPages(this._shell.root, this._pages, {
-      direction: this._settings.direction,
-      turnArea: this._settings.turnArea,
-      canvas: this._canvas,
-      zoom: () => this.zoom,
-      pageSize: () => this._store.pageCssSize(),
-      changed: (index) => this._store.refresh(index),
-      pagesOnScreen: () => this._surface?.pagesOnScreen() ?? [],
-      // A video's new frame drawn into the page's image: upload it again, if the page is still kept.
-      // (The snapshot already has the page's texture size: no cover to work out, no layout read a frame.)
-      redrawn: (index, canvas) => { if (this._store.holds(index, canvas)) this._surface.setPageImage(index, canvas); },
-    });
+    this._html = makeHtmlPages(HtmlPages, this._port);
     this._layers.unshift(this._html);
   }
 
-  // ---- input: each module in its own file (book-input.js), told what it may do --------------
+  // ---- the port: all that book-turns.js and book-wiring.js see of the book (book-wiring.js BookPort) --
 
-  _attachInput() {
-    this._input = attachInput({
-      canvas: this._canvas, element: this._shell.root, surface: this._surface, direction: this._settings.direction,
-    }, {
-      zoom: () => this.zoom,
-      zoomed: () => this._zoom.zoomed,
-      zoomAbout: (scale, x, y) => { if (!this._destroyed) this._zoom.about(scale, x, y); },
-      zoomAboutCentre: (scale) => { if (!this._destroyed) this._zoom.aboutCentre(scale); },
-      panBy: (dx, dy) => this._zoom.panBy(dx, dy),
-      turn: (direction) => { if (!this._destroyed) this._turn(direction).catch(() => {}); },  // input after destroy() is dropped
-      jump: (end) => { this.flip(end === 'first' ? 0 : this.pageCount - 1).catch(() => {}); },  // Home, End: a riffle
-      turnsFrom: (clientX, clientY) => this._turnsFrom(clientX, clientY),
-      dragStarted: (direction) => {
-        this._hideLayers();
-        this._emit('turnstart', { direction, page: this.page, drag: true });
-        this._store.update();
+  _makePort() {
+    return {
+      canvas: this._canvas,
+      root: this._shell.root,
+      entries: this._pages,
+      settings: this._settings,
+      surface: () => this._surface,
+      store: () => this._store,
+      zoom: () => this._zoom,
+      turns: () => this._turns,
+      html: () => this._html,
+      destroyed: () => this._destroyed,
+      alive: () => this._alive(),
+      animates: () => this._animates(),
+      page: () => this.page,
+      pageCount: () => this.pageCount,
+      openPages: () => this.openPages,
+      emit: (type, detail) => this._emit(type, detail),
+      flip: (index) => this.flip(index),
+      showOpenPages: () => this._showOpenPages(),
+      layoutLayers: () => this._layoutLayers(),
+      hideLayers: () => this._hideLayers(),
+      refitSoon: () => this._refitSoon(),
+      resized: (size) => {
+        this._layoutSize = size;
+        this._relayout();
       },
-      dragEnded: (completed) => {
-        if (this._destroyed) return;
-        this._store.update();
-        if (completed) {
-          this._landed();
-        } else {
-          this._showOpenPages();
-          this._emit('turncancel', { page: this.page });
-        }
-      },
-      // A corner lifts as the mouse hovers it: the live layers give way to the page's texture.
-      hintStarted: () => this._hideLayers(),
-      // A corner lifted by hovering fell back: the open pages are those from before it again.
-      hintEnded: () => { if (!this._destroyed) this._showOpenPages(); },
-    });
+      attachHtml: (HtmlPages) => this._mountHtml(HtmlPages),
+      followLink: (link, event) => this._onLink(link, event),
+      flushEvents: () => this._events.flush(),
+      pdf: () => Boolean(this._pdf),
+    };
   }
 
-  // ---- turning -------------------------------------------------------------------------------
-
-  async _turn(direction) {
-    this._alive();
-    const ready = this._readyToMove();
-    if (ready !== true && !(await ready)) return false;  // no wait unless a page is drawn again: next() starts at once
-    if (!this._animates()) return this._jumpOneLeaf(direction);
-    return this._follow(this._surface.turn(direction), { direction });
-  }
-
-  // A riffle to page `index`, once leaves in flight have landed (false if a later flip came first). The
-  // position is found after the wait: the display may have switched meanwhile.
-  async _riffle(index, flip) {
-    await this._surface.settle();
-    if (this._destroyed || flip !== this._flips) return false;
-    const ready = this._readyToMove();
-    if ((ready !== true && !(await ready)) || flip !== this._flips || index >= this.pageCount) return false;
-    const target = this._surface.positionOfPage(index);
-    if (target === this._surface.position) return true;
-    const direction = target > this._surface.position ? 'forward' : 'backward';
-    const riffling = this._surface.riffle(target);
-    if (!this._surface.animating) return this._turn(direction);  // refused: leaf by leaf then
-    return this._follow(riffling, { direction, riffle: true });
-  }
-
-  // Before leaves move: a turn asked for by code shows the whole book again, and open HTML pages whose
-  // content changed since their textures were made are drawn again: true at once if none, else a
-  // promise of whether the book is still alive once they are.
-  _readyToMove() {
-    if (this._zoom.zoomed) this._zoom.about(1, 0, 0);
-    const stale = this._html?.staleAmong(this.openPages) ?? [];
-    if (stale.length === 0) return true;
-    return Promise.all(stale.map((index) => this._store.refresh(index))).then(() => !this._destroyed);
-  }
-
-  // Leaves set moving by the surface (`moving` resolves whether they landed): turnstart, the pages they
-  // show, then turned.
-  async _follow(moving, detail) {
-    if (this._surface.animating) {
-      this._hideLayers();
-      this._emit('turnstart', { ...detail, page: this.page });
-    }
-    this._store.update();
-    const landed = await moving;
-    if (this._destroyed) return false;
-    this._store.update();
-    if (landed) this._landed();
-    return landed;
-  }
-
-  /** Whether a press at a viewport point may turn a page there (the `turnArea` option). */
-  _turnsFrom(clientX, clientY) {
-    const box = this._canvas.getBoundingClientRect();
-    const { turnArea, direction } = this._settings;
-    return turnsAt(turnArea, () => this._surface.openPagePlaces(), direction, clientX - box.left, clientY - box.top);
-  }
-
-  // Reduced motion, or still pages: a turn is a cut to the next spread, with the same events.
-  _jumpOneLeaf(direction) {
-    const surface = this._surface;
-    const target = surface.position + (direction === 'forward' ? 1 : -1);
-    if (target < 0 || target > surface.lastPosition()) return false;
-    surface.jumpTo(target);
-    this._emit('turnstart', { direction, page: this.page });
-    this._store.update();
-    this._landed();
-    return true;
-  }
-
-  _landed() {
-    this._showOpenPages();
-    this._emit('turned', { page: this.page });
-  }
+  // ---- the open pages, the overlay layers, links ---------------------------------------------
 
   // The open pages are shown again: the overlay layers laid over them, the live region and alt text.
   _showOpenPages() {
@@ -396,7 +256,7 @@ export class BookController extends EventTarget {
     this._shell.showOpenPages(pages, this.pageCount, pages.map((i) => this._pages[i].alt));
   }
 
-  // ---- overlay layers: laid over the open pages while the book rests, hidden while a leaf moves --
+  // Overlay layers: laid over the open pages while the book rests, hidden while a leaf moves.
   _layoutLayers() {
     if (this._destroyed || !this._surface) return;
     if (this._surface.animating) {

@@ -1,21 +1,19 @@
 // One book on a canvas: JS ergonomics over the wasm Book (state, animation), BookRenderer (GL) and
-// FrameLoop (the clock): canvas sizing, page uploads, and a render loop that runs only while something
-// moves and costs one call into the engine per frame. It is the book controller's WebGL surface.
-// Over 350 lines because it is also the public lower layer (README "Using the engine from JavaScript"),
-// member by member a few lines over the engine, with the context-loss path that keeps it drawing.
+// FrameLoop (the clock), one call into the engine per frame. It is the book controller's WebGL surface
+// and the public lower layer (README "Using the engine from JavaScript"): member by member a few lines
+// over the engine's objects (engine-objects.js) and the view's parts: the frames (frame-scheduler.js),
+// the page textures (page-textures.js), the lost context (context-keeper.js), the canvas's sizes (canvas-size.js).
 import { loadEngine } from '../engine/load-engine.js';
-import { PageLoadError } from '../pages/page-loader.js';
-import { atSize, naturalSize, uploadSizeFor } from '../pages/texture-upload.js';
-import { splicePageMap, splicedPage } from '../engine/layout.js';
+import { uploadSizeFor } from '../pages/texture-upload.js';
+import { createEngineObjects } from './engine-objects.js';
+import { FrameScheduler } from './frame-scheduler.js';
+import { PageTextures } from './page-textures.js';
+import { ContextKeeper } from './context-keeper.js';
+import { CanvasSize } from './canvas-size.js';
 
 export { uploadSizeFor };
 
-const BINDING_OF_DIRECTION = { ltr: 'left', rtl: 'right', vertical: 'top' };
 const TURN_REFUSED = 2;  // FrameLoop.requestTurn: 0 started, 1 queued, 2 refused
-
-// A closed ImageBitmap reads 0 x 0 and cannot be uploaded again.
-const isClosed = (source) => typeof ImageBitmap !== 'undefined' && source instanceof ImageBitmap && source.width === 0;
-let nextTargetId = 1;
 
 export class BookView {
   /**
@@ -29,38 +27,13 @@ export class BookView {
   }
 
   constructor(engine, canvas, options) {
-    const direction = options.direction ?? 'ltr';
-    if (!(direction in BINDING_OF_DIRECTION)) {
-      throw new TypeError(`conecurl: direction must be 'ltr', 'rtl' or 'vertical', got ${String(direction)}`);
-    }
+    const made = createEngineObjects(engine, canvas, options);  // a TypeError names a bad direction
     this.engine = engine;
     this.canvas = canvas;
-    this.book = engine.Book.create({
-      pageCount: options.pageCount,
-      display: options.display ?? 'double',
-      binding: BINDING_OF_DIRECTION[direction],
-      pageWidth: options.pageWidth,
-      pageHeight: options.pageHeight,
-      turnSeconds: options.turnSeconds,
-      hardPages: options.hardPages,
-      schedule: options.schedule,
-      center: options.center,
-      thickness: options.thickness ?? true,
-    });
-    this._target = `!conecurl-canvas-${nextTargetId++}`;
-    engine.specialHTMLTargets[this._target] = canvas;
-    try {
-      this.renderer = engine.BookRenderer.create(this._target, options.antialias ?? true);
-    } catch (error) {
-      delete engine.specialHTMLTargets[this._target];
-      this.book.delete();
-      throw error;
-    }
-    this.renderer.setOptions({
-      lighting: options.lighting ?? true, shadows: options.shadows ?? true, gutter: options.gutter ?? true,
-    });
-    this._loop = new engine.FrameLoop(this.book, this.renderer);
-    this._ticks = { moving: engine.TICK_MOVING, settled: engine.TICK_SETTLED, pagesChanged: engine.TICK_PAGES_CHANGED };
+    this.book = made.book;
+    this.renderer = made.renderer;
+    this._loop = made.loop;       // the clock: one call into the engine a frame
+    this._target = made.target;   // the canvas's name in engine.specialHTMLTargets
     /** Called after a frame whose pages on screen changed (a leaf lifted or landed): residency follows. */
     this.onPagesChanged = null;
     this.onImagesLost = null;  // (pages) after a context restore, for pages whose image was closed
@@ -68,21 +41,35 @@ export class BookView {
     this.onMotion = null;
     /** The book's share of the page's WebGL contexts (context-budget.js), told when the view wants to draw. */
     this.contextLease = null;
-    this._uploads = [];          // page images waiting for a frame while leaves move: one a frame
-    this._moving = false;        // the last frame still moved
-    this._sources = new Map();   // page -> { source, cover }, to upload again after a context loss
-    this._uploaded = new Map();  // page -> { width, height } of its texture
-    this._frame = 0;
-    this._poseFrom = null;
-    this._settled = [];
-    this._lost = false;          // the GL context is lost: the clock and drawing wait for its restore
-    this._sizeStale = true;      // the canvas's CSS size or pixel ratio changed since the buffer was sized
-    this._onLost = (event) => this._loseContext(event);
-    this._onRestored = () => this._restore();
-    canvas.addEventListener('webglcontextlost', this._onLost);
-    canvas.addEventListener('webglcontextrestored', this._onRestored);
-    this._resizeObserver = typeof ResizeObserver === 'function' ? new ResizeObserver(() => this.sizeChanged()) : null;
-    this._resizeObserver?.observe(canvas);
+    this._poseFrom = null;  // the settled position showTurn() poses from
+    this._frames = new FrameScheduler({
+      runs: () => Boolean(this.renderer) && this._context.clockRuns,
+      tick: (now) => this._tick(now),
+      ticked: () => this._ticked(),
+      pagesChanged: () => this.onPagesChanged?.(),
+    }, { moving: engine.TICK_MOVING, settled: engine.TICK_SETTLED, pagesChanged: engine.TICK_PAGES_CHANGED });
+    this._textures = new PageTextures({
+      renderer: () => this.renderer,
+      upload: (page, source, options) => this.setPageImage(page, source, options),
+      moving: () => this._frames.moving,
+      pagesOnScreen: () => this.pagesOnScreen(),
+      redraw: () => this.requestRender(),
+    });
+    this._context = new ContextKeeper(canvas, {
+      lease: () => this.contextLease,
+      stopClock: () => {
+        this._frames.cancel();
+        this._loop.forgetLastTick();  // the first frame after the restore advances nothing
+      },
+      rebuild: () => this.renderer.recreateGpuObjects(),
+      uploadAgain: () => this._textures.uploadAgain(),
+      redraw: () => this.requestRender(),
+      imagesLost: (pages) => this.onImagesLost?.(pages),
+    });
+    this._size = new CanvasSize(canvas, {
+      changed: () => this.sizeChanged(),
+      cleared: () => this.requestRender(),
+    });
     this.requestRender();
   }
 
@@ -111,77 +98,26 @@ export class BookView {
   /** Turns asked for that wait for a leaf still in flight. */
   get queuedTurns() { return this._loop.queuedTurns(); }
   /** The WebGL context is lost and not yet restored: turns in flight are paused. */
-  get contextLost() { return this._lost; }
+  get contextLost() { return this._context.lost; }
 
   /**
    * Uploads a page's image. It is scaled down (never up) to fit MAX_TEXTURE_SIZE and, given
    * `cover: { width, height }` in pixels, to the smallest size that still covers that box.
    */
-  setPageImage(page, source, { cover } = {}) {
-    const natural = source instanceof ImageData ? source : naturalSize(source);
-    const size = uploadSizeFor(natural.width, natural.height, { cover, maxTextureSize: this.renderer.maxTextureSize() });
-    try {
-      this.renderer.setPageImage(page, atSize(source, natural, size), size.width, size.height);
-    } catch (error) {
-      if (error?.name !== 'SecurityError') throw error;
-      throw new PageLoadError(`conecurl: page ${page}: its image is cross-origin without CORS, so its pixels cannot `
-        + 'be read (load it with crossorigin="anonymous" from a server that sends Access-Control-Allow-Origin)',
-      { reason: 'cors', cause: error });
-    }
-    this._sources.set(page, { source, cover });
-    this._uploaded.set(page, size);
-    this._redrawIfShown(page);
-  }
+  setPageImage(page, source, options) { this._textures.set(page, source, options); }
 
   /**
    * Like setPageImage, but while leaves move the upload waits for the next frame, at most one a frame,
    * so pages that arrive together mid-turn never stall it. Resolves once uploaded; rejects with what
    * setPageImage throws (or an Error if the view is destroyed first).
    */
-  queuePageImage(page, source, options = {}) {
-    if (!this._moving) {
-      try {
-        this.setPageImage(page, source, options);
-        return Promise.resolve();
-      } catch (error) {
-        return Promise.reject(error);
-      }
-    }
-    return new Promise((resolve, reject) => {
-      this._uploads.push({ page, source, options, resolve, reject });
-      this.requestRender();
-    });
-  }
+  queuePageImage(page, source, options = {}) { return this._textures.queue(page, source, options); }
 
-  _uploadNext() {
-    const { page, source, options, resolve, reject } = this._uploads.shift();
-    try {
-      this.setPageImage(page, source, options);
-      resolve();
-    } catch (error) {
-      reject(error);
-    }
-  }
-
-  releasePageImage(page) {
-    this.renderer.releasePageImage(page);
-    this._sources.delete(page);
-    this._uploaded.delete(page);
-    this._redrawIfShown(page);
-  }
-
-  // A page's texture changed: a frame only if the page is drawn now. The pages loaded around the open
-  // spread arrive one by one; each would otherwise cost a whole frame that shows nothing new. While
-  // leaves move the next frame comes anyway: no call into the engine to ask (uploads land mid-turn).
-  _redrawIfShown(page) {
-    if (!this._moving && this.pagesOnScreen().includes(page)) this.requestRender();
-  }
+  /** Deletes the page's texture (a frame only if the page is drawn now). */
+  releasePageImage(page) { this._textures.release(page); }
 
   /** Pixel size of page `page`'s texture as uploaded, or null without one. */
-  pageImageSize(page) {
-    const size = this._uploaded.get(page);
-    return size ? { ...size } : null;
-  }
+  pageImageSize(page) { return this._textures.sizeOf(page); }
 
   /**
    * Where the resting pages lie on the canvas, in CSS pixels from its top-left: both page places of
@@ -190,7 +126,7 @@ export class BookView {
   restingRect() {
     const { width, height } = this.fitCanvas();
     const r = this.book.restingRect(width, height);  // drawing-buffer pixels, from the engine's camera
-    const toCss = this.canvas.clientWidth / width;
+    const toCss = this._size.cssPerPixel(width);
     return { x: r.x * toCss, y: r.y * toCss, width: r.width * toCss, height: r.height * toCss };
   }
 
@@ -201,7 +137,7 @@ export class BookView {
    */
   openPagePlaces() {
     const { width, height } = this.fitCanvas();
-    const toCss = this.canvas.clientWidth / width;
+    const toCss = this._size.cssPerPixel(width);
     return this.book.openPagePlaces(width, height).map(({ page, turned, x, y, width: w, height: h }) => (
       { page, turned, x: x * toCss, y: y * toCss, width: w * toCss, height: h * toCss }));
   }
@@ -210,16 +146,7 @@ export class BookView {
    * The drawing-buffer pixel under a viewport point, and the buffer's size: the engine's camera (drag
    * solve, zoom) works in these, the DOM in CSS pixels.
    */
-  bufferPixel(clientX, clientY) {
-    const box = this.canvas.getBoundingClientRect();
-    const { width, height } = this.fitCanvas();
-    return {
-      x: ((clientX - box.left) * width) / Math.max(1, box.width),
-      y: ((clientY - box.top) * height) / Math.max(1, box.height),
-      width,
-      height,
-    };
-  }
+  bufferPixel(clientX, clientY) { return this._size.bufferPixel(clientX, clientY); }
 
   /** Magnifies the view to `scale` keeping the table point under the viewport point where it is. */
   zoomAbout(scale, clientX, clientY) {
@@ -272,13 +199,7 @@ export class BookView {
     this._loop.clearQueue();
     this.renderer.splicePageImages(at, removed, inserted);
     this.book.setPages(this.book.pageCount() - removed + inserted, hardPages);
-    this._sources = splicePageMap(this._sources, at, removed, inserted);
-    this._uploaded = splicePageMap(this._uploaded, at, removed, inserted);
-    for (const upload of this._uploads.splice(0)) {
-      upload.page = splicedPage(upload.page, at, removed, inserted);
-      if (upload.page >= 0) this._uploads.push(upload);
-      else upload.reject(new Error('conecurl: the page was removed before its image was uploaded'));
-    }
+    this._textures.splice(at, removed, inserted);
     this.requestRender();
   }
 
@@ -306,7 +227,7 @@ export class BookView {
   /** Resolves when every turn in flight has landed and no leaf is held. */
   settle() {
     if (!this.book.animating()) return Promise.resolve();
-    return new Promise((resolve) => this._settled.push(resolve));
+    return this._frames.whenSettled();
   }
 
   /** Draws the current state at once (same task), e.g. before readPixels(); sizes the canvas first. */
@@ -317,14 +238,11 @@ export class BookView {
 
   readPixels() { return this.renderer.readPixels(); }
 
+  /** Asks for a frame (none while the context is lost, unless parked: context-keeper.js). */
   requestRender() {
     this.contextLease?.demand();  // Flipbook's share of the page's WebGL contexts (context-budget.js)
-    if (!this._frame && this.renderer && (!this._lost || this._parked)) this._frame = requestAnimationFrame((now) => this._tick(now));
+    this._frames.request();
   }
-
-  // The context was handed back on purpose (context-budget.js parks a book out of view): unlike an
-  // accidental loss, the clock runs on, so turns land and resolve, and nothing is drawn.
-  get _parked() { return this._lost && this.contextLease?.state === 'parked'; }
 
   /**
    * Cancels animation, removes listeners, deletes every GL object and the wasm objects. With
@@ -333,11 +251,9 @@ export class BookView {
    */
   destroy({ releaseContext = false } = {}) {
     if (!this.renderer) return;
-    cancelAnimationFrame(this._frame);
-    this._frame = 0;
-    this._resizeObserver?.disconnect();
-    this.canvas.removeEventListener('webglcontextlost', this._onLost);
-    this.canvas.removeEventListener('webglcontextrestored', this._onRestored);
+    this._frames.cancel();
+    this._size.stop();
+    this._context.stop();
     // The canvas has its WebGL2 context already: getContext hands back that one, it makes no new one.
     const gl = releaseContext ? this.canvas.getContext('webgl2') : null;
     this.onPagesChanged = null;
@@ -349,10 +265,8 @@ export class BookView {
     gl?.getExtension('WEBGL_lose_context')?.loseContext();
     this.renderer = null;
     delete this.engine.specialHTMLTargets[this._target];
-    this._sources.clear();
-    this._uploaded.clear();
-    for (const { reject } of this._uploads.splice(0)) reject(new Error('conecurl: the book view was destroyed'));
-    for (const resolve of this._settled.splice(0)) resolve();
+    this._textures.clear();
+    this._frames.settleAll();
   }
 
   /**
@@ -365,7 +279,7 @@ export class BookView {
     if (this._loop.queuedTurns() > 0 || !this.book.riffleTo(position)) return Promise.resolve(false);
     this._loop.run(performance.now());
     this.requestRender();
-    return new Promise((resolve) => this._settled.push(() => resolve(true)));
+    return this._frames.whenSettled(true);
   }
 
   /** next() or prev() by name: 'forward' or 'backward'. */
@@ -374,24 +288,22 @@ export class BookView {
     // performance.now() and animation frames share a clock: the turn runs from now, not from its first frame.
     if (this._loop.requestTurn(direction, performance.now()) === TURN_REFUSED) return Promise.resolve(false);
     this.requestRender();
-    return new Promise((resolve) => this._settled.push(() => resolve(true)));
+    return this._frames.whenSettled(true);
   }
 
-  // One animation frame: a single call into the engine advances, starts queued turns and draws.
+  // A frame's step (frame-scheduler.js): a single call into the engine advances, starts queued turns
+  // and draws (nothing while a parked context is away: the clock runs on). Returns its flags.
   _tick(now) {
-    this._frame = 0;
-    if (!this.renderer || (this._lost && !this._parked)) return;
-    if (!this._lost) this._fitIfStale();
-    const flags = this._loop.tick(now, !this._lost);
-    this._moving = Boolean(flags & this._ticks.moving);
+    const drawing = !this._context.lost;
+    if (drawing) this._size.fitIfStale();
+    return this._loop.tick(now, drawing);
+  }
+
+  // After the step: the leaves' motion to the page sound, and page images that arrived, one a frame
+  // while leaves move (shown from the next), all at once at rest.
+  _ticked() {
     if (this.onMotion) this.onMotion(this._loop.motion());  // a second call into the engine, only with sound on
-    // Pages that arrived while leaves move: one a frame (shown from the next); all at once at rest.
-    if (this._uploads.length > 0) this._uploadNext();
-    while (!this._moving && this._uploads.length > 0) this._uploadNext();
-    // One frame chain only: an upload or a resize above may have asked for the next frame already.
-    if (this._moving && !this._frame) this._frame = requestAnimationFrame((t) => this._tick(t));
-    if (flags & this._ticks.pagesChanged) this.onPagesChanged?.();
-    if (flags & this._ticks.settled) for (const resolve of this._settled.splice(0)) resolve();
+    this._textures.drain(this._frames.moving);
   }
 
   /** After the held leaf's pose changed (dragged, hinted, released): draw and run the clock until it rests. */
@@ -403,48 +315,10 @@ export class BookView {
 
   /** The canvas's CSS size or the device pixel ratio changed: the next frame sizes the buffer anew. */
   sizeChanged() {
-    this._sizeStale = true;
+    this._size.markStale();
     this.requestRender();
-  }
-
-  _fitIfStale() {
-    if (this._sizeStale) this.fitCanvas();
   }
 
   /** Sizes the drawing buffer to the canvas's CSS size x devicePixelRatio; returns that size. */
-  fitCanvas() {
-    this._sizeStale = false;
-    const ratio = window.devicePixelRatio || 1;
-    const width = Math.max(1, Math.round(this.canvas.clientWidth * ratio));
-    const height = Math.max(1, Math.round(this.canvas.clientHeight * ratio));
-    if (this.canvas.width !== width || this.canvas.height !== height) {
-      this.canvas.width = width;
-      this.canvas.height = height;
-      this.requestRender();  // resizing cleared the buffer
-    }
-    return { width, height };
-  }
-
-  // A lost context stops the clock where it is: turns in flight (and a held leaf) pause, and go on
-  // from the same pose once it is restored. preventDefault() tells the browser we want it back.
-  _loseContext(event) {
-    event.preventDefault();
-    this._lost = true;
-    cancelAnimationFrame(this._frame);
-    this._frame = 0;
-    this._loop.forgetLastTick();  // the first frame after the restore advances nothing
-  }
-
-  _restore() {
-    this._lost = false;
-    // Every GL object is rebuilt from CPU-side state; page images from the sources kept here.
-    this.renderer.recreateGpuObjects();
-    const lost = [];
-    for (const [page, { source, cover }] of this._sources) {
-      if (isClosed(source)) lost.push(page);  // closed after upload by its owner: only the owner can make it again
-      else this.setPageImage(page, source, { cover });
-    }
-    this.requestRender();
-    if (lost.length) this.onImagesLost?.(lost);
-  }
+  fitCanvas() { return this._size.fit(); }
 }
