@@ -18,7 +18,7 @@ enum TickFlags : int {
 };
 
 // A turn asked for: started now, waiting behind a leaf in flight, or refused (end of book, queue full).
-enum class TurnRequest { Started = 0, Queued = 1, Refused = 2 };
+enum class TurnRequest { Started = kTurnStarted, Queued = kTurnQueued, Refused = kTurnRefused };
 
 // The pages a frame shows, in draw order, without duplicates or blank sides (kNoPage).
 struct PagesOnScreen {

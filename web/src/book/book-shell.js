@@ -1,6 +1,7 @@
 // The elements a Flipbook puts in its container: a focusable region that holds the canvas, a polite
 // live region announcing the open pages, and visually hidden text of those pages for screen readers.
 import { keyShortcuts } from '../input/input-keys.js';
+import { directionFacts } from '../engine/direction.js';
 
 // The focus ring, and HTML pages with turnArea 'page': a press on their content turns the page unless
 // it lands on something interactive (html-pages.js).
@@ -59,8 +60,7 @@ export function createShell(container, { label, direction }) {
   canvas.setAttribute('aria-hidden', 'true');
   // The browser keeps the scrolling and zooming that does not turn pages (swipes go along the turn).
   // Pinches stay with the book (it zooms itself); a stroke across the turn still scrolls the page.
-  const touchAction = direction === 'vertical' ? 'pan-x' : 'pan-y';
-  canvas.style.cssText = `display:block;width:100%;height:100%;touch-action:${touchAction}`;
+  canvas.style.cssText = `display:block;width:100%;height:100%;touch-action:${directionFacts(direction).touchAction}`;
 
   const status = document.createElement('div');
   status.setAttribute('role', 'status');

@@ -1,11 +1,12 @@
 // The engine's layout in plain JS (positions, page places, zoom) for the 2D fallback, which has no wasm,
 // and the engine's constants for every JS module; tests/node/layout.test.mjs holds both to the engine.
 import {
-  DEFAULT_PAGE_HEIGHT, DEFAULT_PAGE_WIDTH, FRAME_MARGIN, MAX_LEAF_THICKNESS, MAX_TURNS_IN_FLIGHT, MAX_ZOOM, PAPER_BLUE, PAPER_GREEN,
-  PAPER_RED,
+  DEFAULT_PAGE_HEIGHT, DEFAULT_PAGE_WIDTH, FRAME_MARGIN, MAX_LEAF_THICKNESS, MAX_PAGES, MAX_TURNS_IN_FLIGHT, MAX_ZOOM, PAPER_BLUE,
+  PAPER_GREEN, PAPER_RED, TURN_QUEUED, TURN_REFUSED, TURN_STARTED,
 } from '../../../dist/engine-constants.js';
+import { directionFacts } from './direction.js';
 
-export { MAX_LEAF_THICKNESS, MAX_TURNS_IN_FLIGHT, MAX_ZOOM };
+export { MAX_LEAF_THICKNESS, MAX_PAGES, MAX_TURNS_IN_FLIGHT, MAX_ZOOM, TURN_QUEUED, TURN_REFUSED, TURN_STARTED };
 /** The renderer's placeholder paper, as a CSS colour. */
 export const PAPER = `rgb(${PAPER_RED}, ${PAPER_GREEN}, ${PAPER_BLUE})`;
 /** The engine's default page: width (spine to free edge) over height (along the spine). */
@@ -70,13 +71,14 @@ export function restingRect(size, book = {}, position = undefined) {
   const { display = 'double', direction = 'ltr', pageAspect = DEFAULT_PAGE_ASPECT } = book;
   const across = display === 'double' ? 2 * pageAspect : pageAspect;  // page widths, spine to free edge
   // A top spine (vertical) hangs the pages below it: the width runs down the canvas.
-  const [frameWidth, frameHeight] = direction === 'vertical' ? [1, across] : [across, 1];
+  const { vertical, turnedFirst } = directionFacts(direction);
+  const [frameWidth, frameHeight] = vertical ? [1, across] : [across, 1];
   const scale = Math.min(size.width / (frameWidth * FRAME_MARGIN), size.height / (frameHeight * FRAME_MARGIN));
   const width = frameWidth * scale;
   const height = frameHeight * scale;
   // The camera moves towards the unturned side (right for ltr, left for rtl, down for vertical): the pages move the other way.
   const shift = position === undefined ? 0 : centerShift(position, book) * pageAspect * scale;
-  const [dx, dy] = direction === 'vertical' ? [0, -shift] : [direction === 'rtl' ? shift : -shift, 0];
+  const [dx, dy] = vertical ? [0, -shift] : [turnedFirst ? -shift : shift, 0];
   return { x: (size.width - width) / 2 + dx, y: (size.height - height) / 2 + dy, width, height };
 }
 
@@ -92,11 +94,11 @@ export function openPagePlaces(position, book, size, zoom) {
   if (display !== 'double') {
     if (position < pageCount) places.push({ page: position, turned: false, ...rect });
   } else {
-    const vertical = direction === 'vertical';
+    const { vertical, turnedFirst } = directionFacts(direction);
     const half = vertical
       ? [{ ...rect, height: rect.height / 2 }, { ...rect, y: rect.y + rect.height / 2, height: rect.height / 2 }]
       : [{ ...rect, width: rect.width / 2 }, { ...rect, x: rect.x + rect.width / 2, width: rect.width / 2 }];
-    const [turned, unturned] = direction === 'rtl' ? [half[1], half[0]] : half;
+    const [turned, unturned] = turnedFirst ? half : [half[1], half[0]];
     // The turned leaf shows its back page, the unturned one its front (a leaf holds pages 2l and 2l + 1).
     if (position > 0) places.push({ page: 2 * position - 1 < pageCount ? 2 * position - 1 : -1, turned: true, ...turned });
     if (position < Math.ceil(pageCount / 2)) places.push({ page: 2 * position, turned: false, ...unturned });

@@ -1,18 +1,14 @@
 // Keys on the book's element: the arrows along the turn, PageUp/PageDown and Home/End turn pages;
 // + - = and 0 zoom. The one map of the book's keys (the shell's aria-keyshortcuts is made from it).
+import { directionFacts } from '../engine/direction.js';
 
 const ZOOM_STEP = 1.25;  // one press of + or -
 
-const TURN_KEYS = {
-  ltr: { ArrowRight: 'forward', ArrowLeft: 'backward' },
-  rtl: { ArrowLeft: 'forward', ArrowRight: 'backward' },
-  vertical: { ArrowDown: 'forward', ArrowUp: 'backward' },
-};
 const COMMON_KEYS = { PageDown: 'forward', PageUp: 'backward', Home: 'first', End: 'last' };
 
 /** The keys a book of `direction` answers, as aria-keyshortcuts lists them. */
 export function keyShortcuts(direction) {
-  return [...Object.keys(TURN_KEYS[direction]), ...Object.keys(COMMON_KEYS)].join(' ');
+  return [...Object.keys(directionFacts(direction).keys), ...Object.keys(COMMON_KEYS)].join(' ');
 }
 
 /**
@@ -21,7 +17,7 @@ export function keyShortcuts(direction) {
  */
 export function actionForKey(event, direction) {
   if (event.defaultPrevented || event.altKey || event.ctrlKey || event.metaKey) return null;
-  return TURN_KEYS[direction][event.key] || COMMON_KEYS[event.key] || null;
+  return directionFacts(direction).keys[event.key] || COMMON_KEYS[event.key] || null;
 }
 
 // Elements inside a page (an HTML page's) that use these keys themselves: text fields, lists, media.

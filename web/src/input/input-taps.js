@@ -1,10 +1,10 @@
 // Turning by pointer without dragging: a click or tap on a half of the book turns it (the half that
 // holds the next page turns forward), a swipe along the turn turns it. Mouse clicks come in series: a
 // series of exactly two is a double-click, which zooms (zoom-input.js), so a first click waits a moment.
+import { directionFacts, halfOf as halfOfBox } from '../engine/direction.js';
 import { listenForTapsAndSwipes, swipeDirection } from './tap-swipe.js';
 
 const CLICK_SERIES_MS = 300;  // clicks this close together are one series (a double-click, or rapid turning)
-const FORWARD_HALF = { ltr: 'right', rtl: 'left', vertical: 'bottom' };
 
 /**
  * Which half of `rect` (CSS px of the canvas) a point falls on: 'left'/'right' (ltr, rtl) or
@@ -14,8 +14,7 @@ export function halfAt(rect, x, y, direction) {
   const px = x - rect.x;
   const py = y - rect.y;
   if (px < 0 || py < 0 || px > rect.width || py > rect.height) return null;
-  if (direction === 'vertical') return py < rect.height / 2 ? 'top' : 'bottom';
-  return px < rect.width / 2 ? 'left' : 'right';
+  return halfOfBox(direction, rect.width, rect.height, px, py);
 }
 
 /**
@@ -32,7 +31,7 @@ export function listenForTaps(canvas, book) {
   };
   const turnTo = (half) => {
     if (!half || book.zoomed()) return;  // zoomed in, a press pans: no turning
-    book.turn(half === FORWARD_HALF[book.direction] ? 'forward' : 'backward');
+    book.turn(half === directionFacts(book.direction).forwardHalf ? 'forward' : 'backward');
   };
   // Turns the clicks a series held back; `keepGoing`: the series stays open for more rapid clicks.
   const flush = (held, keepGoing) => {

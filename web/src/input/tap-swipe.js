@@ -1,5 +1,6 @@
 // Pointer input that turns pages without dragging: a mouse click or a touch/pen tap names a point,
 // a touch/pen stroke is a swipe. One small place, so the corner-drag module can share it.
+import { directionFacts } from '../engine/direction.js';
 
 const TAP_SLOP = 10;          // CSS px a finger may wander and still tap
 const TAP_MAX_MS = 500;
@@ -13,11 +14,10 @@ const SWIPE_DOMINANCE = 1.5;  // a swipe travels this much further along the tur
  * the spine side of the next page's place.
  */
 export function swipeDirection(dx, dy, direction) {
-  const vertical = direction === 'vertical';
+  const { vertical, forwardSign } = directionFacts(direction);
   const along = vertical ? dy : dx;
   const across = vertical ? dx : dy;
   if (Math.abs(along) < SWIPE_DOMINANCE * Math.abs(across)) return null;
-  const forwardSign = direction === 'rtl' ? 1 : -1;
   return Math.sign(along) === forwardSign ? 'forward' : 'backward';
 }
 

@@ -1,17 +1,11 @@
 // Where a press may turn a page (the `turnArea` option): anywhere on it, a band along its free edge,
 // its two free corners, or nowhere. One rule for presses on the canvas (input) and for the grips laid
 // over an HTML page's live content that hand presses to the canvas (html-pages.js).
+import { freeEdge } from '../engine/direction.js';
 
 export const TURN_AREAS = ['page', 'edges', 'corners', 'none'];
 const BAND = 0.15;       // the band's depth, as a fraction of the page across the turn
 const MIN_BAND_PX = 24;  // ... and never less than a fingertip
-
-/** The free edge of an open page: 'left' | 'right' | 'top' | 'bottom'; `turned` for the turned side's page. */
-export function freeEdge(direction, turned) {
-  if (direction === 'vertical') return turned ? 'top' : 'bottom';
-  const left = direction === 'rtl' ? !turned : turned;
-  return left ? 'left' : 'right';
-}
 
 function bandDepth(width, height, edge) {
   const across = edge === 'left' || edge === 'right' ? width : height;

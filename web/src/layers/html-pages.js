@@ -5,7 +5,8 @@
 // measured by scripts/bench/html-snapshots.mjs the closest to the browser's own rendering, and flat in
 // memory over 200 books), again whenever its content changes.
 import { PAPER } from '../engine/layout.js';
-import { freeEdge, turnGrips } from '../input/turn-area.js';
+import { freeEdge } from '../engine/direction.js';
+import { turnGrips } from '../input/turn-area.js';
 
 const REFRESH_DELAY_MS = 150;  // a page's texture is made again once its content has rested this long
 const SNAPSHOT_TIMEOUT_MS = 10000;  // a page the rasteriser cannot draw by then fails (pageerror), the book goes on

@@ -4,6 +4,7 @@
 import { loadPage, pageFailure } from './page-loader.js';
 import { PageCache } from './page-residency.js';
 import { uploadSizeFor } from './texture-upload.js';
+import { directionFacts } from '../engine/direction.js';
 import { isZoomed, splicePageMap } from '../engine/layout.js';
 
 const TEXTURE_OVERSAMPLE = 1.5;  // images up to this many pixels per device pixel of the page on screen
@@ -65,7 +66,7 @@ export class PageStore {
     const surface = this._hooks.surface();
     const full = surface.restingRect();
     const spread = surface.display === 'single' ? 1 : 2;
-    const vertical = this._settings.direction === 'vertical';
+    const { vertical } = directionFacts(this._settings.direction);
     return {
       width: (vertical ? full.width : full.width / spread) / surface.zoom,
       height: (vertical ? full.height / spread : full.height) / surface.zoom,
