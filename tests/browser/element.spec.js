@@ -418,6 +418,7 @@ test('browser: every event a <cone-flipbook> dispatches has the detail fields bo
     await resized;
     await element.insertPages(12, [window.pageUrl(0)]);
     element.setAttribute('shadows', 'maybe');  // refused live: an error event
+    await book.whenIdle();  // page 5's load has failed by now (it lies within the load window since next())
     const fieldsOf = (detail) => Object.keys(detail).filter((key) => detail[key] !== undefined).sort();
     const wrong = seen.filter(([type, detail]) => {
       const listed = EVENT_DETAILS[type];
