@@ -146,3 +146,18 @@ test('node: the layer check sees an upward import, static or dynamic, and passes
     ['../book/options.js', './x.js', './y.js']);
   assert.deepEqual(importsOf("/** @param {import('../book/flipbook.js').Flipbook} b */\n// import('../up.js')\nconst url = 'http://x/y';"), []);
 });
+
+test('node: only engine/direction.js names the reading directions: every other module asks it what depends on one', () => {
+  const sourceRoot = join(root, 'web/src');
+  const naming = [];
+  for (const file of filesUnder(sourceRoot, ['.js'])) {
+    if (relative(sourceRoot, file) === 'engine/direction.js') continue;
+    const code = readFileSync(file, 'utf8').replace(/\/\*[\s\S]*?\*\//g, '').replace(/(^|[^:'"`])\/\/.*$/gm, '$1');
+    code.split('\n').forEach((line, i) => {
+      if (/['"`](ltr|rtl|vertical)['"`]/.test(line) && !/\?\?\s*'ltr'|direction = 'ltr'|direction: 'ltr'/.test(line)) {
+        naming.push(`${relative(sourceRoot, file)}:${i + 1}: ${line.trim()}`);
+      }
+    });
+  }
+  assert.deepEqual(naming, []);
+});

@@ -1,17 +1,18 @@
 // The options of a book (Flipbook and its static fallback) checked in one place: every bad value is
 // a TypeError that names the option and says what is allowed, before anything is built.
 import { BOOK_EVENTS } from './book-events.js';
-import { MAX_LEAF_THICKNESS } from '../engine/layout.js';
+import { DIRECTIONS } from '../engine/direction.js';
+import { MAX_LEAF_THICKNESS, MAX_PAGES } from '../engine/layout.js';
 import { TURN_AREAS } from '../input/turn-area.js';
 
 const BOOLEAN = (v) => typeof v === 'boolean' || 'true or false';
-export const MAX_PAGES = 1_000_000;  // the engine's Book refuses more (book_bindings.cpp)
+export { MAX_PAGES };  // the engine's Book refuses more (cpp/core/book_constants.hpp)
 
 const OPTION_CHECKS = {
   pages: (v) => (Array.isArray(v) && v.length > 0 && v.length <= MAX_PAGES)
     || `a non-empty array of at most ${MAX_PAGES} page sources`,
   display: (v) => ['single', 'double', 'auto'].includes(v) || "'single', 'double' or 'auto'",
-  direction: (v) => ['ltr', 'rtl', 'vertical'].includes(v) || "'ltr', 'rtl' or 'vertical'",
+  direction: (v) => DIRECTIONS.includes(v) || DIRECTIONS.map((d) => `'${d}'`).join(', ').replace(/, ([^,]+)$/, ' or $1'),
   startPage: (v) => (Number.isInteger(v) && v >= 0) || 'a page index (a whole number from 0)',
   duration: (v) => (Number.isFinite(v) && v > 0) || 'a positive number of milliseconds',
   schedule: (v) => ['paper', 'smooth'].includes(v) || "'paper' or 'smooth'",

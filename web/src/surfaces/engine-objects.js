@@ -1,7 +1,7 @@
 // The wasm objects behind one BookView, made from its options: the engine's Book, a BookRenderer on the
 // canvas (reached through an Emscripten target name) and the FrameLoop, the clock that drives both.
+import { directionFacts } from '../engine/direction.js';
 
-const BINDING_OF_DIRECTION = { ltr: 'left', rtl: 'right', vertical: 'top' };
 let nextTargetId = 1;
 
 /**
@@ -11,14 +11,11 @@ let nextTargetId = 1;
  *   name in engine.specialHTMLTargets, to delete with the renderer
  */
 export function createEngineObjects(engine, canvas, options) {
-  const direction = options.direction ?? 'ltr';
-  if (!(direction in BINDING_OF_DIRECTION)) {
-    throw new TypeError(`conecurl: direction must be 'ltr', 'rtl' or 'vertical', got ${String(direction)}`);
-  }
+  const { binding } = directionFacts(options.direction ?? 'ltr');  // a TypeError names a bad direction
   const book = engine.Book.create({
     pageCount: options.pageCount,
     display: options.display ?? 'double',
-    binding: BINDING_OF_DIRECTION[direction],
+    binding,
     pageWidth: options.pageWidth,
     pageHeight: options.pageHeight,
     turnSeconds: options.turnSeconds,
