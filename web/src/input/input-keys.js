@@ -27,7 +27,7 @@ function keepsKeys(target) {
 }
 
 /**
- * Listens for the book's keys on `element`. `book` is the controller's input port (book-controller.js).
+ * Listens for the book's keys on `element`. `book` is the controller's input port (book/book-wiring.js, attachBookInput).
  * Returns a function that stops listening.
  */
 export function listenForKeys(element, book) {

@@ -18,7 +18,7 @@ export function halfAt(rect, x, y, direction) {
 }
 
 /**
- * Listens on `canvas`; `book` is the controller's input port (book-controller.js). Returns
+ * Listens on `canvas`; `book` is the controller's input port (book/book-wiring.js, attachBookInput). Returns
  * { stop(), doubleClicked(), pending }: `doubleClicked` tells it the last two clicks were a
  * double-click (no turn); `pending` is true while a click waits to see whether a second follows.
  */

@@ -1,8 +1,8 @@
 // One book on a canvas: JS ergonomics over the wasm Book (state, animation), BookRenderer (GL) and
 // FrameLoop (the clock), one call into the engine per frame. It is the book controller's WebGL surface
-// and the public lower layer (docs/engine.md): member by member a few lines
-// over the engine's objects (engine-objects.js) and the view's parts: the frames (frame-scheduler.js),
-// the page textures (page-textures.js), the lost context (context-keeper.js), the canvas's sizes (canvas-size.js).
+// and the public lower layer (docs/engine.md): member by member a few lines over the engine's objects
+// (engine-objects.js) and the view's parts: the frames (frame-scheduler.js), the page textures
+// (page-textures.js), the lost context (context-keeper.js), the canvas's sizes (canvas-size.js).
 import { loadEngine } from '../engine/load-engine.js';
 import { TURN_REFUSED } from '../engine/layout.js';
 import { uploadSizeFor } from '../pages/texture-upload.js';
@@ -13,7 +13,6 @@ import { ContextKeeper } from './context-keeper.js';
 import { CanvasSize } from './canvas-size.js';
 
 export { uploadSizeFor };
-
 
 export class BookView {
   /**

@@ -1,5 +1,5 @@
 // The 2D-canvas surface: the open pages as still images, for browsers without WebGL2 or the engine.
-// It answers the same surface calls as BookView (see book-controller.js) with layout.js's layout, the
+// It answers the same surface calls as BookView (see docs/architecture.md, the surface table) with layout.js's layout, the
 // engine's own rules in plain JS, so it needs no wasm; a turn cuts straight to the next spread.
 import * as layout from '../engine/layout.js';
 import { MAX_IMAGE_SIZE, naturalSize, uploadSizeFor } from '../pages/texture-upload.js';

@@ -106,7 +106,7 @@ export class ContextLease {
     this._loseContext = null;  // WEBGL_lose_context of the canvas's context
     this._onLost = () => {
       this._lostEventSeen = true;
-      // After BookView's own handler (which stops its frames) has run, whatever the listener order.
+      // After BookView's own handler (context-keeper.js, which stops its frames) has run, whatever the listener order.
       setTimeout(() => this._afterLost());
     };
     this._onRestored = () => {
