@@ -161,3 +161,10 @@ test('node: only engine/direction.js names the reading directions: every other m
   }
   assert.deepEqual(naming, []);
 });
+
+test('node: docs/architecture.md names every module of web/src', () => {
+  const architecture = readFileSync(join(root, 'docs/architecture.md'), 'utf8');
+  const files = filesUnder(join(root, 'web/src'), ['.js']).map((file) => relative(join(root, 'web/src'), file));
+  assert.ok(files.length > 40, `found ${files.length} modules`);
+  assert.deepEqual(files.filter((file) => !architecture.includes(`\`${file.split('/').pop()}\``)), []);
+});
