@@ -1,6 +1,7 @@
 // Node: the documentation keeps up with the code. Every option, every event and every public member of
 // the Flipbook class (read at runtime from the modules, not parsed from their source) is named in
-// docs/api.md as inline code, and every relative link in README.md and docs/*.md points at a file that
+// docs/api.md as inline code, every attribute of <cone-flipbook> with its option in
+// docs/element-and-frameworks.md, and every relative link in README.md and docs/*.md points at a file that
 // exists and, with a #anchor, at a heading there (GitHub's slugs).
 import test from 'node:test';
 import assert from 'node:assert/strict';
@@ -12,6 +13,7 @@ import { BOOK_EVENTS } from '../../web/src/book/book-events.js';
 import { BookController } from '../../web/src/book/book-controller.js';
 import { Flipbook } from '../../web/src/book/flipbook.js';
 import { StaticBook } from '../../web/src/book/static-book.js';
+import { ATTRIBUTES } from '../../web/src/components/element-attributes.js';
 
 const root = fileURLToPath(new URL('../../', import.meta.url));
 const read = (file) => fs.readFileSync(path.join(root, file), 'utf8');
@@ -66,6 +68,17 @@ test('node: docs/api.md names every public method and property of Flipbook and S
   }
   const missing = members.filter((name) => !spans.some((span) => namesMember(span, name)));
   assert.deepEqual(missing, [], `members not in docs/api.md as inline code: ${missing.join(', ')}`);
+});
+
+test('node: docs/element-and-frameworks.md names every attribute of <cone-flipbook> with its option, in the attributes table', () => {
+  const doc = read('docs/element-and-frameworks.md');
+  const rows = doc.split('\n').filter((line) => line.startsWith('| `'));
+  const missing = Object.entries(ATTRIBUTES).filter(([attribute, [option]]) => !rows.some((row) => {
+    const [names, options] = row.split('|').slice(1, 3).map((cell) => inlineCode(cell));
+    return names.includes(attribute) && (options.includes(option) || (options.length === 0 && option === attribute));
+  })).map(([attribute]) => attribute);
+  assert.ok(Object.keys(ATTRIBUTES).length > 20, 'the attributes read from the module look empty');
+  assert.deepEqual(missing, [], `attributes not in the table with their option: ${missing.join(', ')}`);
 });
 
 /** GitHub's anchor of a heading: lowercase, punctuation but '-' and '_' dropped, spaces to '-'. */
