@@ -3,6 +3,7 @@
 // posed frame by frame with the book's own frozen-frame call (book.previewTurn(direction, t)), written
 // as docs/media/curl.png (one frame mid-curl) and docs/media/turn.png (an animated PNG of the turn).
 // Usage: npm run readme-media (builds first), or node scripts/readme-media.mjs [--out DIR] [--frames N]
+// [--curl-t T] [--page N] [--scale S]; README_MEDIA_FRAME=file.png also writes the middle frame as a still.
 // Look at both images before committing them.
 import fs from 'node:fs';
 import path from 'node:path';
