@@ -30,8 +30,8 @@ double positiveNumber(const val& options, const char* name, double fallback) {
 
 int pageCountOf(const val& count) {
     if (!count.isNumber() || count.as<double>() < 0 || count.as<double>() != std::floor(count.as<double>()) ||
-        count.as<double>() > 1e6) {
-        js::throwError("TypeError", "pageCount must be a whole number from 0 to 1000000");
+        count.as<double>() > kMaxPages) {
+        js::throwError("TypeError", "pageCount must be a whole number from 0 to " + std::to_string(kMaxPages));
     }
     return count.as<int>();
 }

@@ -51,19 +51,19 @@ inline double finiteNumber(const emscripten::val& value, const char* name, doubl
 }
 
 inline Binding bindingFromString(const std::string& name) {
-    if (name == "left") return Binding::Left;
-    if (name == "right") return Binding::Right;
-    if (name == "top") return Binding::Top;
+    if (name == kBindingLeft) return Binding::Left;
+    if (name == kBindingRight) return Binding::Right;
+    if (name == kBindingTop) return Binding::Top;
     throwError("TypeError", "binding must be 'left', 'right' or 'top', got '" + name + "'");
 }
 
 inline const char* toString(Binding binding) {
     switch (binding) {
-        case Binding::Left: return "left";
-        case Binding::Right: return "right";
-        case Binding::Top: return "top";
+        case Binding::Left: return kBindingLeft.data();
+        case Binding::Right: return kBindingRight.data();
+        case Binding::Top: return kBindingTop.data();
     }
-    return "left";
+    return kBindingLeft.data();
 }
 
 }  // namespace conecurl::js

@@ -54,7 +54,7 @@ void setOptions(BookRenderer& r, val options) {
 // pixels big, uploaded by the browser straight into the page's texture (no copy through the heap).
 // A source the page may not read throws a SecurityError DOMException, as WebGL itself would.
 void setPageImage(BookRenderer& r, val pageValue, val source, val widthValue, val heightValue) {
-    const int page = js::wholeNumber(pageValue, "page", 0, 1e6);
+    const int page = js::wholeNumber(pageValue, "page", 0, kMaxPages);
     const int width = js::wholeNumber(widthValue, "image width", 1, 65536);
     const int height = js::wholeNumber(heightValue, "image height", 1, 65536);
     if (source.isNull() || source.typeOf().as<std::string>() != "object") {
@@ -96,14 +96,14 @@ EMSCRIPTEN_BINDINGS(conecurl_renderer) {
         .function("setOptions", &setOptions)
         .function("setPageImage", &setPageImage)
         .function("releasePageImage", optional_override([](BookRenderer& r, val page) {
-                      r.releasePageImage(js::wholeNumber(page, "page", 0, 1e6));
+                      r.releasePageImage(js::wholeNumber(page, "page", 0, kMaxPages));
                   }))
         .function("splicePageImages", optional_override([](BookRenderer& r, val at, val removed, val inserted) {
-                      r.splicePageImages(js::wholeNumber(at, "at", 0, 1e6), js::wholeNumber(removed, "removed", 0, 1e6),
-                                         js::wholeNumber(inserted, "inserted", 0, 1e6));
+                      r.splicePageImages(js::wholeNumber(at, "at", 0, kMaxPages), js::wholeNumber(removed, "removed", 0, kMaxPages),
+                                         js::wholeNumber(inserted, "inserted", 0, kMaxPages));
                   }))
         .function("hasPageImage", optional_override([](BookRenderer& r, val page) {
-                      return r.hasPageImage(js::wholeNumber(page, "page", 0, 1e6));
+                      return r.hasPageImage(js::wholeNumber(page, "page", 0, kMaxPages));
                   }))
         .function("residentPageImages", &BookRenderer::residentPageImages)
         .function("draw", select_overload<void(const Book&)>(&BookRenderer::draw))

@@ -18,7 +18,7 @@ enum TickFlags : int {
 };
 
 // A turn asked for: started now, waiting behind a leaf in flight, or refused (end of book, queue full).
-enum class TurnRequest { Started = 0, Queued = 1, Refused = 2 };
+enum class TurnRequest { Started = kTurnStarted, Queued = kTurnQueued, Refused = kTurnRefused };
 
 // The pages a frame shows, in draw order, without duplicates or blank sides (kNoPage).
 struct PagesOnScreen {
@@ -28,7 +28,7 @@ struct PagesOnScreen {
 };
 PagesOnScreen pagesOnScreen(const BookFrame& frame);
 
-// How the leaves moved in the last tick, for a page sound that follows the hand (web/src/page-sound.js).
+// How the leaves moved in the last tick, for a page sound that follows the hand (web/src/book/page-sound.js).
 struct LeafMotion {
     double speed = 0.0;       // |d rho / dt| of the fastest leaf in flight, rad/s, since the previous tick
     bool hard = false;        // that leaf turns rigidly (a cover)

@@ -2,7 +2,19 @@
 // below into dist/engine-constants.js, so keep them one `inline constexpr <type> kName = value;` a line.
 #pragma once
 
+#include <string_view>
+
 namespace conecurl {
+
+inline constexpr int kMaxPages = 1000000;  // the most pages a Book, and the renderer's page numbers, take
+// FrameLoop.requestTurn's answers (TurnRequest in book_clock.hpp).
+inline constexpr int kTurnStarted = 0;
+inline constexpr int kTurnQueued = 1;  // waits behind a leaf in flight
+inline constexpr int kTurnRefused = 2;  // at the end of the book, or too many queued
+// The side a book's spine binds on, as the engine's Book takes it (BookConfig.binding).
+inline constexpr std::string_view kBindingLeft = "left";
+inline constexpr std::string_view kBindingRight = "right";
+inline constexpr std::string_view kBindingTop = "top";
 
 inline constexpr int kMaxTurnsInFlight = 6;
 inline constexpr double kRiffleSpan = 1.75;  // a riffle to a far page lands within this many turn durations

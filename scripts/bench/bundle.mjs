@@ -12,7 +12,7 @@ const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../.
 
 // What a user of each library imports, nothing more.
 const LIBRARY_EXPORTS = {
-  conecurl: `export { Flipbook } from ${JSON.stringify(path.join(root, 'web/src/flipbook.js'))};`,
+  conecurl: `export { Flipbook } from ${JSON.stringify(path.join(root, 'web/src/book/flipbook.js'))};`,
   'page-flip': "export { PageFlip } from 'page-flip';",
   turnjs: "import $ from 'jquery'; import 'turn.js'; export default $;",
 };

@@ -83,17 +83,20 @@ async function chromiumVersion() {
   return `Chromium ${version}`;
 }
 
-// The README's "Benchmark" section holds the latest short table between these markers.
-const README_START = '<!-- bench:latest:start -->';
-const README_END = '<!-- bench:latest:end -->';
+// docs/benchmark.md's "Latest published run" holds the latest short table between these markers.
+const BENCH_DOC = 'docs/benchmark.md';
+const LATEST_START = '<!-- bench:latest:start -->';
+const LATEST_END = '<!-- bench:latest:end -->';
 
-function publishToReadme(tables) {
-  const readme = path.join(root, 'README.md');
-  const text = fs.readFileSync(readme, 'utf8');
-  const start = text.indexOf(README_START);
-  const end = text.indexOf(README_END);
-  if (start < 0 || end < start) throw new Error(`bench: README.md has no ${README_START} ... ${README_END} block to update`);
-  fs.writeFileSync(readme, `${text.slice(0, start + README_START.length)}\n${tables}\n${text.slice(end)}`);
+function publishToBenchDoc(tables) {
+  const file = path.join(root, BENCH_DOC);
+  const text = fs.readFileSync(file, 'utf8');
+  const start = text.indexOf(LATEST_START);
+  const end = text.indexOf(LATEST_END);
+  if (start < 0 || end < start) throw new Error(`bench: ${BENCH_DOC} has no ${LATEST_START} ... ${LATEST_END} block to update`);
+  // The tables link from the repository's root (docs/bench/latest.md); the page is in docs/ itself.
+  const linked = tables.replaceAll('](docs/', '](');
+  fs.writeFileSync(file, `${text.slice(0, start + LATEST_START.length)}\n${linked}\n${text.slice(end)}`);
 }
 
 async function main() {
@@ -176,10 +179,10 @@ async function main() {
     const docs = path.join(root, 'docs/bench');
     fs.mkdirSync(docs, { recursive: true });
     for (const file of ['latest.json', 'latest.md', 'frame-intervals.svg']) fs.copyFileSync(path.join(out, file), path.join(docs, file));
-    publishToReadme(readmeTables({ meta, loadBytes, summary, targets, configs }));
+    publishToBenchDoc(readmeTables({ meta, loadBytes, summary, targets, configs }));
   }
   console.log(`\n${md}`);
-  console.log(`bench: wrote ${path.relative(root, out)}/latest.{json,md} and frame-intervals.svg${options.publish ? ', copied to docs/bench/ and README.md' : ''}`
+  console.log(`bench: wrote ${path.relative(root, out)}/latest.{json,md} and frame-intervals.svg${options.publish ? `, copied to docs/bench/ and ${BENCH_DOC}` : ''}`
     + ` in ${Math.round(meta.wallSeconds)} s`);
   if (runs.some((r) => r.error)) {
     console.error('bench: some measurements failed (see above)');

@@ -8,7 +8,7 @@ import { gzipSize, upFrontFiles, viteBuild } from './bundle.mjs';
 
 const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
 const ENTRIES = {
-  flipbook: `export { Flipbook } from ${JSON.stringify(path.join(root, 'web/src/flipbook.js'))};`,
+  flipbook: `export { Flipbook } from ${JSON.stringify(path.join(root, 'web/src/book/flipbook.js'))};`,
   element: `import ${JSON.stringify(path.join(root, 'web/src/element.js'))};`,
   react: `export { Flipbook, useFlipbook } from ${JSON.stringify(path.join(root, 'web/src/react.js'))};`,
   vue: `export { Flipbook } from ${JSON.stringify(path.join(root, 'web/src/vue.js'))};`,

@@ -9,7 +9,7 @@ const FIXTURE = '/tests/browser/fixtures/flipbook-fixture.html';
 
 async function openBoth(page, options) {
   await page.evaluate(async (options) => {
-    const { StaticBook } = await import('/web/src/static-book.js');
+    const { StaticBook } = await import('/web/src/book/static-book.js');
     const box = (id) => {
       const el = document.createElement('div');
       el.id = id;

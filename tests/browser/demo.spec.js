@@ -1,5 +1,6 @@
 // Browser: the demo page served by `npm start` loads without errors, shows the book (a Flipbook), turns
-// pages with its buttons, the keyboard and a corner drag, and opens frozen at an exact frame with ?t=.
+// pages with its buttons, the keyboard and a corner drag, and opens frozen at an exact frame with ?t=;
+// on a phone it fits the screen's width with a one-page book.
 import { test, expect } from '@playwright/test';
 import AxeBuilder from '@axe-core/playwright';
 import { openReady } from './helpers.js';
@@ -131,3 +132,38 @@ test('browser: the demo passes axe-core with no serious or critical violation (c
     .map((v) => `${v.impact} ${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
   expect(serious).toEqual([]);
 });
+
+// Phones (issue 22): nothing overflows sideways, the book takes the width and shows one page (display
+// 'auto' in a book taller than wide), and every control lies on the screen, tall enough for a finger.
+for (const width of [360, 390, 430]) {
+  test.describe(`a ${width}x844 phone`, () => {
+    test.use({ viewport: { width, height: 844 }, deviceScaleFactor: 1, hasTouch: true, isMobile: true });
+
+    test(`browser: demo fits a ${width} px wide phone: no sideways scroll, a single page across the width, controls on screen`, async ({ page }) => {
+      const problems = await openReady(page, '/web/demo/');
+      expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBe(width);
+      const book = await page.locator('#book canvas').boundingBox();
+      expect(book.width).toBeGreaterThanOrEqual(0.9 * width);
+      expect(await page.evaluate(() => window.conecurlDemo.book.display)).toBe('single');
+      await expect(page.locator('#where')).toHaveText('Page 1 of 40');
+
+      const controls = page.locator('.nav button, .nav input, .controls select, .controls input, .controls output, #plot');
+      expect(await controls.count()).toBeGreaterThan(12);
+      for (const control of await controls.all()) {
+        const box = await control.boundingBox();
+        const name = await control.evaluate((e) => e.id || e.textContent.trim() || e.tagName);
+        expect(box.x, `${name} starts on screen`).toBeGreaterThanOrEqual(0);
+        expect(box.x + box.width, `${name} ends on screen`).toBeLessThanOrEqual(width);
+      }
+      for (const control of await page.locator('.nav button, .nav input, .controls select').all()) {
+        expect((await control.boundingBox()).height, 'a finger-sized target').toBeGreaterThanOrEqual(40);
+      }
+
+      // One page a tap.
+      await page.selectOption('#speed', '0.5');
+      await page.locator('#next').tap();
+      await expect(page.locator('#where')).toHaveText('Page 2 of 40', { timeout: 30_000 });
+      expect(problems).toEqual([]);
+    });
+  });
+}

@@ -2,7 +2,7 @@
 // from the element, live and rebuilding attribute changes, errors that name the attribute, and the
 // book's lifetime following the element's place in the document.
 import { test, expect } from '@playwright/test';
-import { openReady } from './helpers.js';
+import { openReady, withoutWebGL2 } from './helpers.js';
 
 const FIXTURE = '/tests/browser/fixtures/element-fixture.html';
 
@@ -307,4 +307,129 @@ test('browser: every option is a property too, as Svelte and Angular set them: p
   expect(result.errors).toHaveLength(1);
   expect(result.errors[0]).toMatch(/property 'pages' must be an array of pages or a string of URLs, got number/);
   expect(problems.filter((p) => !/property 'pages'/.test(p))).toEqual([]);
+});
+
+test('browser: turn-area, label and fallback are attributes too; every option property reads back what it was given (an autoplay object kept, not "[object Object]") and the book gets it', async ({ page }) => {
+  const problems = await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    const { PROPERTY_OPTIONS } = await import('/web/src/components/element-attributes.js');
+    const pages = [0, 1, 2, 3].map((i) => window.pageUrl(i));
+    const autoplay = { interval: 60000, loop: true };
+    // A value for every option property (display reads the display shown: the live-attribute test has it).
+    const values = {
+      pages, direction: 'rtl', startPage: 2, duration: 300, schedule: 'smooth', center: false, hardCovers: true,
+      lighting: false, shadows: false, gutter: false, thickness: 0.01, loadWindow: 2, hash: false, autoplay, sound: false,
+      muted: true, rememberPage: 'element-spec', wasmUrl: '/dist/x.wasm', antialias: 'auto', turnArea: 'corners',
+      label: 'Atlas of clouds', fallback: false, pdf: new Uint8Array([37, 80, 68, 70]), pdfWorkerSrc: '/no/worker.mjs',
+    };
+    const unsampled = PROPERTY_OPTIONS.filter((option) => option !== 'display' && !(option in values));
+    const loose = document.createElement('cone-flipbook');  // not in the document: nothing is built
+    for (const [option, value] of Object.entries(values)) loose[option] = value;
+    const changed = Object.entries(values).filter(([option, value]) => !Object.is(loose[option], value)).map(([option]) => option);
+    const written = ['autoplay', 'turn-area', 'label', 'fallback', 'pages', 'pdf'].map((name) => loose.getAttribute(name));
+
+    // The three new attributes reach the book.
+    const byAttribute = window.makeElement({ pages: pages.join(' '), 'turn-area': 'edges', label: 'Atlas of rain', fallback: 'false' });
+    document.getElementById('stage').append(byAttribute);
+    const first = await byAttribute.whenReady();
+    const fromAttributes = {
+      turnArea: first.options.turnArea, label: first.options.label, fallback: first.options.fallback,
+      name: first.element.getAttribute('aria-label'), read: [byAttribute.turnArea, byAttribute.label, byAttribute.fallback],
+    };
+    byAttribute.remove();
+
+    // Properties, as a framework sets them: the autoplay object is the book's option as given.
+    const element = document.createElement('cone-flipbook');
+    Object.assign(element, { pages, autoplay, label: 'Atlas of clouds', turnArea: 'corners', fallback: false });
+    document.getElementById('stage').append(element);
+    const book = await element.whenReady();
+    const fromProperties = {
+      autoplay: book.options.autoplay, sameObject: element.autoplay === autoplay, attribute: element.getAttribute('autoplay'),
+      turnArea: book.options.turnArea, label: book.options.label, name: book.element.getAttribute('aria-label'), fallback: book.options.fallback,
+    };
+    // A value an attribute holds replaces the one kept, and builds a new book with it; null removes it.
+    const rebuilt = new Promise((resolve) => element.addEventListener('ready', resolve, { once: true }));
+    element.autoplay = true;
+    await rebuilt;
+    const replaced = { attribute: element.getAttribute('autoplay'), read: element.autoplay, book: element.book.options.autoplay, newBook: element.book !== book };
+    element.autoplay = null;
+    const removed = { attribute: element.getAttribute('autoplay'), read: element.autoplay };
+    // A value no attribute holds is named, not written as "[object Object]".
+    const errors = [];
+    element.addEventListener('error', (event) => errors.push(event.detail.error.message));
+    element.duration = { ms: 300 };
+    return { unsampled, changed, written, fromAttributes, fromProperties, replaced, removed, errors, durationAttribute: element.getAttribute('duration') };
+  });
+  expect(result.unsampled).toEqual([]);
+  expect(result.changed).toEqual([]);
+  expect(result.written).toEqual([null, 'corners', 'Atlas of clouds', 'false', null, null]);
+  expect(result.fromAttributes).toEqual({ turnArea: 'edges', label: 'Atlas of rain', fallback: false, name: 'Atlas of rain', read: ['edges', 'Atlas of rain', false] });
+  expect(result.fromProperties).toEqual({
+    autoplay: { interval: 60000, loop: true }, sameObject: true, attribute: null,
+    turnArea: 'corners', label: 'Atlas of clouds', name: 'Atlas of clouds', fallback: false,
+  });
+  expect(result.replaced).toEqual({ attribute: 'true', read: true, book: true, newBook: true });
+  expect(result.removed).toEqual({ attribute: null, read: undefined });
+  expect(result.errors).toHaveLength(1);
+  expect(result.errors[0]).toMatch(/property 'duration' must be a string, number or boolean .*got an object/);
+  expect(result.durationAttribute).toBeNull();
+  expect(problems.filter((p) => !/property 'duration'/.test(p))).toEqual([]);
+});
+
+test('browser: fallback="false" without WebGL2: the element reports the failure and shows no still pages (by default it does)', async ({ page }) => {
+  await withoutWebGL2(page);
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    const pages = [0, 1, 2].map((i) => window.pageUrl(i)).join(' ');
+    const out = {};
+    for (const fallback of ['true', 'false']) {
+      const element = window.makeElement({ pages, fallback });
+      document.getElementById('stage').append(element);
+      const outcome = await element.whenReady().then((book) => book.surface.kind, (error) => error.code);
+      out[fallback] = { outcome, book: element.book ? element.book.constructor.name : null };
+      element.remove();
+    }
+    return out;
+  });
+  expect(result).toEqual({ true: { outcome: 'canvas', book: 'StaticBook' }, false: { outcome: 'webgl2-unavailable', book: null } });
+});
+
+test('browser: every event a <cone-flipbook> dispatches has the detail fields book-events.js lists (as flipbook.d.ts types them); a far flip() riffles, one turnstart with riffle: true', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    const { EVENT_DETAILS } = await import('/web/src/book/book-events.js');
+    const pages = Array.from({ length: 12 }, (_, i) => window.pageUrl(i));
+    pages[5] = '/no/such/page.png';  // a pageerror
+    const element = window.makeElement({ pages: pages.join(' '), display: 'double', duration: '200' });
+    const seen = [];
+    for (const type of Object.keys(EVENT_DETAILS)) element.addEventListener(type, (event) => seen.push([type, event.detail]));
+    document.getElementById('stage').append(element);
+    const book = await element.whenReady();
+    await element.next();
+    const before = seen.length;
+    await element.flip(10);  // from the spread of pages 1-2 to that of 9-10: four leaves
+    const landedAt = element.page;
+    const far = seen.slice(before).filter(([type]) => type === 'turnstart' || type === 'turned')
+      .map(([type, detail]) => (type === 'turnstart' ? [type, detail.direction, detail.riffle] : [type, detail.page]));
+    book.zoom = 2;
+    book.zoom = 1;
+    const resized = new Promise((resolve) => element.addEventListener('resize', resolve, { once: true }));
+    element.style.width = '600px';
+    await resized;
+    await element.insertPages(12, [window.pageUrl(0)]);
+    element.setAttribute('shadows', 'maybe');  // refused live: an error event
+    await book.whenIdle();  // page 5's load has failed by now (it lies within the load window since next())
+    const fieldsOf = (detail) => Object.keys(detail).filter((key) => detail[key] !== undefined).sort();
+    const wrong = seen.filter(([type, detail]) => {
+      const listed = EVENT_DETAILS[type];
+      const fields = fieldsOf(detail);
+      return fields.some((field) => !listed.includes(field) && !listed.includes(`${field}?`))
+        || listed.some((field) => !field.endsWith('?') && !fields.includes(field));
+    }).map(([type, detail]) => `${type}: ${fieldsOf(detail).join(', ')}`);
+    return { types: [...new Set(seen.map(([type]) => type))].sort(), wrong, far, landedAt };
+  });
+  expect(result.wrong).toEqual([]);
+  expect(result.types).toEqual(expect.arrayContaining(['ready', 'progress', 'pageerror', 'turnstart', 'turned', 'zoom', 'resize', 'pageschange', 'error']));
+  expect(result.landedAt).toBe(9);  // the spread's first page
+  expect(result.far).toEqual([['turnstart', 'forward', true], ['turned', 9]]);
 });

@@ -97,7 +97,7 @@ test.describe('without WebGL2', () => {
     await page.waitForFunction(() => document.body.dataset.ready);
     const result = await page.evaluate(async () => {
       const pages = Array.from({ length: 8 }, (_, i) => (i === 2 ? '/no/such/page-2.png' : window.makeNumberedPage(i)));
-      const { StaticBook } = await import('/web/src/static-book.js');
+      const { StaticBook } = await import('/web/src/book/static-book.js');
       const book = await StaticBook.create(document.getElementById('container'), { pages, display: 'double', startPage: 1 });
       const heard = [];
       book.addEventListener('pageerror', (event) => heard.push([event.detail.index, event.detail.reason]));

@@ -11,7 +11,7 @@ const TIMES = [0, 0.05, 0.1, 0.15, 0.25, 0.3, 0.4, 0.5, 0.6, 0.75, 0.9, 1];
 async function measure(page, { direction, turn, times, pageCount = 6, start = 1, hardPages, resting = false }) {
   return page.evaluate(async ({ direction, turn, times, pageCount, start, hardPages, resting }) => {
     const { engine } = window.fixture;
-    const { BookView } = await import('/web/src/book-view.js');
+    const { BookView } = await import('/web/src/surfaces/book-view.js');
     const canvas = document.createElement('canvas');
     canvas.style.cssText = 'width:320px;height:200px';
     document.body.append(canvas);

@@ -47,7 +47,7 @@ for (const kind of ['Flipbook', 'StaticBook']) {
       if (kind === 'Flipbook') {
         await window.openBook({ pages: 6, ...options });
       } else {
-        const { StaticBook } = await import('/web/src/static-book.js');
+        const { StaticBook } = await import('/web/src/book/static-book.js');
         const pages = Array.from({ length: 6 }, (_, i) => window.makeNumberedPage(i));
         window.book = await StaticBook.create(document.getElementById('container'), { pages, ...options });
       }

@@ -1,4 +1,4 @@
-// Browser: 32 books on one scrolling page share the page's WebGL contexts (web/src/context-budget.js):
+// Browser: 32 books on one scrolling page share the page's WebGL contexts (web/src/surfaces/context-budget.js):
 // each book scrolled into view draws its own pages and turns, at most MAX_LIVE_CONTEXTS contexts are live
 // at any time, and Chrome never has to lose one ("Too many active WebGL contexts").
 import { test, expect } from '@playwright/test';
@@ -6,7 +6,7 @@ import { openReady } from './helpers.js';
 import { decodePng } from './png.js';
 
 const FIXTURE = '/tests/browser/fixtures/many-books-fixture.html';
-const MAX_LIVE = 8;         // MAX_LIVE_CONTEXTS in web/src/context-budget.js
+const MAX_LIVE = 8;         // MAX_LIVE_CONTEXTS in web/src/surfaces/context-budget.js
 const TOO_MANY = 'Too many active WebGL contexts';
 
 // Before any page script: record every WebGL context made, and count the live (not lost) ones on

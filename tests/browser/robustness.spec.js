@@ -68,7 +68,7 @@ const quietWindow = (page) => Promise.all([framesPass(page, 30), page.evaluate((
 async function recordEvents(page) {
   await page.evaluate(async () => {
     window.events = [];
-    const { StaticBook } = await import('/web/src/static-book.js');
+    const { StaticBook } = await import('/web/src/book/static-book.js');
     window.StaticBook = StaticBook;
     for (const Class of [window.Flipbook, StaticBook]) {
       const original = Class.prototype.dispatchEvent;
@@ -258,7 +258,7 @@ test('browser: one page and an odd page count have defined layouts in single and
 test('browser: bad options reach a TypeError naming the option and what it allows, through Flipbook.create, setOptions, flip and StaticBook.create', async ({ page }) => {
   await openReady(page, FIXTURE);
   const messages = await page.evaluate(async () => {
-    const { StaticBook } = await import('/web/src/static-book.js');
+    const { StaticBook } = await import('/web/src/book/static-book.js');
     const container = document.getElementById('container');
     const pages = [window.makeNumberedPage(0), window.makeNumberedPage(1)];
     const attempt = async (call) => {
@@ -399,7 +399,7 @@ test.describe('without WebGL2', () => {
     await page.goto(ELEMENT_FIXTURE);
     await page.waitForFunction(() => document.body.dataset.ready || document.body.dataset.error);
     const element = await page.evaluate(async () => {
-      const { StaticBook } = await import('/web/src/static-book.js');
+      const { StaticBook } = await import('/web/src/book/static-book.js');
       const pages = [0, 1, 2, 3].map((i) => window.pageUrl(i)).join(' ');
       const el = window.makeElement({ pages, display: 'double' });
       const events = [];

@@ -1,9 +1,9 @@
-// Node tests of the page's WebGL context budget (web/src/context-budget.js): which book gives its context
+// Node tests of the page's WebGL context budget (web/src/surfaces/context-budget.js): which book gives its context
 // up, and the lease's hand-back and take-back through WEBGL_lose_context, on a fake canvas and context
 // that behave as Chrome's do (the lost and restored events come in later tasks; a lost context gives out no extension).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { ContextBudget, chooseContextToRelease } from '../../web/src/context-budget.js';
+import { ContextBudget, chooseContextToRelease } from '../../web/src/surfaces/context-budget.js';
 
 globalThis.requestAnimationFrame ??= (callback) => setTimeout(() => callback(performance.now()), 0);
 

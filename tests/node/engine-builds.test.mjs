@@ -33,7 +33,7 @@ test('node: the package build of the engine lacks every test-only binding, the t
 
 test('node: no shipped source (web/src, web/demo) calls a test-only binding of the engine', () => {
   const root = new URL('../../', import.meta.url).pathname;
-  const files = ['web/src', 'web/demo'].flatMap((dir) => fs.readdirSync(path.join(root, dir))
+  const files = ['web/src', 'web/demo'].flatMap((dir) => fs.readdirSync(path.join(root, dir), { recursive: true })
     .filter((name) => /\.(m?js|html)$/.test(name)).map((name) => path.join(dir, name)));
   assert.ok(files.length > 20, `found ${files.length} files`);
   for (const file of files) {

@@ -5,9 +5,9 @@ import test from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
-import { BOOK_EVENTS } from '../../web/src/book-events.js';
-import { DEFAULTS, LIVE_OPTIONS, OPTION_NAMES } from '../../web/src/options.js';
-import { EVENT_HANDLERS, FIXED_PROPS, OPTION_PROPS, fixedOptionsDiffer, pageChanges, samePages } from '../../web/src/framework-props.js';
+import { BOOK_EVENTS } from '../../web/src/book/book-events.js';
+import { DEFAULTS, LIVE_OPTIONS, OPTION_NAMES } from '../../web/src/book/options.js';
+import { EVENT_HANDLERS, FIXED_PROPS, OPTION_PROPS, fixedOptionsDiffer, pageChanges, samePages } from '../../web/src/components/framework-props.js';
 
 const root = fileURLToPath(new URL('../../', import.meta.url));
 

@@ -1,8 +1,8 @@
-// Node tests of web/src/image-header.js: the pixel size read from an image file's first bytes (so a
+// Node tests of web/src/pages/image-header.js: the pixel size read from an image file's first bytes (so a
 // page decodes straight at the size it is drawn), for each format it knows, and null where unsure.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { imageSizeOf, sizeFromBytes } from '../../web/src/image-header.js';
+import { imageSizeOf, sizeFromBytes } from '../../web/src/pages/image-header.js';
 
 const bytes = (...parts) => Uint8Array.from(parts.flatMap((p) => (typeof p === 'string' ? [...p].map((c) => c.charCodeAt(0)) : p)));
 const be16 = (n) => [n >> 8, n & 255];

@@ -1,9 +1,9 @@
-// Node tests of web/src/layout.js, the engine's layout in plain JS for the 2D fallback: its positions,
+// Node tests of web/src/engine/layout.js, the engine's layout in plain JS for the 2D fallback: its positions,
 // page places and zoom equal the wasm engine's, and the generated constants equal the C++ header's.
 import { test, before } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
-import * as layout from '../../web/src/layout.js';
+import * as layout from '../../web/src/engine/layout.js';
 import * as generated from '../../dist/engine-constants.js';
 import { loadEngineForNode } from './load-engine.mjs';
 
@@ -142,7 +142,8 @@ test('node: dist/engine-constants.js holds every constant of cpp/core/book_const
   const header = fs.readFileSync(new URL('../../cpp/core/book_constants.hpp', import.meta.url), 'utf8');
   const expected = {};
   for (const [, camel, value] of header.matchAll(/^inline constexpr [\w:]+ k(\w+) = ([^;]+);/gm)) {
-    expected[camel.replace(/([a-z0-9])([A-Z])/g, '$1_$2').toUpperCase()] = Number(value);
+    // A number, or a string literal (the binding names, std::string_view).
+    expected[camel.replace(/([a-z0-9])([A-Z])/g, '$1_$2').toUpperCase()] = /^".*"$/.test(value) ? JSON.parse(value) : Number(value);
   }
   assert.equal(Object.keys(expected).length, header.match(/^inline constexpr/gm).length, 'a constant the pattern missed');
   assert.ok(Object.keys(expected).length >= 8, 'book_constants.hpp unexpectedly small');
@@ -191,4 +192,19 @@ test('node: displayFor shows two pages in \'auto\' only in containers wider than
   assert.equal(layout.displayFor('auto', { width: 120, height: 100 }), 'single');
   assert.equal(layout.displayFor('auto', { width: 121, height: 100 }), 'double');
   assert.equal(layout.displayFor('auto', { width: 10, height: 0 }), 'double');
+});
+
+test('node: one direction module answers what depends on direction, and the engine takes its spine sides (needs the wasm built)', async () => {
+  const { DIRECTIONS, directionFacts, freeEdge, halfOf } = await import('../../web/src/engine/direction.js');
+  const engine = await loadEngineForNode();
+  for (const direction of DIRECTIONS) {
+    const { binding } = directionFacts(direction);
+    const book = engine.Book.create({ pageCount: 4, binding });
+    assert.equal(book.binding(), binding, `the engine keeps ${direction}'s spine side`);
+    book.delete();
+  }
+  assert.deepEqual(DIRECTIONS.map((d) => [freeEdge(d, true), freeEdge(d, false)]), [['left', 'right'], ['right', 'left'], ['top', 'bottom']]);
+  assert.deepEqual(DIRECTIONS.map((d) => halfOf(d, 100, 100, 10, 90)), ['left', 'left', 'bottom']);
+  assert.throws(() => directionFacts('sideways'), /direction must be 'ltr', 'rtl' or 'vertical', got sideways/);
+  assert.throws(() => directionFacts('constructor'), TypeError);
 });

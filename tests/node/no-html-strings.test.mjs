@@ -12,7 +12,7 @@ const HTML_SINKS = /\b(innerHTML|outerHTML|insertAdjacentHTML|createContextualFr
 
 test('node: web/src writes no HTML from strings except element.js\'s constant template', () => {
   const found = [];
-  for (const file of fs.readdirSync(source).filter((name) => name.endsWith('.js'))) {
+  for (const file of fs.readdirSync(source, { recursive: true }).filter((name) => name.endsWith('.js'))) {
     const text = fs.readFileSync(path.join(source, file), 'utf8');
     for (const match of text.matchAll(HTML_SINKS)) {
       const line = text.slice(0, match.index).split('\n').length;

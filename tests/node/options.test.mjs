@@ -1,9 +1,9 @@
-// Node tests of the book's option checks (web/src/options.js): every option refuses NaN, negatives,
+// Node tests of the book's option checks (web/src/book/options.js): every option refuses NaN, negatives,
 // wrong types and its neighbours' values with a TypeError that names it and says what is allowed;
 // page entries, sparse page arrays and unknown keys too. No DOM is needed to check options.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { checkFlipOptions, checkLiveOptions, DEFAULTS, describeValue, pageEntries, validateOptions } from '../../web/src/options.js';
+import { checkFlipOptions, checkLiveOptions, DEFAULTS, describeValue, pageEntries, validateOptions } from '../../web/src/book/options.js';
 
 const pages = ['a.png', 'b.png', 'c.png'];
 

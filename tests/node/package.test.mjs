@@ -14,7 +14,7 @@ const packed = () => (dryRun ??= packDryRun());  // one `npm pack --dry-run` for
 
 /** Every file a user needs, and nothing else: the engine and its constants, the web/src modules and typings, docs. */
 function allowedFiles() {
-  const sources = fs.readdirSync(path.join(repositoryRoot, 'web/src'))
+  const sources = fs.readdirSync(path.join(repositoryRoot, 'web/src'), { recursive: true })
     .filter((name) => name.endsWith('.js') || name.endsWith('.d.ts'))
     .map((name) => `web/src/${name}`);
   return ['package.json', 'README.md', 'LICENSE', 'dist/conecurl-engine.mjs', 'dist/conecurl-engine.wasm',

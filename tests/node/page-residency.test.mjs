@@ -1,10 +1,10 @@
-// Node tests of the page cache policy (web/src/page-residency.js): which pages
+// Node tests of the page cache policy (web/src/pages/page-residency.js): which pages
 // are wanted in what order, the capacity, and which resident pages go first.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import {
   MAX_TURNS_IN_FLIGHT, PageCache, pagesToRelease, textureCapacity, wantedPages,
-} from '../../web/src/page-residency.js';
+} from '../../web/src/pages/page-residency.js';
 
 
 test('node: textureCapacity holds the load window both ways plus four, and never less than a full screen of leaves', () => {

@@ -3,7 +3,7 @@
 // for a hard leaf. The Web Audio graph itself is tested in the browser (tests/browser/sound.spec.js).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { FULL_SPEED, rustleFor } from '../../web/src/page-sound.js';
+import { FULL_SPEED, rustleFor } from '../../web/src/book/page-sound.js';
 
 test('node: the rustle is silent at rest, grows louder and brighter with angular speed up to a fling, and ignores bad speeds', () => {
   assert.equal(rustleFor(0, false).gain, 0);

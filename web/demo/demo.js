@@ -1,7 +1,7 @@
 // Demo wiring: the forty-page book in a Flipbook (the public class, as a user would use it), its
 // controls, and the schedule the engine computes (theta, Ay, rho over t) plotted beside it with a
 // scrubber that poses the next turn's exact frame.
-import { Flipbook } from '../src/flipbook.js';
+import { Flipbook } from '../src/index.js';
 import { loadEngine } from '../src/engine.js';
 import { DEMO_PAGE_COUNT, drawBookPage, isHardPage } from './book-pages.js';
 import { makeDemoPdf } from './demo-pdf.js';

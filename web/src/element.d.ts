@@ -1,7 +1,7 @@
 // Types of <cone-flipbook> (element.js): the element class, its events, and its tag in
 // HTMLElementTagNameMap so document.querySelector('cone-flipbook') is typed.
-import type { Flipbook, FlipbookCreateError, FlipbookEventMap, PageEntry, PagesChangeDetail, PageSource } from './flipbook.js';
-import type { StaticBook } from './static-book.js';
+import type { Flipbook, FlipbookCreateError, FlipbookEventMap, FlipbookOptions, PageEntry, PagesChangeDetail, PageSource } from './book/flipbook.js';
+import type { StaticBook } from './book/static-book.js';
 
 export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' | keyof FlipbookEventMap>,
   Omit<FlipbookEventMap, 'error'> {
@@ -13,12 +13,16 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
 }
 
 /**
- * The Flipbook as an element. Attributes (all optional except the pages): pages (URLs separated by
- * spaces; else the child elements: an <img> an image page, alt text kept, any other element a live
- * HTML page shown through a named slot), display, direction, start-page, duration, schedule, center,
- * hard-covers, lighting, shadows, gutter ("true"/"false"), thickness ("true"/"false"/a number),
- * antialias ("auto"/"true"/"false"),
- * load-window, wasm-url, pdf, pdf-worker-src.
+ * The Flipbook as an element. Every option is an attribute (all optional except the pages), its name
+ * in kebab case, except `on` (listen on the element: it dispatches every book event): pages (URLs
+ * separated by spaces; else the child elements: an <img> an image page, alt text kept, any other
+ * element a live HTML page shown through a named slot), display, direction, start-page, duration,
+ * schedule, center, hard-covers, lighting, shadows, gutter, hash, sound, muted, fallback
+ * ("true"/"false"), thickness ("true"/"false"/a number), autoplay ("true"/"false"/the milliseconds
+ * between turns), antialias ("auto"/"true"/"false"), turn-area ("page"/"edges"/"corners"/"none"),
+ * label (the book's name for screen readers), load-window, remember-page, wasm-url, pdf, pdf-worker-src.
+ * lighting, shadows, gutter, thickness, display, sound and muted apply to the running book; a change of
+ * any other builds a new book at the page shown.
  */
 export class ConeFlipbookElement extends HTMLElement {
   static readonly observedAttributes: string[];
@@ -35,34 +39,44 @@ export class ConeFlipbookElement extends HTMLElement {
   get display(): 'single' | 'double' | null;
   set display(value: 'single' | 'double' | 'auto' | null | undefined);
   /**
-   * Every option is a property too (frameworks that set properties, such as Svelte and Angular): the
-   * pages as an array (over the pages attribute and the child elements; a string sets the attribute),
-   * a PDF as a URL or its bytes; the others read their attribute, parsed, and writing one sets the
-   * attribute (null removes it) with the attribute's effect (live, or a rebuild at the current page).
+   * Every option with an attribute is a property too (frameworks that set properties, such as Svelte
+   * and Angular). A value no attribute can hold is kept as given, read back as given and wins over the
+   * attribute: the pages as an array (over the child elements too), a PDF's bytes, an autoplay object;
+   * it builds a new book. Any other value (a string, number or boolean) sets the attribute (null
+   * removes it), with the attribute's effect (live, or a new book at the page shown), and reads back
+   * parsed; undefined when neither is set.
    */
-  get pages(): PageSource[] | (PageEntry | PageSource)[] | string[] | undefined;
-  set pages(value: (PageEntry | PageSource | HTMLElement)[] | string | null | undefined);
-  get pdf(): string | ArrayBuffer | Uint8Array | undefined;
-  set pdf(value: string | ArrayBuffer | Uint8Array | null | undefined);
-  direction: 'ltr' | 'rtl' | 'vertical' | undefined;
-  startPage: number | undefined;
-  duration: number | undefined;
-  schedule: 'paper' | 'smooth' | undefined;
-  center: boolean | undefined;
-  hardCovers: boolean | undefined;
-  lighting: boolean | undefined;
-  shadows: boolean | undefined;
-  gutter: boolean | undefined;
-  thickness: boolean | number | undefined;
-  antialias: boolean | 'auto' | undefined;
-  loadWindow: number | undefined;
-  hash: boolean | undefined;
-  autoplay: boolean | { interval: number } | undefined;
-  sound: boolean | undefined;
-  muted: boolean | undefined;
-  rememberPage: string | undefined;
-  wasmUrl: string | undefined;
-  pdfWorkerSrc: string | undefined;
+  get pages(): FlipbookOptions['pages'];
+  set pages(value: FlipbookOptions['pages'] | string | null);
+  get pdf(): FlipbookOptions['pdf'];
+  set pdf(value: FlipbookOptions['pdf'] | null);
+  direction: FlipbookOptions['direction'];
+  startPage: FlipbookOptions['startPage'];
+  duration: FlipbookOptions['duration'];
+  schedule: FlipbookOptions['schedule'];
+  center: FlipbookOptions['center'];
+  hardCovers: FlipbookOptions['hardCovers'];
+  lighting: FlipbookOptions['lighting'];
+  shadows: FlipbookOptions['shadows'];
+  gutter: FlipbookOptions['gutter'];
+  thickness: FlipbookOptions['thickness'];
+  antialias: FlipbookOptions['antialias'];
+  loadWindow: FlipbookOptions['loadWindow'];
+  hash: FlipbookOptions['hash'];
+  /** `{ interval: 3000 }` is kept as given; true, false or a number of milliseconds set the attribute. */
+  get autoplay(): FlipbookOptions['autoplay'];
+  set autoplay(value: FlipbookOptions['autoplay'] | number | null);
+  sound: FlipbookOptions['sound'];
+  muted: FlipbookOptions['muted'];
+  rememberPage: FlipbookOptions['rememberPage'];
+  /** Where a press may turn a page (the turn-area attribute). */
+  turnArea: FlipbookOptions['turnArea'];
+  /** The book's name for screen readers (the label attribute); default 'Book'. */
+  label: FlipbookOptions['label'];
+  /** false: no still pages without WebGL2 or the engine, only the error (the fallback attribute). */
+  fallback: FlipbookOptions['fallback'];
+  wasmUrl: FlipbookOptions['wasmUrl'];
+  pdfWorkerSrc: FlipbookOptions['pdfWorkerSrc'];
   /**
    * Waits for the book being built (the StaticBook fallback without WebGL2 or the engine); rejects
    * with its error, or at once if not in the document or destroyed.

@@ -1,26 +1,30 @@
 // <cone-flipbook>: the Flipbook as an HTML element, for pages without a build step. Attributes mirror
-// the options; its child elements can be the pages (an <img> an image page, any other element a live
-// HTML page), and are what a browser without JavaScript shows.
-import { Flipbook } from './flipbook.js';
-import { BOOK_EVENTS } from './book-events.js';
-import { DEFAULTS } from './options.js';
+// the options (every option but `on`, whose listeners go on the element: element-attributes.js), and
+// so do properties; its child elements can be the pages (an <img> an image page, any other element a
+// live HTML page), and are what a browser without JavaScript shows.
+import { Flipbook } from './book/flipbook.js';
+import { BOOK_EVENTS } from './book/book-events.js';
+import { DEFAULTS } from './book/options.js';
+import { BOX_CSS } from './components/book-box.js';
 import {
-  ATTRIBUTES, ATTRIBUTE_OF_OPTION, LIVE_ATTRIBUTES, PROPERTY_OPTIONS, TAG, defineOptionProperties, readOptionAttribute, setOptionAttribute,
-} from './element-attributes.js';
+  ATTRIBUTES, ATTRIBUTE_OF_OPTION, LIVE_ATTRIBUTES, PROPERTY_OPTIONS, TAG, keepsValue, readOptionAttribute, setOptionAttribute,
+} from './components/element-attributes.js';
 
 // On a server (no DOM) the module still imports: the class has no element to be, and nothing is defined.
 const ElementBase = globalThis.HTMLElement ?? class {};
 const NOT_PAGES = ['script', 'style', 'template', 'link', 'meta', 'noscript'];  // children that are never pages
 
-/** Flipbook's TypeErrors name options ('startPage'); an element's user knows attributes ('start-page'). */
-function inAttributeTerms(error, element) {
+/**
+ * Flipbook's TypeErrors name options ('startPage'); an element's user knows attributes ('start-page'),
+ * or the property that gave a value kept as given (`kept`).
+ */
+function inAttributeTerms(error, element, kept) {
   const option = error instanceof TypeError && /option '(\w+)/.exec(error.message)?.[1];
   const attribute = option && ATTRIBUTE_OF_OPTION[option];
   if (!attribute) return error;
   const raw = element.getAttribute(attribute);
-  const given = raw === null ? '(from the child elements)' : `"${raw}"`;
-  return new TypeError(`conecurl: <${TAG}> attribute '${attribute}' ${given} is not valid: ${
-    error.message.replace(/^conecurl: /, '')}`, { cause: error });
+  const given = option in kept ? `property '${option}'` : `attribute '${attribute}' ${raw === null ? '(from the child elements)' : `"${raw}"`}`;
+  return new TypeError(`conecurl: <${TAG}> ${given} is not valid: ${error.message.replace(/^conecurl: /, '')}`, { cause: error });
 }
 
 function deferred() {
@@ -32,7 +36,6 @@ function deferred() {
 
 const TEMPLATE = `
 <style>
-  :host { display: block; position: relative; aspect-ratio: 16 / 10; }
   :host([hidden]) { display: none; }
   .book { width: 100%; height: 100%; }
   .failed { box-sizing: border-box; height: 100%; overflow: auto; padding: 1em; border: 2px solid #b3261e;
@@ -50,6 +53,9 @@ export class ConeFlipbookElement extends ElementBase {
     // No default <slot> while the book shows: child <img> elements are page sources, and other children
     // (HTML pages) show through named slots the book makes for them.
     this.attachShadow({ mode: 'open' }).innerHTML = TEMPLATE;
+    const box = document.createElement('style');  // the box a book fills, as the components' (book-box.js)
+    box.textContent = `:host { ${BOX_CSS} }`;
+    this.shadowRoot.prepend(box);
     this._container = this.shadowRoot.querySelector('.book');
     this._failure = this.shadowRoot.querySelector('.failed');
     this._book = null;           // the Flipbook once it is ready
@@ -59,9 +65,9 @@ export class ConeFlipbookElement extends ElementBase {
     this._scheduled = false;
     this._reopenAt = null;       // page to open at when the book is built again
     this._destroyed = false;
-    this._held = {};             // pages (an array) and pdf (bytes) given as properties: over attributes and children
+    this._held = {};             // property values no attribute holds (KEPT_VALUES): over attributes and children
     this._children = new MutationObserver((records) => {
-      if (!this.hasAttribute('pages') && !this._held.pages && records.some((record) => this._touchesChildPages(record))) this._schedule();
+      if (!this.hasAttribute('pages') && !('pages' in this._held) && records.some((record) => this._touchesChildPages(record))) this._schedule();
     });
   }
 
@@ -78,29 +84,32 @@ export class ConeFlipbookElement extends ElementBase {
   get pageCount() { return this._book ? this._book.pageCount : 0; }
   /** 'single' or 'double' as shown; null until `ready`. Setting it sets the display attribute (live). */
   get display() { return this._book ? this._book.display : null; }
-  set display(value) { setOptionAttribute(this, 'display', value); }
+  set display(value) { this._writeOption('display', value); }
 
-  /**
-   * The pages: an array as Flipbook takes (URLs, images, canvases, Blobs, elements, { src, alt, ... }),
-   * over the pages attribute and the child elements; a string sets the attribute. null: neither.
-   */
-  get pages() { return this._held.pages ?? readOptionAttribute(this, 'pages'); }
-  set pages(value) { this._setHeldProperty('pages', value, Array.isArray(value)); }
-  /** A PDF: a URL (the pdf attribute) or its bytes (an ArrayBuffer or Uint8Array). */
-  get pdf() { return this._held.pdf ?? readOptionAttribute(this, 'pdf'); }
-  set pdf(value) { this._setHeldProperty('pdf', value, value instanceof ArrayBuffer || value instanceof Uint8Array); }
+  // The other option properties (defined below the class): the value kept as given (the pages as an
+  // array, a PDF's bytes, an autoplay object: KEPT_VALUES), else the attribute's, parsed.
+  _readOption(option) {
+    return option in this._held ? this._held[option] : readOptionAttribute(this, option);
+  }
 
-  _setHeldProperty(option, value, held) {
-    if (held) {
+  // A value an attribute cannot hold is kept and builds a new book; any other sets (null: removes) the
+  // attribute, with the attribute's effect. A value neither takes is reported as a bad attribute is.
+  _writeOption(option, value) {
+    if (keepsValue(option, value)) {
       this._held[option] = value;
       this._schedule();
       return;
     }
     const had = option in this._held;
     delete this._held[option];
-    if (typeof value === 'string' || value === null || value === undefined) setOptionAttribute(this, option, value);
-    else this._fail(new TypeError(`conecurl: <${TAG}> property '${option}' must be ${option === 'pages' ? 'an array of pages or a string of URLs' : 'a URL string, an ArrayBuffer or a Uint8Array'}, got ${typeof value}`));
-    if (had) this._schedule();
+    try {
+      setOptionAttribute(this, option, value);
+    } catch (error) {
+      if (LIVE_ATTRIBUTES.includes(ATTRIBUTE_OF_OPTION[option]) && this._book && !this._waiter) this._report(error);
+      else this._fail(error);
+      return;
+    }
+    if (had) this._schedule();  // the attribute may be as it was: the value kept is gone all the same
   }
 
   /**
@@ -211,7 +220,7 @@ export class ConeFlipbookElement extends ElementBase {
     } catch (error) {
       if (generation !== this._generation) error.fallback?.destroy();
       else if (error.fallback) this._adoptFallback(error.fallback, error);
-      else this._fail(inAttributeTerms(error, this));
+      else this._fail(inAttributeTerms(error, this, this._held));
     }
   }
 
@@ -309,6 +318,13 @@ export class ConeFlipbookElement extends ElementBase {
   }
 }
 
-defineOptionProperties(ConeFlipbookElement.prototype);
+for (const option of PROPERTY_OPTIONS) {
+  if (option === 'display') continue;  // the class's own: it reads the display shown
+  Object.defineProperty(ConeFlipbookElement.prototype, option, {
+    configurable: true,
+    get() { return this._readOption(option); },
+    set(value) { this._writeOption(option, value); },
+  });
+}
 
 if (globalThis.customElements && !customElements.get(TAG)) customElements.define(TAG, ConeFlipbookElement);

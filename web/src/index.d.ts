@@ -1,6 +1,6 @@
 // Types of the package's main entry ('conecurl'), re-exported from the modules they describe.
-export * from './flipbook.js';
-export * from './static-book.js';
-export * from './page-loader.js';
-export * from './book-view.js';
-export * from './engine.js';
+export * from './book/flipbook.js';
+export * from './book/static-book.js';
+export * from './pages/page-loader.js';
+export * from './surfaces/book-view.js';
+export * from './engine/load-engine.js';

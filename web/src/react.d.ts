@@ -1,9 +1,9 @@
 // Types of conecurl/react (react.js): the <Flipbook> component's props, its ref handle, useFlipbook().
 import type { CSSProperties, ForwardRefExoticComponent, ReactNode, Ref, RefAttributes } from 'react';
-import type { FlipbookEventMap } from './flipbook.js';
-import type { FlipbookHandle, FlipbookOptionProps, FlipbookState } from './framework-props.js';
+import type { FlipbookEventMap } from './book/flipbook.js';
+import type { FlipbookHandle, FlipbookOptionProps, FlipbookState } from './components/framework-props.js';
 
-export type { FlipbookHandle, FlipbookOptionProps, FlipbookState } from './framework-props.js';
+export type { FlipbookHandle, FlipbookOptionProps, FlipbookState } from './components/framework-props.js';
 
 /** Every book event as a handler prop, given the event itself: onTurned, onTurnStart, onPageError, ... */
 export interface FlipbookEventProps {

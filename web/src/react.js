@@ -7,11 +7,9 @@ import {
   useRef, useState,
 } from 'react';
 import { createPortal } from 'react-dom';
-import { BookMount } from './book-mount.js';
-import { EVENT_HANDLERS, pageBoxes } from './framework-props.js';
-
-// The box the book fills, as <cone-flipbook> sizes itself; the `style` prop overrides any of it.
-const BOX_STYLE = { display: 'block', position: 'relative', width: '100%', aspectRatio: '16 / 10' };
+import { BookMount } from './components/book-mount.js';
+import { BOX_STYLE } from './components/book-box.js';
+import { EVENT_HANDLERS, pageBoxes } from './components/framework-props.js';
 
 // Pages from children: an <img> is an image page ({ src, alt }); any other element is an HTML page,
 // rendered by React into a box of its own (a portal) that the book lays over the page's place.
@@ -66,6 +64,7 @@ export const Flipbook = forwardRef(function Flipbook(props, ref) {
   useEffect(() => { if (mounted) mount.update(bookProps.current); });
 
   useImperativeHandle(ref, () => mount.handle, [mount]);
+  // The box the book fills, as <cone-flipbook> sizes itself (book-box.js); the `style` prop overrides any of it.
   return createElement('div', { ref: container, id, className, style: { ...BOX_STYLE, ...style } }, ...portals);
 });
 

@@ -1,9 +1,9 @@
 // Types of conecurl/vue (vue.js): the <Flipbook> component's props, events and exposed handle.
 import type { DefineComponent } from 'vue';
-import type { FlipbookEventMap } from './flipbook.js';
-import type { FlipbookHandle, FlipbookOptionProps } from './framework-props.js';
+import type { FlipbookEventMap } from './book/flipbook.js';
+import type { FlipbookHandle, FlipbookOptionProps } from './components/framework-props.js';
 
-export type { FlipbookHandle, FlipbookOptionProps, FlipbookState } from './framework-props.js';
+export type { FlipbookHandle, FlipbookOptionProps, FlipbookState } from './components/framework-props.js';
 
 export interface FlipbookProps extends FlipbookOptionProps {
   /** v-model:page: the page to show, updated as the book turns. */

@@ -3,12 +3,10 @@
 // default slot can hold the pages, and next/prev/flip/page/zoom are exposed. Nothing here needs a DOM
 // until the component is mounted, so it renders on a server as a sized, empty box.
 import { Teleport, defineComponent, getCurrentInstance, h, onBeforeUnmount, onMounted, onUpdated, ref } from 'vue';
-import { BOOK_EVENTS } from './book-events.js';
-import { BookMount } from './book-mount.js';
-import { OPTION_PROPS, pageBoxes } from './framework-props.js';
-
-// The box the book fills, as <cone-flipbook> sizes itself; a `style` attribute overrides any of it.
-const BOX_STYLE = { display: 'block', position: 'relative', width: '100%', aspectRatio: '16 / 10' };
+import { BOOK_EVENTS } from './book/book-events.js';
+import { BookMount } from './components/book-mount.js';
+import { BOX_STYLE } from './components/book-box.js';
+import { OPTION_PROPS, PAGE_PROPS, pageBoxes } from './components/framework-props.js';
 
 // Pages from the default slot: an <img> is an image page ({ src, alt }); any other element is an HTML
 // page, rendered by Vue into a box of its own (a Teleport) that the book lays over the page's place.
@@ -37,7 +35,7 @@ function pagesFromSlot(vnodes, boxes) {
 export const Flipbook = defineComponent({
   name: 'Flipbook',
   // Untyped on purpose: Vue casts an absent Boolean prop to false, and an absent option must mean its default.
-  props: [...OPTION_PROPS, 'page', 'defaultPage'],
+  props: [...OPTION_PROPS, ...PAGE_PROPS],
   emits: [...BOOK_EVENTS, 'update:page'],
   setup(props, { emit, expose, slots }) {
     const listeners = getCurrentInstance().vnode.props ?? {};  // @error given? else errors go to the console
@@ -65,6 +63,7 @@ export const Flipbook = defineComponent({
       const fromSlot = mounted.value && props.pages === undefined && props.pdf === undefined && slots.default;
       const { pages, teleports } = fromSlot ? pagesFromSlot(slots.default(), boxes) : { pages: props.pages, teleports: [] };
       current = { ...props, pages };
+      // The box the book fills, as <cone-flipbook> sizes itself (book-box.js); a `style` attribute overrides any of it.
       return h('div', { ref: container, style: BOX_STYLE }, teleports);
     };
   },

@@ -1,6 +1,6 @@
 // Benchmark adapter for conecurl: mounts a Flipbook through its public API and turns with next().
 // Bundled (minified) by scripts/bench/bundle.mjs; the wasm is served next to the bundle.
-import { Flipbook } from '../../../web/src/flipbook.js';
+import { Flipbook } from '../../../web/src/book/flipbook.js';
 import { loadEngine } from '../../../web/src/engine.js';
 
 export async function mount(container, { urls, display, duration, extra = {} }) {

@@ -53,7 +53,7 @@ export async function useElement(): Promise<string | null> {
   const element = document.querySelector('cone-flipbook');  // typed through HTMLElementTagNameMap
   if (!element) return null;
   const same: ConeFlipbookElement = element;
-  same.addEventListener('turnstart', (event) => console.log(event.detail.direction, event.detail.page));
+  same.addEventListener('turnstart', (event) => console.log(event.detail.direction, event.detail.page, event.detail.riffle === true));
   same.addEventListener('error', (event) => console.error(event.detail.error.message));
   same.addEventListener('progress', (event) => console.log(event.detail.loaded / event.detail.total));
   const created = document.createElement('cone-flipbook');
@@ -68,6 +68,13 @@ export async function useElement(): Promise<string | null> {
   created.display = 'auto';
   created.lighting = false;
   created.startPage = 1;
+  created.autoplay = { interval: 3000 };  // kept as given: it reads back the same object
+  const interval: number | undefined = typeof created.autoplay === 'object' ? created.autoplay.interval : undefined;
+  created.label = 'Atlas of clouds';
+  created.turnArea = interval ? 'edges' : 'page';
+  created.fallback = false;
+  // @ts-expect-error: turnArea is one of four
+  created.turnArea = 'anywhere';
   // @ts-expect-error: direction is one of three
   created.direction = 'diagonal';
   created.destroy();

@@ -1,0 +1,309 @@
+// The book controller: what a book is doing and what it tells its user, whichever surface draws it, and
+// the public API of Flipbook and StaticBook (this class over each surface). It holds the options, the
+// pages and their states (page-store.js), zoom, size, the open pages shown and events; turns are carried
+// out by book-turns.js, and its parts (input, overlay layers, live pages, watchers) are wired to it by
+// book-wiring.js through one port (`_makePort`). The calls a surface answers are in docs/architecture.md.
+import { openingPage } from './page-memory.js';
+import { createShell } from './book-shell.js';
+import { BookEvents } from './book-events.js';
+import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
+import { BookTurns } from './book-turns.js';
+import {
+  attachBookInput, followSurface, makeHtmlPages, makeLinkLayer, makeLivePages, makePageStore, makeZoom,
+  startCompanions, watchBookSize,
+} from './book-wiring.js';
+import { MAX_ZOOM, displayFor, openPages } from '../engine/layout.js';
+
+const REFIT_DELAY_MS = 150;  // images are fitted to a new size or zoom once it has come to rest
+
+export class BookController extends EventTarget {
+  /**
+   * @param {HTMLElement} container
+   * @param {object} settings  checked options with defaults (options.js validateOptions)
+   * @param {object|null} pdf  an open PDF whose pages are the book's (pdf-pages.js): the book owns it
+   */
+  constructor(container, settings, pdf = null) {
+    super();
+    this._container = container;
+    this._settings = settings;
+    this._pdf = pdf;
+    // Entries as given (a PDF's fill in their alt and links as their pages render), links in one form.
+    this._pages = pageEntries(settings.pages, { copy: !pdf });
+    this._events = new BookEvents(this, settings.on);  // `on` listeners first; events of create() held
+    this._destroyed = false;
+    this._surface = null;
+    this._shell = createShell(container, { label: settings.label, direction: settings.direction });
+    this._canvas = this._shell.canvas;
+    this._port = this._makePort();  // what the parts below may ask of the book (book-wiring.js)
+    this._zoom = makeZoom(this._port);
+    this._store = makePageStore(this._port);
+    this._turns = new BookTurns(this._port);
+    this._html = null;  // HTML pages, once _build() has loaded their module
+    this._layers = [makeLinkLayer(this._port)];
+    this._reducedMotion = typeof matchMedia === 'function' ? matchMedia('(prefers-reduced-motion: reduce)') : null;
+  }
+
+  get pageCount() { return this._pages.length; }
+  /** Where page `index` stands: { state: 'idle' | 'loading' | 'loaded' | 'failed', reason?, error? }. */
+  pageState(index) { return this._store.pageState(index); }
+  /** The first visible page at the settled position (after destroy(), where the book was left). */
+  get page() { return this._surface ? this._surface.firstVisiblePage() : (this._finalPage ?? 0); }
+  get display() {
+    return this._surface?.display ?? this._finalDisplay ?? (this._settings.display === 'single' ? 'single' : 'double');
+  }
+  /** The pages open at the settled position, as the live region announces them. */
+  get openPages() {
+    if (!this._surface) return [this.page];
+    return openPages(this._surface.position, this.pageCount, this._surface.display);
+  }
+  /** The focusable element the book made in its container (holds the canvas). */
+  get element() { return this._shell.root; }
+  /** What draws the book: a BookView (WebGL2) or a CanvasSurface (still pages); null after destroy(). */
+  get surface() { return this._surface; }
+  /** A leaf is moving or waiting to (turns in flight, a held page); false after destroy(). */
+  get animating() { return Boolean(this._surface?.animating); }
+  /** Pages whose images are loaded and kept, in page order. */
+  get residentPages() { return this._store.residentPages; }
+  /** Pages loaded or failed so far, the page count, and loads running now (as the `progress` event says). */
+  get progress() { return this._store.progress; }
+  /** The options in effect, defaults filled in (a frozen copy; setOptions() changes the live ones). */
+  get options() {
+    const { pageAspect, ...options } = this._settings;  // pageAspect: the PDF's page shape, not an option
+    return Object.freeze(options);
+  }
+  /** The page sound is muted (the `muted` option, live); the sound itself is the `sound` option. */
+  get muted() { return this._settings.muted; }
+  set muted(value) { this.setOptions({ muted: value }); }
+  /** What the page sound is doing: { state, gain, target, speed, taps } (page-sound.js), for tools and tests. */
+  get sound() { return this._sound?.status ?? null; }
+  /** Where the open pages lie on the canvas, in CSS pixels (both places of a spread in double). */
+  restingRect() { return this._surface.restingRect(); }
+  /** The leaves lying open at the settled position: { page (-1: a blank back), x, y, width, height } in CSS px. */
+  openPagePlaces() { return this._surface.openPagePlaces(); }
+  /** Resolves once no page is loading (and no click waits to see if it is a double-click). */
+  whenIdle() {
+    if (this._input?.pendingClick) {
+      return new Promise((resolve) => setTimeout(resolve, this._input.clickWaitMs + 20)).then(() => this.whenIdle());
+    }
+    return this._store.whenIdle();
+  }
+
+  next() { return this._turns.turn('forward'); }
+  prev() { return this._turns.turn('backward'); }
+
+  /** View magnification, 1 (the whole book) to MAX_ZOOM. Setting it zooms about the middle of the book. */
+  get zoom() { return this._zoom.scale; }
+  set zoom(scale) {
+    this._alive();
+    if (!(Number.isFinite(scale) && scale >= 1 && scale <= MAX_ZOOM)) {
+      throw new RangeError(`conecurl: zoom must be a number from 1 to ${MAX_ZOOM}, got ${String(scale)}`);
+    }
+    this._zoom.aboutCentre(scale);
+  }
+
+  /**
+   * Shows, frozen, the exact frame of the next ('forward') or previous ('backward') turn at progress
+   * t in [0, 1]: for scrubbers and figures. Returns false at the end of the book (and on still pages).
+   */
+  previewTurn(direction, t) {
+    this._alive();
+    if (direction !== 'forward' && direction !== 'backward') {
+      throw new TypeError(`conecurl: previewTurn direction must be 'forward' or 'backward', got ${String(direction)}`);
+    }
+    if (!(Number.isFinite(t) && t >= 0 && t <= 1)) throw new RangeError(`conecurl: previewTurn t must be in [0, 1], got ${String(t)}`);
+    const shown = this._surface.showTurn(direction, t);
+    if (shown) this._hideLayers();  // a posed leaf: live layers give way until the book next lands
+    this._store.update();  // the pages the posed leaf shows
+    return shown;
+  }
+
+  /**
+   * Shows page `index`: animated (default), a near page leaf by leaf and a far one by a riffle (several
+   * leaves at once, landing within RIFFLE_SPAN turns), else it jumps.
+   */
+  async flip(index, options) {
+    this._alive();
+    const { animate } = checkFlipOptions(options);
+    if (!Number.isInteger(index) || index < 0 || index >= this.pageCount) {
+      throw new RangeError(`conecurl: page ${index} is not in 0..${this.pageCount - 1}`);
+    }
+    // The latest flip wins: an animated flip still under way stops where it is (and resolves).
+    return this._turns.flip(index, animate);
+  }
+
+  /**
+   * Switches lighting, shadows, gutter shading, thickness and display on a live book (same surface, same page);
+   * other options need a new book.
+   */
+  setOptions(options) {
+    this._alive();
+    Object.assign(this._settings, checkLiveOptions(options, this._settings.pages));
+    const { lighting, shadows, gutter, thickness } = this._settings;
+    this._surface.setOptions({ lighting, shadows, gutter, thickness });
+    if ('display' in options) this._relayout();
+    this._sound.update();
+  }
+
+  /** Inserts `pages` before page `at` on the live book; resolves once applied (live-pages.js). */
+  async insertPages(at, pages) { return this._live().insert(at, pages); }
+  /** Removes `count` pages (default 1) from page `from` on; resolves once applied. */
+  async removePages(from, count = 1) { return this._live().remove(from, count); }
+  /** Puts `page` in the place of page `index`; resolves once applied. */
+  async replacePage(index, page) { return this._live().replace(index, page); }
+
+  _live() {
+    this._alive();
+    return (this._livePages ??= makeLivePages(this._port));
+  }
+
+  destroy() {
+    if (this._destroyed) return;
+    if (this._surface) {
+      this._finalPage = this.page;  // page and display still answer after destroy()
+      this._finalDisplay = this.display;
+    }
+    this._destroyed = true;
+    this._events.drop();
+    this._store.close();
+    this._pdf?.destroy();
+    this._pdf = null;
+    for (const layer of this._layers) layer.remove();
+    this._input?.stop();
+    this._stopWatchingSize?.();
+    this._stopCompanions?.();  // page memory, autoplay, the page sound
+    clearTimeout(this._refitTimer);
+    this._surface?.destroy({ releaseContext: true });  // the canvas goes: give its WebGL context up now
+    this._surface = null;
+    this._shell.remove();
+  }
+
+  // ---- building: the subclass makes the surface ----------------------------------------------
+
+  /** The surface for `display` on this._canvas (Flipbook: a BookView; StaticBook: a CanvasSurface). */
+  _makeSurface() { throw new Error('conecurl: BookController is abstract: use Flipbook or StaticBook'); }
+
+  /** Whether turns on this surface animate (a still surface cuts to the next spread). */
+  _animates() { return this._surface.kind === 'webgl' && !this._reducedMotion?.matches; }
+
+  async _build() {
+    // HTML pages live over the canvas while they lie open (html-pages.js, loaded only for books that have them).
+    const HtmlPages = this._pages.some((entry) => entry.html) ? (await import('../layers/html-pages.js')).HtmlPages : null;
+    if (HtmlPages && !this._destroyed) this._mountHtml(HtmlPages);
+    const { width, height } = this._shell.root.getBoundingClientRect();
+    this._layoutSize = { width, height };
+    this._surface = this._makeSurface(displayFor(this._settings.display, this._layoutSize));
+    followSurface(this._port);  // the pages a moving leaf shows, images lost with a context
+    this._surface.jumpTo(this._surface.positionOfPage(openingPage(this._settings, this.pageCount)));
+    this._input = attachBookInput(this._port);
+    this._stopWatchingSize = watchBookSize(this._port, this._layoutSize);
+    this._showOpenPages();
+    this._store.update();
+    const companions = startCompanions(this, this._port);  // page memory, autoplay, the page sound
+    this._sound = companions.sound;
+    this._stopCompanions = companions.stop;
+    await this.whenIdle();
+    this._emit('ready', { page: this.page });
+  }
+
+  // The HTML pages' layer, under the links.
+  _mountHtml(HtmlPages) {
+    this._html = makeHtmlPages(HtmlPages, this._port);
+    this._layers.unshift(this._html);
+  }
+
+  // ---- the port: all that book-turns.js and book-wiring.js see of the book (book-wiring.js BookPort) --
+
+  _makePort() {
+    return {
+      canvas: this._canvas,
+      root: this._shell.root,
+      entries: this._pages,
+      settings: this._settings,
+      surface: () => this._surface,
+      store: () => this._store,
+      zoom: () => this._zoom,
+      turns: () => this._turns,
+      html: () => this._html,
+      destroyed: () => this._destroyed,
+      alive: () => this._alive(),
+      animates: () => this._animates(),
+      page: () => this.page,
+      pageCount: () => this.pageCount,
+      openPages: () => this.openPages,
+      emit: (type, detail) => this._emit(type, detail),
+      flip: (index) => this.flip(index),
+      showOpenPages: () => this._showOpenPages(),
+      layoutLayers: () => this._layoutLayers(),
+      hideLayers: () => this._hideLayers(),
+      refitSoon: () => this._refitSoon(),
+      resized: (size) => {
+        this._layoutSize = size;
+        this._relayout();
+      },
+      attachHtml: (HtmlPages) => this._mountHtml(HtmlPages),
+      followLink: (link, event) => this._onLink(link, event),
+      flushEvents: () => this._events.flush(),
+      pdf: () => Boolean(this._pdf),
+    };
+  }
+
+  // ---- the open pages, the overlay layers, links ---------------------------------------------
+
+  // The open pages are shown again: the overlay layers laid over them, the live region and alt text.
+  _showOpenPages() {
+    this._layoutLayers();
+    const pages = this.openPages;
+    this._shell.showOpenPages(pages, this.pageCount, pages.map((i) => this._pages[i].alt));
+  }
+
+  // Overlay layers: laid over the open pages while the book rests, hidden while a leaf moves.
+  _layoutLayers() {
+    if (this._destroyed || !this._surface) return;
+    if (this._surface.animating) {
+      this._hideLayers();
+      return;
+    }
+    const places = this._surface.openPagePlaces().filter((place) => place.page >= 0);
+    for (const layer of this._layers) layer.place(places);
+  }
+
+  _hideLayers() {
+    for (const layer of this._layers) layer.hide();
+  }
+
+  _onLink(link, event) {
+    const detail = { page: link.page, href: link.href, toPage: link.toPage };
+    const proceed = this.dispatchEvent(new CustomEvent('link', { detail, cancelable: true }));
+    if (link.toPage !== undefined || !proceed) event.preventDefault();
+    if (proceed && link.toPage !== undefined) this.flip(link.toPage).catch(() => {});
+  }
+
+  // ---- size and pixel ratio ------------------------------------------------------------------
+  // The container or the pixel ratio changed: switch single/double for 'auto' (same surface, same
+  // page), draw at the new size, and once resizing rests bring the images to the size now wanted.
+  _relayout() {
+    const display = displayFor(this._settings.display, this._layoutSize);
+    if (display !== this.display) {
+      this._surface.setDisplay(display);
+      this._store.update();
+      this._showOpenPages();
+    }
+    this._surface.sizeChanged();
+    this._refitSoon();
+    this._layoutLayers();
+    this._emit('resize', { ...this._layoutSize, display: this.display });
+  }
+
+  _refitSoon() {
+    clearTimeout(this._refitTimer);
+    this._refitTimer = setTimeout(() => this._store.refit(), REFIT_DELAY_MS);
+  }
+
+  _emit(type, detail) {
+    if (!this._destroyed) this._events.dispatch(new CustomEvent(type, { detail }));
+  }
+
+  _alive() {
+    if (this._destroyed) throw new Error('conecurl: this flipbook was destroyed');
+  }
+}

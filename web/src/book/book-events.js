@@ -1,0 +1,73 @@
+// Events a user can always hear, for Flipbook and its static fallback alike: what a book dispatches
+// while create() runs is held and delivered, in order, just after create() resolves (so a listener
+// added right after `await Flipbook.create(...)` hears the first view's page errors), and the `on`
+// option's listeners are registered before anything happens.
+
+/**
+ * Every event a book dispatches and the fields of its detail ('?': not always there), as
+ * FlipbookEventMap in flipbook.d.ts types them (tests/node/typings.test.mjs compares the two, and
+ * tests/browser/element.spec.js each event dispatched with this).
+ */
+export const EVENT_DETAILS = {
+  ready: ['page'],
+  progress: ['loaded', 'total', 'pending'],
+  pageerror: ['index', 'error', 'reason'],
+  turnstart: ['direction', 'page', 'drag?', 'riffle?'],
+  turned: ['page'],
+  turncancel: ['page'],
+  resize: ['width', 'height', 'display'],
+  zoom: ['scale'],
+  sharpened: ['index', 'width'],
+  link: ['page', 'href', 'toPage?'],
+  pageschange: ['change', 'at', 'count', 'pageCount', 'page'],
+  error: ['error'],
+};
+/** Every event a book dispatches. */
+export const BOOK_EVENTS = Object.keys(EVENT_DETAILS);
+
+export class BookEvents {
+  /** @param {EventTarget} target the book @param {Record<string, Function>} [on] listeners by event type */
+  constructor(target, on = {}) {
+    this._target = target;
+    this._held = [];          // null once released: events then go out at once
+    this._resolved = false;   // create() has resolved: the caller can listen now
+    for (const [type, listener] of Object.entries(on)) target.addEventListener(type, listener);
+  }
+
+  /**
+   * Dispatches `event` now, or holds it while create() runs. An event of the book's life after
+   * create() resolved (a turn asked for at once) first lets out what was held, so the order stays and
+   * nothing waits. Returns dispatchEvent's answer (true when held).
+   */
+  dispatch(event) {
+    if (this._held && !this._resolved) {
+      this._held.push(event);
+      return true;
+    }
+    if (this._held) this.releaseNow();
+    return this._target.dispatchEvent(event);
+  }
+
+  /** create() resolved: what was held goes out in the next task, after the caller's continuation. */
+  releaseSoon() {
+    this._resolved = true;
+    setTimeout(() => this.releaseNow(), 0);
+  }
+
+  /** The book is about to change under what is held (its pages): once create() resolved, let it out first. */
+  flush() {
+    if (this._held && this._resolved) this.releaseNow();
+  }
+
+  releaseNow() {
+    const held = this._held ?? [];
+    this._held = null;
+    this._resolved = true;
+    for (const event of held) this._target.dispatchEvent(event);
+  }
+
+  /** The book is destroyed: what is held is dropped, nothing more goes out. */
+  drop() {
+    this._held = [];
+  }
+}

@@ -1,0 +1,199 @@
+// How a book's parts are wired to it: each part (the page store, zoom, the overlay layers, input, live
+// pages, the surface's reports, the size watch, page memory, autoplay, the page sound) is made here with
+// the callbacks it needs, one a line, from the controller's port (book-controller.js `_makePort`).
+import { followPage } from './page-memory.js';
+import { autoplaySettings, startAutoplay } from './autoplay.js';
+import { startPageSound } from './page-sound.js';
+import { LivePages } from './live-pages.js';
+import { BookZoom } from './book-zoom.js';
+import { watchSize } from './size-watch.js';
+import { PageStore } from '../pages/page-store.js';
+import { createLinkLayer } from '../layers/link-layer.js';
+import { turnsAt } from '../input/turn-area.js';
+import { attachInput } from '../input/book-input.js';
+
+/**
+ * What the parts may ask of the book: the controller makes it once, in `_makePort`.
+ * @typedef {object} BookPort
+ * @property {HTMLCanvasElement} canvas
+ * @property {HTMLElement} root  the book's focusable element
+ * @property {object[]} entries  the page entries (live pages change them in place)
+ * @property {object} settings  the options in effect (setOptions changes them in place)
+ * @property {() => object|null} surface  null before _build() and after destroy()
+ * @property {() => object} store  the PageStore
+ * @property {() => object} zoom  the BookZoom
+ * @property {() => object} turns  the BookTurns
+ * @property {() => object|null} html  the HTML pages' layer, once mounted
+ * @property {() => boolean} destroyed
+ * @property {() => void} alive  throws once the book is destroyed
+ * @property {() => boolean} animates  turns animate (WebGL, no reduced motion)
+ * @property {() => number} page
+ * @property {() => number} pageCount
+ * @property {() => number[]} openPages
+ * @property {(type: string, detail: object) => void} emit
+ * @property {(index: number) => Promise<void>} flip  the public flip()
+ * @property {() => void} showOpenPages  layers laid over the open pages, live region, alt text
+ * @property {() => void} layoutLayers
+ * @property {() => void} hideLayers
+ * @property {() => void} refitSoon  images fitted to the size and zoom once they rest
+ * @property {(size: { width: number, height: number }) => void} resized
+ * @property {(HtmlPages: Function) => void} attachHtml  mounts the HTML pages' layer
+ * @property {(link: object, event: Event) => void} followLink
+ * @property {() => void} flushEvents  events held while create() runs go out now
+ * @property {() => boolean} pdf  the book's pages are a PDF's
+ */
+
+/** @param {BookPort} book */
+export function makeZoom(book) {
+  return new BookZoom(book.canvas, {
+    surface: book.surface,
+    moved: book.layoutLayers,
+    changed: (scale) => {
+      book.refitSoon();  // sharp pages once it rests
+      book.emit('zoom', { scale });
+    },
+  });
+}
+
+/** @param {BookPort} book */
+export function makePageStore(book) {
+  return new PageStore(book.entries, book.settings, {
+    surface: book.surface,
+    openPages: book.openPages,
+    emit: book.emit,
+    // A source may have learned its page's text and links while making it (a PDF page). Not while a
+    // leaf moves or is lifted by a hover hint: the landing, or the hint's end, shows them again.
+    onOpenPageLoaded: (index) => {
+      if (!book.surface().animating && book.openPages().includes(index)) book.showOpenPages();
+    },
+  });
+}
+
+/** @param {BookPort} book */
+export function makeLinkLayer(book) {
+  return createLinkLayer(book.root, {
+    linksOf: (page) => book.entries[page].links,
+    onActivate: book.followLink,
+  });
+}
+
+/** The HTML pages' layer (html-pages.js, loaded only for books that have them). @param {BookPort} book */
+export function makeHtmlPages(HtmlPages, book) {
+  return new HtmlPages(book.root, book.entries, {
+    direction: book.settings.direction,
+    turnArea: book.settings.turnArea,
+    canvas: book.canvas,
+    zoom: () => book.zoom().scale,
+    pageSize: () => book.store().pageCssSize(),
+    changed: (index) => book.store().refresh(index),
+    pagesOnScreen: () => book.surface()?.pagesOnScreen() ?? [],
+    // A video's new frame drawn into the page's image: upload it again, if the page is still kept.
+    // (The snapshot already has the page's texture size: no cover to work out, no layout read a frame.)
+    redrawn: (index, canvas) => {
+      if (book.store().holds(index, canvas)) book.surface().setPageImage(index, canvas);
+    },
+  });
+}
+
+/** insertPages, removePages, replacePage (live-pages.js). @param {BookPort} book */
+export function makeLivePages(book) {
+  return new LivePages({
+    entries: book.entries,
+    store: book.store(),
+    hardCovers: book.settings.hardCovers,
+    surface: book.surface,
+    html: book.html,
+    attachHtml: book.attachHtml,
+    page: book.page,
+    pdf: book.pdf,
+    alive: book.alive,
+    shown: book.showOpenPages,
+    emit: book.emit,
+    flushEvents: book.flushEvents,
+  });
+}
+
+/** What the surface reports while the book lives. @param {BookPort} book */
+export function followSurface(book) {
+  const surface = book.surface();
+  // While leaves move, the pages they show change (turns that waited start late): the surface says when.
+  surface.onPagesChanged = () => {
+    if (!book.destroyed()) book.store().update();
+  };
+  // After a lost context, pages whose images the store closed once uploaded are decoded again.
+  surface.onImagesLost = (pages) => {
+    if (!book.destroyed()) book.store().reloadLost(pages);
+  };
+}
+
+/** The input modules (book-input.js), told what they may do; input after destroy() is dropped. @param {BookPort} book */
+export function attachBookInput(book) {
+  const zoom = book.zoom();
+  const { settings } = book;
+  return attachInput({
+    canvas: book.canvas,
+    element: book.root,
+    surface: book.surface(),
+    direction: settings.direction,
+  }, {
+    zoom: () => zoom.scale,
+    zoomed: () => zoom.zoomed,
+    zoomAbout: (scale, x, y) => { if (!book.destroyed()) zoom.about(scale, x, y); },
+    zoomAboutCentre: (scale) => { if (!book.destroyed()) zoom.aboutCentre(scale); },
+    panBy: (dx, dy) => zoom.panBy(dx, dy),
+    turn: (direction) => { if (!book.destroyed()) book.turns().turn(direction).catch(() => {}); },
+    jump: (end) => { book.flip(end === 'first' ? 0 : book.pageCount() - 1).catch(() => {}); },  // Home, End: a riffle
+    // Whether a press at a viewport point may turn a page there (the `turnArea` option).
+    turnsFrom: (clientX, clientY) => {
+      const box = book.canvas.getBoundingClientRect();
+      return turnsAt(settings.turnArea, () => book.surface().openPagePlaces(), settings.direction, clientX - box.left, clientY - box.top);
+    },
+    dragStarted: (direction) => {
+      book.hideLayers();
+      book.emit('turnstart', { direction, page: book.page(), drag: true });
+      book.store().update();
+    },
+    dragEnded: (completed) => {
+      if (book.destroyed()) return;
+      book.store().update();
+      if (completed) {
+        book.turns().landed();
+      } else {
+        book.showOpenPages();
+        book.emit('turncancel', { page: book.page() });
+      }
+    },
+    // A corner lifts as the mouse hovers it: the live layers give way to the page's texture.
+    hintStarted: book.hideLayers,
+    // A corner lifted by hovering fell back: the open pages are those from before it again.
+    hintEnded: () => { if (!book.destroyed()) book.showOpenPages(); },
+  });
+}
+
+/** The element's size and pixel ratio, from `initial` on (size-watch.js); returns the stop. @param {BookPort} book */
+export function watchBookSize(book, initial) {
+  return watchSize(book.root, initial, (size) => {
+    if (!book.destroyed()) book.resized(size);
+  });
+}
+
+/**
+ * What follows the book (`controller`, through its public API) from beside it: the address and the
+ * remembered page, autoplay, the page sound. Returns the sound (page-sound.js) and the stop of all three.
+ * @param {BookPort} book
+ */
+export function startCompanions(controller, book) {
+  const { settings, root } = book;
+  const stopFollowingPage = followPage(controller, settings);  // #page=N and the remembered page
+  const autoplay = autoplaySettings(settings.autoplay);
+  const stopAutoplay = autoplay ? startAutoplay(controller, root, autoplay) : null;
+  const sound = startPageSound(controller, root, { animates: book.animates });
+  return {
+    sound,
+    stop() {
+      stopFollowingPage();
+      stopAutoplay?.();
+      sound.stop();
+    },
+  };
+}

@@ -1,0 +1,345 @@
+// Types of Flipbook, the public entry point. Kept beside flipbook.js.
+import type { StaticBook } from './static-book.js';
+import type { BookView } from '../surfaces/book-view.js';
+import type { CanvasSurface } from '../surfaces/canvas-surface.js';
+
+export type PageImage = string | HTMLImageElement | HTMLCanvasElement | ImageBitmap | Blob;
+/**
+ * A page source: an image, or a function that makes one when the page is first wanted (lazily). The
+ * function is told the page's index and the size in device pixels it is drawn at.
+ */
+export type PageSource = PageImage | ((index: number, size: { width: number; height: number }) => PageImage | Promise<PageImage>);
+
+export interface PageLink {
+  /** Where on the page: [x, y, width, height] as fractions of the page, from its top-left corner. */
+  rect: [number, number, number, number];
+  /** A URL (http, https, mailto or relative) ... */
+  href?: string;
+  /** ... or a page of this book to turn to. */
+  page?: number;
+  /** Its name for screen readers and the tooltip; default the URL or "Go to page N". */
+  title?: string;
+}
+
+export interface PageEntry {
+  /** The page's image (give this or `html`). */
+  src?: PageSource;
+  /**
+   * A live HTML page: the element is shown over the page while it lies open (fully interactive) and
+   * drawn to the page's texture while it moves (needs the optional dependency modern-screenshot).
+   * Any element but an image, canvas or video; strings are never parsed as HTML.
+   */
+  html?: HTMLElement;
+  /** Text of the page for screen readers. */
+  alt?: string;
+  /** Turns rigidly, like a cover. */
+  hard?: boolean;
+  /** A sharper image of the page, loaded for the open pages when zoomed in. */
+  zoomSrc?: PageImage;
+  /** Clickable areas of the page, active while it lies open and flat. */
+  links?: PageLink[];
+}
+
+export interface FlipbookOptions {
+  /**
+   * The pages, first to last; at least one. A URL is loaded with CORS. An HTMLElement (not an image,
+   * canvas or video) is a live HTML page, as `{ html: element }`. Give this or `pdf`.
+   */
+  pages?: Array<PageSource | HTMLElement | PageEntry>;
+  /**
+   * Where a press may turn a page: anywhere on it ('page'), a band along its free edge ('edges'), its
+   * two free corners ('corners'), or nowhere ('none': keys, buttons and code still turn). Default
+   * 'edges' when the book has HTML pages (a press on their content stays theirs), else 'page'.
+   */
+  turnArea?: 'page' | 'edges' | 'corners' | 'none';
+  /**
+   * A PDF (URL or bytes) instead of `pages`: shown through pdf.js (the optional dependency pdfjs-dist,
+   * imported only then), each page rendered when wanted at the size the canvas needs, its text as its
+   * alt text, the page shape from the PDF's first page. The bytes are copied; yours stay usable.
+   */
+  pdf?: string | ArrayBuffer | Uint8Array;
+  /** URL of pdf.js's worker module, where `import.meta.resolve('pdfjs-dist/build/pdf.worker.min.mjs')` cannot find it. */
+  pdfWorkerSrc?: string;
+  /** 'auto' (default) shows two pages when the container is wider than 1.2x its height. */
+  display?: 'single' | 'double' | 'auto';
+  /** 'ltr' (default), 'rtl' (spine on the right), 'vertical' (spine at the top, a calendar). */
+  direction?: 'ltr' | 'rtl' | 'vertical';
+  /** Page to open at; default 0. */
+  startPage?: number;
+  /** Milliseconds per turn; default 1000. */
+  duration?: number;
+  /**
+   * Keep #page=N (N from 1) in the address: a link to it opens the book there, each turn adds a history
+   * entry, and the back and forward buttons turn the book. Default false; one book per page should use it.
+   */
+  hash?: boolean;
+  /** Remember the page in localStorage under this key and open there next time (#page=N wins). */
+  rememberPage?: string;
+  /**
+   * Turn on its own every `interval` ms (true: 4000), waiting while the pointer is over the book,
+   * while it has focus and while the tab is hidden; stop at the last page unless `loop`. Default false.
+   */
+  autoplay?: boolean | { interval?: number; loop?: boolean };
+  /**
+   * A page sound, synthesised with Web Audio (no audio files): a paper rustle whose loudness and
+   * brightness follow the turning leaf's angular speed, and a soft tap as it lands; hard leaves sound
+   * heavier. Its AudioContext is made on the first user gesture on the book (or one that turns it);
+   * silent while `muted`, under prefers-reduced-motion and on still pages. Default false; live.
+   */
+  sound?: boolean;
+  /** Silences the page sound (no AudioContext is made while muted). Default false; live, and `book.muted`. */
+  muted?: boolean;
+  /**
+   * The curl's schedule: 'paper' (default; the paper's three phases, Nuon's constants exactly) or
+   * 'smooth' (the same key poses joined with continuous slopes: no jolt at t = 0.15 and 0.4).
+   */
+  schedule?: 'paper' | 'smooth';
+  /**
+   * A closed book sits in the middle of its frame: the front cover alone on the right (the back cover
+   * alone on the left) is centred, and the book slides to the open position as the cover turns, as
+   * part of the same animation. Default true; false keeps the spine in the middle always.
+   */
+  center?: boolean;
+  /** The first and last pages turn rigidly; default false. */
+  hardCovers?: boolean;
+  lighting?: boolean;
+  shadows?: boolean;
+  gutter?: boolean;
+  /**
+   * The stacks of leaves under the open pages show their edges (fore-edge, head, tail), as deep as
+   * the leaves on each side; hard covers show a board. true (default): a leaf 0.004 of the page width
+   * thick; a number from 0 to 0.02: that thickness; false (or 0): no stacks. WebGL only: the 2D
+   * fallback draws none. Changes live through setOptions.
+   */
+  thickness?: boolean | number;
+  /**
+   * Pages loaded on each side of the open spread; default 4. At most max(2 * loadWindow + 4, 14)
+   * page textures are kept, however many pages the book has.
+   */
+  loadWindow?: number;
+  /** The book's accessible name (aria-label of its region); default 'Book'. */
+  label?: string;
+  /** Where the engine's .wasm is served, if not next to its JS. */
+  wasmUrl?: string;
+  /**
+   * Without WebGL2 (or when the engine cannot load), show the pages as still images: create() still
+   * rejects, and the error's `fallback` is a working StaticBook in the container. Default true.
+   */
+  fallback?: boolean;
+  /**
+   * Multisampled edges, smooth where a curling page meets the background. 'auto' (default) is true
+   * unless the browser's WebGL2 runs on a software rasterizer (no GPU: SwiftShader, llvmpipe), where
+   * it costs about a third of each frame's time.
+   */
+  antialias?: 'auto' | boolean;
+  /**
+   * Listeners by event name, registered before anything happens. Without them, events of the first
+   * view (its page errors, progress, ready) are still heard: what happens while create() runs is
+   * delivered just after it resolves, to listeners added right after `await Flipbook.create(...)`.
+   */
+  on?: { [K in keyof FlipbookEventMap]?: (event: FlipbookEventMap[K]) => void };
+}
+
+/** Where a page stands: not wanted yet ('idle'), loading, loaded, or failed (with why, as `pageerror` said). */
+export interface PageState {
+  state: 'idle' | 'loading' | 'loaded' | 'failed';
+  reason?: PageErrorReason;
+  error?: Error;
+}
+
+/** Why a page could not be shown (`pageerror`'s `reason`). */
+export type PageErrorReason = 'http' | 'network' | 'cors' | 'decode' | 'source' | 'upload';
+
+/**
+ * What Flipbook.create rejects with when the book cannot be drawn with WebGL2. A bad option is a
+ * plain TypeError instead.
+ */
+export interface FlipbookCreateError extends Error {
+  /** 'webgl2-unavailable': no WebGL2 context; 'engine-unavailable': the wasm engine failed to load. */
+  code?: 'webgl2-unavailable' | 'engine-unavailable';
+  /** The static book now in the container (not with `fallback: false`, or if it failed too). */
+  fallback?: StaticBook;
+  /** Why the fallback could not be built either, if it could not. */
+  fallbackError?: Error;
+}
+
+/** What insertPages, removePages and replacePage changed: the `pageschange` event's detail, and what they resolve with. */
+export interface PagesChangeDetail {
+  change: 'insert' | 'remove' | 'replace';
+  /** The first page inserted, removed or replaced. */
+  at: number;
+  count: number;
+  pageCount: number;
+  /** The first visible page now: the page the reader had in view, renumbered (a removed one: the page that took its place). */
+  page: number;
+}
+
+export interface FlipbookEventMap {
+  ready: CustomEvent<{ page: number }>;
+  /** After each page load settles: pages ready now (loaded or failed), the page count, loads still running. */
+  progress: CustomEvent<{ loaded: number; total: number; pending: number }>;
+  /**
+   * A turn begins: from next()/prev()/flip(), a click, tap, swipe or key, or a drag (`drag: true`); a
+   * flip() to a page more than two leaves away riffles, several leaves at once, with one turnstart
+   * (`riffle: true`) and one `turned` when they land.
+   */
+  turnstart: CustomEvent<{ direction: 'forward' | 'backward'; page: number; drag?: boolean; riffle?: boolean }>;
+  turned: CustomEvent<{ page: number }>;
+  /** The view's magnification changed (1 to 4). */
+  zoom: CustomEvent<{ scale: number }>;
+  /** A link in a page was clicked or activated; preventDefault() stops its navigation or flip. */
+  link: CustomEvent<{ page: number; href: string; toPage?: number }>;
+  /** An open page got a sharper texture for the zoomed view (its zoomSrc, or its function called again). */
+  sharpened: CustomEvent<{ index: number; width: number }>;
+  /**
+   * Pages were inserted, removed or replaced on the live book (insertPages, removePages, replacePage):
+   * `count` pages at `at`; `pageCount` and `page` (the first visible page) as they are now.
+   */
+  pageschange: CustomEvent<PagesChangeDetail>;
+  /** A dragged page was let go short of the spine and fell back: the book stays at `page`. */
+  turncancel: CustomEvent<{ page: number }>;
+  /**
+   * A page could not be shown; it stays plain paper and the book keeps working. `error` is a
+   * PageLoadError (message names the page, its URL and the cause) except for 'upload'.
+   */
+  pageerror: CustomEvent<{ index: number; error: Error; reason: PageErrorReason }>;
+  /** The container's size (CSS px) or devicePixelRatio changed and the book was laid out again. */
+  resize: CustomEvent<{ width: number; height: number; display: 'single' | 'double' }>;
+  /**
+   * The book cannot be drawn (no WebGL2, no engine): dispatched by the instance being built, just
+   * before create() rejects with the same error. Subclasses (such as <cone-flipbook>) hear it.
+   */
+  error: CustomEvent<{ error: FlipbookCreateError }>;
+}
+
+/** What the page sound (the `sound` option) is doing. */
+export interface PageSoundStatus {
+  /**
+   * 'off' (sound false), 'muted', 'silent' (reduced motion or still pages), 'waiting' (for a user
+   * gesture: no AudioContext yet), else the AudioContext's state: 'running', 'suspended' or 'closed'.
+   */
+  state: 'off' | 'muted' | 'silent' | 'waiting' | 'running' | 'suspended' | 'closed';
+  /** The rustle's gain now, as its GainNode has it (0 without an AudioContext). */
+  gain: number;
+  /** The gain the rustle is heading for, from the last frame's speed. */
+  target: number;
+  /** The fastest leaf's angular speed in the last frame heard, rad/s. */
+  speed: number;
+  /** Landing taps played so far. */
+  taps: number;
+}
+
+/** A leaf lying open at the settled position, and where it lies on the canvas (CSS px from its top-left). */
+export interface PagePlace {
+  /** The page it shows; -1 for a leaf's blank back. */
+  page: number;
+  /** It lies on the turned side (left in ltr, right in rtl, top in vertical); its free edge is outward. */
+  turned: boolean;
+  x: number;
+  y: number;
+  width: number;
+  height: number;
+}
+
+/**
+ * What every book is (book-controller.js): Flipbook draws it with WebGL2, StaticBook on a 2D canvas.
+ * Same members, input, loading, links, zoom and events on both.
+ */
+export class BookController extends EventTarget {
+  readonly pageCount: number;
+  /** Where page `index` stands now (RangeError for an index outside the book). */
+  pageState(index: number): PageState;
+  /** A leaf is moving or waiting to (turns in flight, a held page); false after destroy(). */
+  readonly animating: boolean;
+  /** Pages whose images are loaded and kept (page textures), in page order; never more than the cache's capacity. */
+  readonly residentPages: number[];
+  /** Where the open pages lie on the canvas, in CSS pixels from its top-left (both places of a spread in double). */
+  restingRect(): { x: number; y: number; width: number; height: number };
+  /** Each leaf lying open at the settled position, turned side first, as the engine (or layout.js) places it; zoom included. */
+  openPagePlaces(): PagePlace[];
+  /** The pages open at the settled position, as the live region announces them (one, or two in double). */
+  readonly openPages: number[];
+  /** Pages loaded or failed so far, the page count, and loads running now (what `progress` said last). */
+  readonly progress: { loaded: number; total: number; pending: number };
+  /** The options in effect, defaults filled in (a frozen copy). */
+  readonly options: Readonly<Required<Omit<FlipbookOptions, 'pdf' | 'pdfWorkerSrc' | 'wasmUrl' | 'rememberPage' | 'on'>>> & FlipbookOptions;
+  /**
+   * What draws the book, for tools and tests (reading pixels, counting frames): a BookView (WebGL2) or
+   * a CanvasSurface (still pages); null after destroy(). Drive the book through its own members.
+   */
+  readonly surface: BookView | CanvasSurface | null;
+  /** Resolves once no page is loading (and no click waits to tell a double-click). */
+  whenIdle(): Promise<void>;
+  /** First visible page at the settled position; after destroy(), the page the book was left at. */
+  readonly page: number;
+  /** Follows the container's aspect when the option is 'auto'; after destroy(), as it was last. */
+  readonly display: 'single' | 'double';
+  /**
+   * The element the book made in its container: focusable (tabindex 0), role "region" with
+   * aria-roledescription "book"; holds the canvas, the live region and the pages' alt text.
+   */
+  readonly element: HTMLElement;
+  /**
+   * Resolve true when the turn has landed, false if the book cannot turn that way (or was destroyed
+   * before it landed). Called during a turn they start another leaf or wait their turn. After
+   * destroy() they reject with an Error.
+   */
+  next(): Promise<boolean>;
+  prev(): Promise<boolean>;
+  /**
+   * Shows, frozen, the exact frame of the next ('forward') or previous ('backward') turn at progress t
+   * in [0, 1] (scrubbers, figures); false at the end of the book. TypeError/RangeError for bad input.
+   */
+  previewTurn(direction: 'forward' | 'backward', t: number): boolean;
+  /**
+   * View magnification, 1 (the whole book) to 4; setting it zooms about the middle of the book
+   * (RangeError outside 1..4). While above 1, clicks, swipes, drags and arrow keys do not turn pages;
+   * next(), prev() and flip() zoom back out first. Still pages (StaticBook) zoom the same way.
+   */
+  zoom: number;
+  /**
+   * Turns to page `index`: leaf by leaf when it is one or two leaves away, and when it is more than two
+   * leaves away by a riffle (several leaves at once, one `turnstart` with `riffle: true`, then
+   * `turned`); jumps with animate: false, under prefers-reduced-motion and on still pages (StaticBook).
+   * RangeError if out of range, TypeError for bad options. A later flip() takes over: an animated flip
+   * still under way stops turning and resolves.
+   */
+  flip(index: number, options?: { animate?: boolean }): Promise<void>;
+  /**
+   * Inserts `pages` (as the `pages` option takes them) before page `at` (0 to pageCount: pageCount adds
+   * them after the last) on the live book, with no rebuild. Waits for leaves in flight to land (and
+   * for changes asked before it), then applies: the page in view stays in view (renumbered), untouched
+   * pages keep their textures, `pageschange` fires. Rejects with a TypeError or RangeError naming a bad
+   * argument, and with an Error on a PDF book (its pages are the PDF's).
+   */
+  insertPages(at: number, pages: Array<PageSource | HTMLElement | PageEntry>): Promise<PagesChangeDetail>;
+  /** Removes `count` pages (default 1) from page `from` on, as insertPages applies; a book keeps at least one page. Removing the page in view shows the page that took its place. */
+  removePages(from: number, count?: number): Promise<PagesChangeDetail>;
+  /** Puts `page` in the place of page `index`, as insertPages applies; a page on screen shows its old image until the new one is ready. */
+  replacePage(index: number, page: PageSource | HTMLElement | PageEntry): Promise<PagesChangeDetail>;
+  /** Switches the effects, the thickness, the display or the sound on a live book (same page); any other option is a TypeError (it needs a new book). */
+  setOptions(options: Pick<FlipbookOptions, 'lighting' | 'shadows' | 'gutter' | 'thickness' | 'display' | 'sound' | 'muted'>): void;
+  /** The page sound is muted (the `muted` option); setting it is setOptions({ muted }) (TypeError unless a boolean). */
+  muted: boolean;
+  /** What the page sound is doing, a snapshot for tools and tests; null after destroy(). */
+  readonly sound: PageSoundStatus | null;
+  /**
+   * Stops everything at once, mid-turn or mid-drag too: no animation frame, listener, observer, GL
+   * object or wasm object is left, the WebGL context is released, page loads are aborted. Turns in
+   * flight resolve false; later calls reject (or throw) an Error. Idempotent.
+   */
+  destroy(): void;
+  addEventListener<K extends keyof FlipbookEventMap>(type: K, listener: (event: FlipbookEventMap[K]) => void,
+    options?: boolean | AddEventListenerOptions): void;
+  addEventListener(type: string, listener: EventListenerOrEventListenerObject | null,
+    options?: boolean | AddEventListenerOptions): void;
+}
+
+export class Flipbook extends BookController {
+  /**
+   * Resolves once the first view's pages (those on screen and their neighbours within loadWindow) have
+   * loaded or failed. Rejects with a TypeError naming a bad option (nothing is left in the container), or with a
+   * FlipbookCreateError when WebGL2 or the engine is unavailable (its `fallback` shows the pages).
+   */
+  static create(container: HTMLElement, options: FlipbookOptions): Promise<Flipbook>;
+}

@@ -1,0 +1,122 @@
+// The public entry point: a flipbook in a container element. Flipbook is the book controller
+// (book-controller.js) over the WebGL surface, BookView on the wasm engine, sharing the page's WebGL
+// contexts with other books; without WebGL2 or the engine, create() leaves a StaticBook in its place.
+import { loadEngine } from '../engine/load-engine.js';
+import { BookView } from '../surfaces/book-view.js';
+import { BookController } from './book-controller.js';
+import { describeValue, hardPageIndices, validateOptions } from './options.js';
+import { contextBudget } from '../surfaces/context-budget.js';
+import { softwareWebGL } from '../surfaces/software-gl.js';
+
+// Failures after which a book can still be shown, as still pages: Flipbook.create falls back on these.
+const FALLBACK_CODES = ['webgl2-unavailable', 'engine-unavailable'];
+
+// `pdf` (a URL, ArrayBuffer or Uint8Array) instead of `pages`: pdf.js is imported only then.
+async function openPdfOption(options) {
+  if (options === null || typeof options !== 'object' || !('pdf' in options)) return null;
+  const { pdf, pdfWorkerSrc } = options;
+  if (!(typeof pdf === 'string' || pdf instanceof ArrayBuffer || pdf instanceof Uint8Array)) {
+    throw new TypeError(`conecurl: option 'pdf' must be a URL string, an ArrayBuffer or a Uint8Array, got ${describeValue(pdf)}`);
+  }
+  if ('pages' in options) throw new TypeError("conecurl: option 'pages' cannot be given with 'pdf' (the PDF's pages are the book)");
+  if (pdfWorkerSrc !== undefined && typeof pdfWorkerSrc !== 'string') {
+    throw new TypeError(`conecurl: option 'pdfWorkerSrc' must be a URL string, got ${describeValue(pdfWorkerSrc)}`);
+  }
+  const { openPdf } = await import('../pages/pdf-pages.js');
+  return openPdf(pdf, { workerSrc: pdfWorkerSrc });
+}
+
+function withoutPdfOptions(options) {
+  const rest = { ...options };
+  delete rest.pdf;
+  delete rest.pdfWorkerSrc;
+  return rest;
+}
+
+export class Flipbook extends BookController {
+  /** @param {HTMLElement} container @param {object} options  See flipbook.d.ts. */
+  static async create(container, options) {
+    if (!(container instanceof HTMLElement)) throw new TypeError('conecurl: container must be an HTMLElement');
+    const pdf = await openPdfOption(options);
+    let settings;
+    try {
+      settings = validateOptions(pdf ? { ...withoutPdfOptions(options), pages: pdf.pages } : options);
+    } catch (error) {
+      pdf?.destroy();
+      throw error;
+    }
+    if (pdf) settings.pageAspect = pdf.aspect;  // page shape from the PDF's first page
+    return new this(container, settings, pdf)._open();  // `this`: subclasses get their own instances
+  }
+
+  // Loads the engine and builds the first view (BookController's _build and _events, reached through
+  // `this`, as a subclass does); resolves with the book once its pages have loaded or failed.
+  async _open() {
+    try {
+      this._engine = await loadEngine(this._settings.wasmUrl ? { wasmUrl: this._settings.wasmUrl } : {});
+      await this._build();
+    } catch (error) {
+      throw await this._fail(error);
+    }
+    this._events.releaseSoon();  // what happened while loading the first view is heard from now on
+    return this;
+  }
+
+  constructor(container, settings, pdf = null) {
+    super(container, settings, pdf);
+    this._contextLease = contextBudget().lease(this._canvas);  // many books on a page share the WebGL contexts
+  }
+
+  destroy() {
+    if (this._destroyed) return;
+    super.destroy();
+    this._contextLease.dispose();
+  }
+
+  // create() failed. Without WebGL2 or the engine the pages can still be shown: unless the option
+  // `fallback` is false, a StaticBook takes the book's place in the container (error.fallback).
+  // Then `error` is dispatched (subclasses such as <cone-flipbook> hear it) and create rejects.
+  async _fail(error) {
+    const canFallBack = this._settings.fallback && FALLBACK_CODES.includes(error && error.code);
+    const pdf = canFallBack ? this._pdf : null;
+    if (canFallBack) this._pdf = null;  // the fallback shows the same PDF
+    this.destroy();
+    if (canFallBack) {
+      try {
+        // Loaded only now: books that have WebGL2 never download the fallback.
+        const { openStaticBook } = await import('./static-book.js');
+        error.fallback = await openStaticBook(this._container, this._settings, pdf);
+      } catch (fallbackError) {
+        pdf?.destroy();
+        error.fallbackError = fallbackError;
+      }
+    }
+    this.dispatchEvent(new CustomEvent('error', { detail: { error } }));
+    return error;
+  }
+
+  _makeSurface(display) {
+    const settings = this._settings;
+    const hardPages = hardPageIndices(this._pages, settings.hardCovers);
+    this._contextLease.admit();  // room in the page's context budget before the renderer makes one
+    const view = new BookView(this._engine, this._canvas, {
+      pageCount: this.pageCount,
+      // A PDF's pages keep their shape; image books use the engine's default page.
+      ...(settings.pageAspect ? { pageWidth: settings.pageAspect, pageHeight: 1 } : {}),
+      display,
+      direction: settings.direction,
+      hardPages,
+      turnSeconds: settings.duration / 1000,
+      schedule: settings.schedule,
+      center: settings.center,
+      // 'auto': smooth edges unless WebGL runs in software, where multisampling costs ~30% a frame.
+      antialias: settings.antialias === 'auto' ? !softwareWebGL() : settings.antialias,
+      lighting: settings.lighting,
+      shadows: settings.shadows,
+      gutter: settings.gutter,
+      thickness: settings.thickness,
+    });
+    this._contextLease.attach(view);
+    return view;
+  }
+}

@@ -1,0 +1,221 @@
+// The options of a book (Flipbook and its static fallback) checked in one place: every bad value is
+// a TypeError that names the option and says what is allowed, before anything is built.
+import { BOOK_EVENTS } from './book-events.js';
+import { DIRECTIONS } from '../engine/direction.js';
+import { MAX_LEAF_THICKNESS, MAX_PAGES } from '../engine/layout.js';
+import { TURN_AREAS } from '../input/turn-area.js';
+
+const BOOLEAN = (v) => typeof v === 'boolean' || 'true or false';
+export { MAX_PAGES };  // the engine's Book refuses more (cpp/core/book_constants.hpp)
+
+const OPTION_CHECKS = {
+  pages: (v) => (Array.isArray(v) && v.length > 0 && v.length <= MAX_PAGES)
+    || `a non-empty array of at most ${MAX_PAGES} page sources`,
+  display: (v) => ['single', 'double', 'auto'].includes(v) || "'single', 'double' or 'auto'",
+  direction: (v) => DIRECTIONS.includes(v) || DIRECTIONS.map((d) => `'${d}'`).join(', ').replace(/, ([^,]+)$/, ' or $1'),
+  startPage: (v) => (Number.isInteger(v) && v >= 0) || 'a page index (a whole number from 0)',
+  duration: (v) => (Number.isFinite(v) && v > 0) || 'a positive number of milliseconds',
+  schedule: (v) => ['paper', 'smooth'].includes(v) || "'paper' or 'smooth'",
+  center: BOOLEAN,
+  hardCovers: BOOLEAN,
+  lighting: BOOLEAN,
+  shadows: BOOLEAN,
+  gutter: BOOLEAN,
+  thickness: (v) => typeof v === 'boolean' || (Number.isFinite(v) && v >= 0 && v <= MAX_LEAF_THICKNESS)
+    || `true, false or a leaf's thickness as a fraction of the page width (0 to ${MAX_LEAF_THICKNESS})`,
+  loadWindow: (v) => (Number.isInteger(v) && v >= 1) || 'a whole number of pages from 1',
+  wasmUrl: (v) => typeof v === 'string' || 'a URL string',
+  label: (v) => (typeof v === 'string' && v.trim() !== '') || 'a non-empty string',
+  fallback: BOOLEAN,
+  hash: BOOLEAN,
+  autoplay: (v) => typeof v === 'boolean' || (isPlainEntry(v) && Object.keys(v).every((k) => k === 'interval' || k === 'loop')
+    && (v.interval === undefined || (Number.isFinite(v.interval) && v.interval > 0))
+    && (v.loop === undefined || typeof v.loop === 'boolean'))
+    || 'true, false or { interval: milliseconds, loop: true or false }',
+  sound: BOOLEAN,
+  muted: BOOLEAN,
+  rememberPage: (v) => (typeof v === 'string' && v.trim() !== '') || 'a non-empty string (the key it is kept under)',
+  antialias: (v) => typeof v === 'boolean' || v === 'auto' || "'auto', true or false",
+  turnArea: (v) => TURN_AREAS.includes(v) || TURN_AREAS.map((a) => `'${a}'`).join(', ').replace(/, ([^,]*)$/, ' or $1'),
+  on: (v) => (isPlainEntry(v) && Object.entries(v).every(([type, f]) => BOOK_EVENTS.includes(type) && typeof f === 'function'))
+    || `an object of listeners by event name (${BOOK_EVENTS.join(', ')})`,
+};
+/** Every option validateOptions() knows (Flipbook.create also takes pdf and pdfWorkerSrc in place of pages). */
+export const OPTION_NAMES = Object.keys(OPTION_CHECKS);
+/** The options of a PDF book, in place of `pages`: Flipbook.create checks them (flipbook.js) and opens the PDF. */
+export const PDF_OPTIONS = ['pdf', 'pdfWorkerSrc'];
+/** Every option Flipbook.create takes: FlipbookOptions in flipbook.d.ts (tests/node/typings.test.mjs checks it). */
+export const CREATE_OPTIONS = [...OPTION_NAMES, ...PDF_OPTIONS];
+export const DEFAULTS = {
+  display: 'auto', direction: 'ltr', startPage: 0, duration: 1000, schedule: 'paper', center: true, hardCovers: false,
+  lighting: true, shadows: true, gutter: true, thickness: true, loadWindow: 4, label: 'Book', fallback: true, hash: false,
+  autoplay: false, sound: false, muted: false, antialias: 'auto',
+};
+/** Options a live book takes through setOptions(); the others need a new book. */
+export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter', 'thickness', 'display', 'sound', 'muted'];
+const PAGE_ENTRY_KEYS = ['src', 'html', 'alt', 'hard', 'zoomSrc', 'links'];
+const PAGE_SOURCES = 'a URL string, HTMLImageElement, HTMLCanvasElement, ImageBitmap, Blob, '
+  + 'a function returning one of these (or a Promise of one), or an HTML element (an HTML page)';
+
+/**
+ * A value as an error message shows it: short, never the value's own toString (which may throw or
+ * be huge), strings quoted so an empty one is visible.
+ */
+export function describeValue(value) {
+  if (typeof value === 'string') return JSON.stringify(value.length > 60 ? `${value.slice(0, 57)}...` : value);
+  if (typeof value === 'number' || typeof value === 'boolean' || value === null || value === undefined) return String(value);
+  if (typeof value === 'bigint') return `${value}n`;
+  if (typeof value === 'symbol') return 'a symbol';
+  if (typeof value === 'function') return 'a function';
+  if (Array.isArray(value)) return `an array of ${value.length}`;
+  const name = Object.getPrototypeOf(value)?.constructor?.name;
+  return name && name !== 'Object' ? `a ${name}` : 'an object';
+}
+
+function isPageImage(src) {
+  return (typeof src === 'string' && src !== '') || src instanceof Blob
+    || (typeof HTMLImageElement !== 'undefined' && src instanceof HTMLImageElement)
+    || (typeof HTMLCanvasElement !== 'undefined' && src instanceof HTMLCanvasElement)
+    || (typeof ImageBitmap !== 'undefined' && src instanceof ImageBitmap);
+}
+
+/** An element shown as a live HTML page: any HTMLElement but an image, canvas or video. */
+export function isHtmlPage(page) {
+  return typeof HTMLElement !== 'undefined' && page instanceof HTMLElement && !isPageImage(page)
+    && !(typeof HTMLVideoElement !== 'undefined' && page instanceof HTMLVideoElement);
+}
+
+function isPlainEntry(page) {
+  return page !== null && typeof page === 'object' && !Array.isArray(page) && !isPageImage(page) && !isHtmlPage(page);
+}
+
+/**
+ * Checks one page given as `name` (its place, as messages say it): a TypeError names what is wrong.
+ * `kind` is what it was given to ('option', or a method such as 'insertPages').
+ */
+export function checkPage(page, name, pageCount, kind = 'option') {
+  if (!isPlainEntry(page)) {
+    if (isPageImage(page) || isHtmlPage(page) || typeof page === 'function') return;
+    throw new TypeError(`conecurl: ${kind} '${name}' must be ${PAGE_SOURCES}, or { src, alt, hard }; got ${describeValue(page)}`);
+  }
+  const unknown = Object.keys(page).find((key) => !PAGE_ENTRY_KEYS.includes(key));
+  if (unknown !== undefined) {
+    throw new TypeError(`conecurl: ${kind} '${name}' has an unknown key '${unknown}' (allowed: ${PAGE_ENTRY_KEYS.join(', ')})`);
+  }
+  if (page.html !== undefined) {
+    if (!isHtmlPage(page.html)) {
+      throw new TypeError(`conecurl: ${kind} '${name}.html' must be an HTML element (not an image, canvas or video; `
+        + `strings are never parsed as HTML); got ${describeValue(page.html)}`);
+    }
+    if (page.src !== undefined || page.zoomSrc !== undefined) {
+      throw new TypeError(`conecurl: ${kind} '${name}' gives both 'html' and '${page.src !== undefined ? 'src' : 'zoomSrc'}': an HTML page is drawn from its element`);
+    }
+  } else if (!isPageImage(page.src) && typeof page.src !== 'function') {
+    throw new TypeError(`conecurl: ${kind} '${name}.src' must be ${PAGE_SOURCES}; got ${describeValue(page.src)}`);
+  }
+  if (page.alt !== undefined && typeof page.alt !== 'string') {
+    throw new TypeError(`conecurl: ${kind} '${name}.alt' must be a string (the page's text for screen readers); got ${describeValue(page.alt)}`);
+  }
+  if (page.hard !== undefined && typeof page.hard !== 'boolean') {
+    throw new TypeError(`conecurl: ${kind} '${name}.hard' must be true or false; got ${describeValue(page.hard)}`);
+  }
+  if (page.zoomSrc !== undefined && !isPageImage(page.zoomSrc)) {
+    throw new TypeError(`conecurl: ${kind} '${name}.zoomSrc' must be a URL, HTMLImageElement, HTMLCanvasElement, ImageBitmap or Blob; `
+      + `got ${describeValue(page.zoomSrc)}`);
+  }
+  if (page.links !== undefined) checkLinks(page.links, `${name}.links`, pageCount, kind);
+}
+
+function checkLinks(links, where, pageCount, kind) {
+  if (!Array.isArray(links)) {
+    throw new TypeError(`conecurl: ${kind} '${where}' must be an array of { rect, href } or { rect, page }; got ${describeValue(links)}`);
+  }
+  links.forEach((link, i) => {
+    const rect = link && link.rect;
+    if (!Array.isArray(rect) || rect.length !== 4 || !rect.every((v) => Number.isFinite(v) && v >= 0 && v <= 1)) {
+      throw new TypeError(`conecurl: ${kind} '${where}[${i}].rect' must be [x, y, width, height] as fractions of the page (0 to 1); `
+        + `got ${describeValue(rect)}`);
+    }
+    const toPage = link.page;
+    if (toPage !== undefined && !(Number.isInteger(toPage) && toPage >= 0 && toPage < pageCount)) {
+      throw new TypeError(`conecurl: ${kind} '${where}[${i}].page' must be a page index below ${pageCount}; got ${describeValue(toPage)}`);
+    }
+    if (toPage === undefined && typeof link.href !== 'string') {
+      throw new TypeError(`conecurl: ${kind} '${where}[${i}]' needs an href (a URL string) or a page (an index)`);
+    }
+  });
+}
+
+/**
+ * Checks a book's options and returns them with the defaults filled in. Throws a TypeError naming
+ * the first bad option (or page entry) and what it allows.
+ */
+export function validateOptions(options) {
+  if (options === null || typeof options !== 'object') {
+    throw new TypeError(`conecurl: options must be an object, got ${describeValue(options)}`);
+  }
+  for (const [key, value] of Object.entries(options)) {
+    const check = OPTION_CHECKS[key];
+    if (!check) throw new TypeError(`conecurl: unknown option '${key}' (allowed: ${Object.keys(OPTION_CHECKS).join(', ')})`);
+    const verdict = check(value);
+    if (verdict !== true) throw new TypeError(`conecurl: option '${key}' must be ${verdict}, got ${describeValue(value)}`);
+  }
+  if (!('pages' in options)) throw new TypeError("conecurl: option 'pages' is missing (a non-empty array of page sources)");
+  // An index loop, not forEach: a hole in a sparse array is a missing page, not one to skip.
+  for (let index = 0; index < options.pages.length; index++) checkPage(options.pages[index], `pages[${index}]`, options.pages.length);
+  if (options.startPage !== undefined && options.startPage >= options.pages.length) {
+    throw new TypeError(`conecurl: option 'startPage' must be below the page count ${options.pages.length}, got ${options.startPage}`);
+  }
+  // A book with HTML pages turns from the pages' edges by default: a press on their content is theirs.
+  const hasHtml = Array.from(options.pages, (page) => isHtmlPage(page) || (isPlainEntry(page) && page.html !== undefined)).some(Boolean);
+  return { ...DEFAULTS, turnArea: hasHtml ? 'edges' : 'page', ...options };
+}
+
+const oneLinkForm = (l) => ({ rect: l.rect, href: l.href ?? '#', toPage: l.page, title: l.title });
+
+/**
+ * The page entries of checked options: every page as { src, alt?, hard?, zoomSrc?, links? } (or { html, ... }), links
+ * in one form { rect, href, toPage, title }. Entries without links stay the objects given (a PDF's
+ * fill in their alt and links as their pages render) unless `copy`: each entry its own object, so the
+ * same page given twice is two entries (pages spliced on a live book are followed by their entries).
+ */
+export function pageEntries(pages, { copy = false } = {}) {
+  return pages.map((page) => {
+    if (isHtmlPage(page)) return { html: page, alt: page.getAttribute('aria-label') ?? undefined };
+    if (!isPlainEntry(page)) return { src: page };
+    if (page.html) return { ...page, links: page.links?.map(oneLinkForm) };  // a copy: the book adds its `src`
+    if (!page.links) return copy ? { ...page } : page;
+    return { ...page, links: page.links.map(oneLinkForm) };
+  });
+}
+
+/** The hard pages' indices: pages marked `hard`, and with `hardCovers` the first and the last. */
+export function hardPageIndices(entries, hardCovers) {
+  const last = entries.length - 1;
+  return entries.flatMap((entry, i) => (entry.hard || (hardCovers && (i === 0 || i === last)) ? [i] : []));
+}
+
+/** `flip(index, options)`'s second argument: nothing, or { animate: boolean }. */
+export function checkFlipOptions(options) {
+  if (options === undefined) return { animate: true };
+  if (options === null || typeof options !== 'object') {
+    throw new TypeError(`conecurl: flip options must be an object like { animate: false }, got ${describeValue(options)}`);
+  }
+  const unknown = Object.keys(options).find((key) => key !== 'animate');
+  if (unknown !== undefined) throw new TypeError(`conecurl: unknown flip option '${unknown}' (allowed: animate)`);
+  if (options.animate !== undefined && typeof options.animate !== 'boolean') {
+    throw new TypeError(`conecurl: flip option 'animate' must be true or false, got ${describeValue(options.animate)}`);
+  }
+  return { animate: options.animate ?? true };
+}
+
+/** setOptions()'s argument on a live book: only LIVE_OPTIONS, each checked like at create. */
+export function checkLiveOptions(options, pages) {
+  if (options === null || typeof options !== 'object') {
+    throw new TypeError(`conecurl: options must be an object, got ${describeValue(options)}`);
+  }
+  const checked = validateOptions({ ...options, pages });  // a TypeError names a bad value
+  const fixed = Object.keys(options).find((key) => !LIVE_OPTIONS.includes(key));
+  if (fixed) throw new TypeError(`conecurl: option '${fixed}' cannot change on a live book (only ${LIVE_OPTIONS.join(', ')})`);
+  return Object.fromEntries(Object.keys(options).map((key) => [key, checked[key]]));
+}

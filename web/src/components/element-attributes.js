@@ -1,0 +1,132 @@
+// <cone-flipbook>'s attributes: each one's Flipbook option and parser, which apply live, the options that
+// have none and why, and the option properties frameworks set: which values a property keeps as given
+// and how the others are written to the attribute (element.js uses them; the element's behaviour stays
+// there). tests/node/typings.test.mjs holds every option to an attribute or a reason, and element.d.ts to these.
+import { LIVE_OPTIONS, describeValue } from '../book/options.js';
+
+export const TAG = 'cone-flipbook';
+
+const parseText = (raw) => raw;
+function parseNumber(raw, attribute) {
+  const value = Number(raw);
+  if (raw.trim() === '' || !Number.isFinite(value)) throw attributeError(attribute, 'a number', raw);
+  return value;
+}
+// "true" or a bare attribute: true; "false": false; anything else: undefined.
+const flag = (raw) => (raw === '' || raw === 'true' ? true : raw === 'false' ? false : undefined);
+function parseBoolean(raw, attribute) {
+  const value = flag(raw);
+  if (value === undefined) throw attributeError(attribute, '"true" or "false"', raw);
+  return value;
+}
+function parseAntialias(raw, attribute) {
+  const value = raw === 'auto' ? 'auto' : flag(raw);
+  if (value === undefined) throw attributeError(attribute, '"auto", "true" or "false"', raw);
+  return value;
+}
+function parseThickness(raw, attribute) {
+  if (flag(raw) !== undefined) return flag(raw);
+  const value = Number(raw);
+  if (raw.trim() !== '' && Number.isFinite(value)) return value;  // its range is checked with the options
+  throw attributeError(attribute, '"true", "false" or a leaf\'s thickness as a fraction of the page width', raw);
+}
+function parseAutoplay(raw, attribute) {
+  if (flag(raw) !== undefined) return flag(raw);
+  const interval = Number(raw);
+  if (raw.trim() !== '' && Number.isFinite(interval) && interval > 0) return { interval };
+  throw attributeError(attribute, '"true", "false" or the milliseconds between turns', raw);
+}
+function parseList(raw, attribute) {
+  const urls = raw.split(/\s+/).filter(Boolean);
+  if (urls.length === 0) throw attributeError(attribute, 'image URLs separated by spaces', raw);
+  return urls;
+}
+
+// attribute -> [Flipbook option, parser]; the parsers check syntax, Flipbook.create the values.
+export const ATTRIBUTES = {
+  pages: ['pages', parseList],
+  display: ['display', parseText],
+  direction: ['direction', parseText],
+  'start-page': ['startPage', parseNumber],
+  duration: ['duration', parseNumber],
+  schedule: ['schedule', parseText],
+  center: ['center', parseBoolean],
+  'hard-covers': ['hardCovers', parseBoolean],
+  lighting: ['lighting', parseBoolean],
+  shadows: ['shadows', parseBoolean],
+  gutter: ['gutter', parseBoolean],
+  thickness: ['thickness', parseThickness],
+  'load-window': ['loadWindow', parseNumber],
+  hash: ['hash', parseBoolean],
+  autoplay: ['autoplay', parseAutoplay],
+  sound: ['sound', parseBoolean],
+  muted: ['muted', parseBoolean],
+  'remember-page': ['rememberPage', parseText],
+  'wasm-url': ['wasmUrl', parseText],
+  antialias: ['antialias', parseAntialias],
+  'turn-area': ['turnArea', parseText],
+  label: ['label', parseText],
+  fallback: ['fallback', parseBoolean],
+  pdf: ['pdf', parseText],
+  'pdf-worker-src': ['pdfWorkerSrc', parseText],
+};
+/** Options with no attribute, and why. */
+export const NO_ATTRIBUTE = {
+  on: "listeners by event name: the element dispatches every book event itself, so listen on it (addEventListener, or a framework's event binding)",
+};
+export const ATTRIBUTE_OF_OPTION = Object.fromEntries(Object.entries(ATTRIBUTES).map(([name, [option]]) => [option, name]));
+/** Attributes applied to the running book (Flipbook.setOptions), no rebuild. */
+export const LIVE_ATTRIBUTES = LIVE_OPTIONS.map((option) => ATTRIBUTE_OF_OPTION[option]);
+
+function attributeError(attribute, expected, raw) {
+  return new TypeError(`conecurl: <${TAG}> attribute '${attribute}' must be ${expected}, got "${raw}"`);
+}
+
+/** An option's attribute on `element`, parsed (undefined when absent; as written when it does not parse). */
+export function readOptionAttribute(element, option) {
+  const attribute = ATTRIBUTE_OF_OPTION[option];
+  const raw = element.getAttribute(attribute);
+  if (raw === null) return undefined;
+  try { return ATTRIBUTES[attribute][1](raw, attribute); } catch { return raw; }  // a bad value is reported by the build
+}
+
+const plainObject = (value) => value !== null && typeof value === 'object' && Object.getPrototypeOf(value) === Object.prototype;
+
+/**
+ * Property values an attribute cannot hold, by option: given as a property, such a value is kept as
+ * given (the property reads it back, the book gets it) and wins over the attribute (the pages, over
+ * the child elements too). `strings`: the attribute takes only a string from a property.
+ */
+export const KEPT_VALUES = {
+  pages: { keeps: Array.isArray, strings: true, allowed: 'an array of pages or a string of URLs' },
+  pdf: { keeps: (value) => value instanceof ArrayBuffer || value instanceof Uint8Array, strings: true,
+    allowed: 'a URL string, an ArrayBuffer or a Uint8Array' },
+  autoplay: { keeps: plainObject, allowed: 'true, false, { interval, loop } or the milliseconds between turns' },
+};
+
+/** Whether a property value for `option` is kept as given rather than written to the attribute. */
+export const keepsValue = (option, value) => Boolean(KEPT_VALUES[option]?.keeps(value));
+
+/**
+ * Writes an option's property value to its attribute (a string, number or boolean as text); null or
+ * undefined removes it. A TypeError naming the property for a value no attribute holds.
+ */
+export function setOptionAttribute(element, option, value) {
+  const attribute = ATTRIBUTE_OF_OPTION[option];
+  if (value === null || value === undefined) {
+    element.removeAttribute(attribute);
+    return;
+  }
+  const strings = KEPT_VALUES[option]?.strings;
+  if (typeof value !== 'string' && (strings || !(typeof value === 'number' || typeof value === 'boolean'))) {
+    throw new TypeError(`conecurl: <${TAG}> property '${option}' must be ${KEPT_VALUES[option]?.allowed
+      ?? 'a string, number or boolean (as its attribute takes)'}, got ${typeof value === 'object' ? describeValue(value) : typeof value}`);
+  }
+  element.setAttribute(attribute, String(value));
+}
+
+// Every option with an attribute is a property too (Svelte, Angular and others set properties when an
+// element has them): reading gives the value kept (KEPT_VALUES) or the attribute's, parsed; writing
+// keeps the value or sets (null: removes) the attribute.
+export const PROPERTY_OPTIONS = Object.values(ATTRIBUTES).map(([option]) => option);
+
