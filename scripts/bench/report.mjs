@@ -177,7 +177,7 @@ export function markdown({ meta, loadBytes, summary, ratios, targets, configs })
   return lines.join('\n');
 }
 
-// The README's short version: one row per configuration and library, then the targets.
+// The short version docs/benchmark.md shows: one row per configuration and library, then the targets.
 const README_COLUMNS = [
   ['firstFrameMs', 'first frame ms', 0], ['turnSeconds', 's / turn', 2], ['frameMedianMs', 'frame median ms', 0],
   ['frameP95Ms', 'p95 ms', 0], ['maxOverMedian', 'max / median', 1], ['mainThreadMsPerFrame', 'main ms / frame', 1],

@@ -1,4 +1,4 @@
-// Browser: events a user can always hear. The README's own example hears the first view's page
+// Browser: events a user can always hear. docs/api.md's own example hears the first view's page
 // errors; the `on` option registers listeners before anything happens; pageState() answers later;
 // <cone-flipbook> passes a cancelled link back to the book, with WebGL2 and in the static fallback.
 import { test, expect } from '@playwright/test';
@@ -7,7 +7,7 @@ import { openReady, withoutWebGL2 } from './helpers.js';
 const FLIPBOOK_FIXTURE = '/tests/browser/fixtures/flipbook-fixture.html';
 const ELEMENT_FIXTURE = '/tests/browser/fixtures/element-fixture.html';
 
-// Eight pages, the third a 404, built as the README shows; listeners added after create resolved.
+// Eight pages, the third a 404, built as docs/api.md shows; listeners added after create resolved.
 async function readmeExample(page) {
   return page.evaluate(async () => {
     const pages = Array.from({ length: 8 }, (_, i) => (i === 2 ? '/no/such/page-2.png' : window.makeNumberedPage(i)));
@@ -33,7 +33,7 @@ async function readmeExample(page) {
   });
 }
 
-test('browser: the README example hears a page of the first view that failed (pageerror after create resolves), on: listeners too, and pageState() tells it later', async ({ page }) => {
+test('browser: the docs/api.md example hears a page of the first view that failed (pageerror after create resolves), on: listeners too, and pageState() tells it later', async ({ page }) => {
   await openReady(page, FLIPBOOK_FIXTURE);
   const { heard, early, states, outside } = await readmeExample(page);
   expect(heard.map(([index, reason]) => [index, reason])).toEqual([[2, 'http'], ['ready', 1]]);
