@@ -12,7 +12,7 @@ import { fileURLToPath } from 'node:url';
 import { chromium } from '@playwright/test';
 import { chromiumLaunchOptions } from './chromium.mjs';
 import { serveDirectory } from './serve.mjs';
-import { decodePng } from '../tests/browser/png.js';
+import { decodePng, pngPredictor } from '../tests/browser/png.js';
 
 const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const arg = (name, fallback) => {
@@ -107,16 +107,7 @@ function deflateRect(image, { x, y, width, height }) {
         const left = i >= channels ? line[i - channels] : 0;
         const up = previous[i];
         const upLeft = i >= channels ? previous[i - channels] : 0;
-        let predictor = 0;
-        if (filter === 1) predictor = left;
-        else if (filter === 2) predictor = up;
-        else if (filter === 3) predictor = (left + up) >> 1;
-        else if (filter === 4) {
-          const p = left + up - upLeft;
-          const [pa, pb, pc] = [Math.abs(p - left), Math.abs(p - up), Math.abs(p - upLeft)];
-          predictor = pa <= pb && pa <= pc ? left : pb <= pc ? up : upLeft;
-        }
-        const value = (line[i] - predictor) & 255;
+        const value = (line[i] - pngPredictor(filter, left, up, upLeft)) & 255;
         out[i] = value;
         cost += value < 128 ? value : 256 - value;
       }

@@ -5,6 +5,22 @@ import zlib from 'node:zlib';
 const SIGNATURE = '89504e470d0a1a0a';
 
 /** @returns {{ width: number, height: number, data: Uint8Array }} RGBA, rows top to bottom */
+/**
+ * What a PNG row filter predicts a byte from: its left, up and upper-left neighbours (0 none, 1 Sub,
+ * 2 Up, 3 Average, 4 Paeth), for decoding here and encoding in scripts/readme-media.mjs.
+ */
+export function pngPredictor(filter, left, up, upLeft) {
+  if (filter === 1) return left;
+  if (filter === 2) return up;
+  if (filter === 3) return (left + up) >> 1;
+  if (filter === 4) {
+    const p = left + up - upLeft;
+    const [pa, pb, pc] = [Math.abs(p - left), Math.abs(p - up), Math.abs(p - upLeft)];
+    return pa <= pb && pa <= pc ? left : pb <= pc ? up : upLeft;
+  }
+  return 0;
+}
+
 export function decodePng(buffer) {
   if (buffer.subarray(0, 8).toString('hex') !== SIGNATURE) throw new Error('not a PNG');
   let width = 0, height = 0, bitDepth = 0, colorType = 0, interlace = 0;
@@ -39,16 +55,7 @@ export function decodePng(buffer) {
       const left = i >= channels ? row[i - channels] : 0;
       const up = previous[i];
       const upLeft = i >= channels ? previous[i - channels] : 0;
-      let predictor = 0;
-      if (filter === 1) predictor = left;
-      else if (filter === 2) predictor = up;
-      else if (filter === 3) predictor = (left + up) >> 1;
-      else if (filter === 4) {
-        const p = left + up - upLeft;
-        const [pa, pb, pc] = [Math.abs(p - left), Math.abs(p - up), Math.abs(p - upLeft)];
-        predictor = pa <= pb && pa <= pc ? left : pb <= pc ? up : upLeft;
-      }
-      row[i] = (line[i] + predictor) & 255;
+      row[i] = (line[i] + pngPredictor(filter, left, up, upLeft)) & 255;
     }
     for (let x = 0; x < width; x++) {
       const at = (y * width + x) * 4;

@@ -6,20 +6,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readdirSync, readFileSync, statSync } from 'node:fs';
 import { join, relative } from 'node:path';
-
-const root = new URL('../..', import.meta.url).pathname;
-const SKIP = new Set(['node_modules', 'references', 'test-results', 'dist', 'build']);
-
-function filesUnder(dir, extensions) {
-  const found = [];
-  for (const name of readdirSync(dir)) {
-    if (SKIP.has(name)) continue;
-    const path = join(dir, name);
-    if (statSync(path).isDirectory()) found.push(...filesUnder(path, extensions));
-    else if (extensions.some((ext) => name.endsWith(ext))) found.push(path);
-  }
-  return found;
-}
+import { filesUnder, root } from './source-files.mjs';
 
 test('node: no test, demo or script reads a field or method that starts with _ (they use the public API)', () => {
   const files = ['tests', 'web/demo', 'scripts'].flatMap((dir) => filesUnder(join(root, dir), ['.js', '.mjs', '.html', '.ts']));

@@ -3,23 +3,10 @@
 // browser tests says why a window of time is the thing it tests (review alone lets these slip back).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readdirSync, readFileSync, statSync } from 'node:fs';
+import { readFileSync } from 'node:fs';
 import { join, relative } from 'node:path';
 import { FUZZ_SEEDS } from '../browser/fuzz-seeds.mjs';
-
-const root = new URL('../..', import.meta.url).pathname;
-const SKIP = new Set(['node_modules', 'references', 'test-results', 'dist', 'build']);
-
-function filesUnder(dir, extensions) {
-  const found = [];
-  for (const name of readdirSync(dir)) {
-    if (SKIP.has(name)) continue;
-    const path = join(dir, name);
-    if (statSync(path).isDirectory()) found.push(...filesUnder(path, extensions));
-    else if (extensions.some((ext) => name.endsWith(ext))) found.push(path);
-  }
-  return found;
-}
+import { filesUnder, root } from './source-files.mjs';
 
 const testFiles = () => filesUnder(join(root, 'tests'), ['.js', '.mjs', '.html'])
   .filter((file) => !file.endsWith('test-rules.test.mjs'));  // this file names the patterns
