@@ -96,13 +96,13 @@ test('node: every file under web/src has at most 350 lines, or says at its top w
 const LAYERS = ['engine', 'pages', 'surfaces', 'input', 'layers', 'book', 'components', '.'];
 
 /** The modules a JS source imports (static and dynamic), comments left out: JSDoc may name any type. */
-export function importsOf(source) {
+function importsOf(source) {
   const code = source.replace(/\/\*[\s\S]*?\*\//g, '').replace(/(^|[^:'"`])\/\/.*$/gm, '$1');
   return [...code.matchAll(/(?:^\s*import\s[^'"]*?from\s*|^\s*export\s[^'"]*?from\s*|\bimport\s*\(\s*)['"](\.{1,2}\/[^'"]+)['"]/gm)].map((m) => m[1]);
 }
 
 /** Every import in web/src/**.js that goes up the layers: "file -> import (layer -> layer)". */
-export function upwardImports(sourceRoot) {
+function upwardImports(sourceRoot) {
   const upward = [];
   for (const file of filesUnder(sourceRoot, ['.js'])) {
     const from = relative(sourceRoot, file).split('/');

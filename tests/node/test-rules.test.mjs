@@ -51,9 +51,9 @@ test('node: every sleep left in the browser tests says, in a comment beside it, 
   for (const file of files) {
     const lines = readFileSync(file, 'utf8').split('\n');
     lines.forEach((line, i) => {
-      // A fixed wait: Playwright's waitForTimeout, or a promise a timer resolves after some time (a
+      // A fixed wait: Playwright's page.waitFor(Timeout)(ms), or a promise a timer resolves after some time (a
       // timer of 0, or none, only lets the tasks queued before it run: an order, not a wait).
-      const sleeps = /waitForTimeout\(/.test(line)
+      const sleeps = /\.waitFor(Timeout)\(/.test(line)
         || /setTimeout\(\s*(resolve|r|res|done)\s*,\s*(?!0\s*\))[^)]/.test(line);
       if (!sleeps) return;
       const nearby = lines.slice(Math.max(0, i - 3), i + 1);

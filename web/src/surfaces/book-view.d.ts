@@ -1,7 +1,9 @@
 // Types of BookView, the JS view of one book on a canvas. Kept beside book-view.js.
-import type { Book, BookRenderer, ConeCurlEngine, LoadEngineOptions, RenderOptions } from '../engine/load-engine.js';
+import type { Book, BookOptions, BookRenderer, ConeCurlEngine, LoadEngineOptions, RenderOptions } from '../engine/load-engine.js';
 
-export interface BookViewOptions extends LoadEngineOptions, RenderOptions {
+/** The engine Book's options (pageWidth, pageHeight, turnSeconds, hardPages, schedule, center, as load-engine.d.ts documents them), and the view's own. */
+export interface BookViewOptions extends LoadEngineOptions, RenderOptions,
+  Pick<BookOptions, 'pageWidth' | 'pageHeight' | 'turnSeconds' | 'hardPages' | 'schedule' | 'center'> {
   /** An engine already loaded with loadEngine(). */
   engine?: ConeCurlEngine;
   pageCount: number;
@@ -9,17 +11,6 @@ export interface BookViewOptions extends LoadEngineOptions, RenderOptions {
   display?: 'single' | 'double';
   /** 'ltr' (spine left, default), 'rtl' (spine right), 'vertical' (spine at the top, a calendar). */
   direction?: 'ltr' | 'rtl' | 'vertical';
-  /** World units from the spine to the free edge, and along the spine; default 0.8 x 1. */
-  pageWidth?: number;
-  pageHeight?: number;
-  /** Seconds per turn; default 1. */
-  turnSeconds?: number;
-  /** Indices of hard pages (covers): they turn rigidly. */
-  hardPages?: number[];
-  /** 'paper' (default): the paper's three phases; 'smooth': the same key poses with continuous slopes. */
-  schedule?: 'paper' | 'smooth';
-  /** A closed book (one cover alone) sits centred and slides open as the cover turns; default true. */
-  center?: boolean;
   /** Multisampled edges (the WebGL context's antialias); default true. */
   antialias?: boolean;
 }
