@@ -244,6 +244,7 @@ export class BookController extends EventTarget {
       followLink: (link, event) => this._onLink(link, event),
       flushEvents: () => this._events.flush(),
       pdf: () => Boolean(this._pdf),
+      pdfDocument: () => this._pdf,
     };
   }
 

@@ -41,6 +41,7 @@ import { attachInput } from '../input/book-input.js';
  * @property {(link: object, event: Event) => void} followLink
  * @property {() => void} flushEvents  events held while create() runs go out now
  * @property {() => boolean} pdf  the book's pages are a PDF's
+ * @property {() => object|null} pdfDocument  the open PDF (pdf-pages.js openPdf: page(), textContent(), pdfjs), or null
  */
 
 /** @param {BookPort} book */

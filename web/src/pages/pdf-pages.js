@@ -23,7 +23,8 @@ async function importPdfjs() {
 /**
  * @param {string|ArrayBuffer|Uint8Array} source  a URL, or the file's bytes
  * @param {{ workerSrc?: string }} [options]
- * @returns {Promise<{ pages: Array<{ src: Function, alt: string }>, aspect: number, destroy: () => void }>}
+ * @returns {Promise<{ pages: Array<{ src: Function, alt: string }>, aspect: number, pdfjs: object, doc: object,
+ *   page: (index: number) => Promise<object>, textContent: (index: number) => Promise<object>, destroy: () => void }>}
  */
 export async function openPdf(source, { workerSrc } = {}) {
   const pdfjs = await importPdfjs();
@@ -50,7 +51,30 @@ export async function openPdf(source, { workerSrc } = {}) {
     const entry = { alt: '', src: (index, size) => renderPage(doc, i + 1, size, entry) };
     return entry;
   });
-  return { pages, aspect: first.width / first.height, destroy: () => task.destroy() };
+  const texts = new Map();  // page index → Promise of its text content, read once
+  return {
+    pages,
+    aspect: first.width / first.height,
+    /** pdf.js itself (for its TextLayer and the like) and the open document. */
+    pdfjs,
+    doc,
+    /** Page `index` (from 0) as pdf.js's PDFPageProxy. */
+    page: (index) => doc.getPage(index + 1),
+    /**
+     * Page `index`'s text as pdf.js gives it ({ items, styles }), with the page's size in PDF units
+     * at scale 1 ({ width, height }): read once and kept, for search and the text layer alike.
+     */
+    textContent(index) {
+      if (!texts.has(index)) {
+        texts.set(index, doc.getPage(index + 1).then(async (page) => {
+          const { width, height } = page.getViewport({ scale: 1 });
+          return { content: await page.getTextContent(), width, height };
+        }));
+      }
+      return texts.get(index);
+    },
+    destroy: () => task.destroy(),
+  };
 }
 
 /**
