@@ -3,14 +3,13 @@
 // pages and their states (page-store.js), zoom, size, the open pages shown and events; turns are carried
 // out by book-turns.js, and its parts (input, overlay layers, live pages, watchers) are wired to it by
 // book-wiring.js through one port (`_makePort`). The calls a surface answers are in docs/architecture.md.
-import { openingPage } from './page-memory.js';
 import { createShell } from './book-shell.js';
 import { BookEvents } from './book-events.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { BookTurns } from './book-turns.js';
 import {
-  attachBookInput, followSurface, makeHtmlPages, makeLinkLayer, makeLivePages, makePageStore, makeZoom,
-  startCompanions, watchBookSize,
+  attachBookInput, followSurface, loadCompanions, makeHtmlPages, makeLinkLayer, makeLivePages, makePageStore, makeZoom,
+  openingPageOf, startCompanions, watchBookSize,
 } from './book-wiring.js';
 import { MAX_ZOOM, displayFor, openPages } from '../engine/layout.js';
 
@@ -145,15 +144,18 @@ export class BookController extends EventTarget {
   }
 
   /** Inserts `pages` before page `at` on the live book; resolves once applied (live-pages.js). */
-  async insertPages(at, pages) { return this._live().insert(at, pages); }
+  async insertPages(at, pages) { return (await this._live()).insert(at, pages); }
   /** Removes `count` pages (default 1) from page `from` on; resolves once applied. */
-  async removePages(from, count = 1) { return this._live().remove(from, count); }
+  async removePages(from, count = 1) { return (await this._live()).remove(from, count); }
   /** Puts `page` in the place of page `index`; resolves once applied. */
-  async replacePage(index, page) { return this._live().replace(index, page); }
+  async replacePage(index, page) { return (await this._live()).replace(index, page); }
 
-  _live() {
+  // live-pages.js, imported on the first change asked for.
+  async _live() {
     this._alive();
-    return (this._livePages ??= makeLivePages(this._port));
+    const live = await (this._livePages ??= makeLivePages(this._port));
+    this._alive();
+    return live;
   }
 
   destroy() {
@@ -189,16 +191,18 @@ export class BookController extends EventTarget {
     // HTML pages live over the canvas while they lie open (html-pages.js, loaded only for books that have them).
     const HtmlPages = this._pages.some((entry) => entry.html) ? (await import('../layers/html-pages.js')).HtmlPages : null;
     if (HtmlPages && !this._destroyed) this._mountHtml(HtmlPages);
+    // Page memory, autoplay and the page sound: their modules imported only when the options ask.
+    const companionModules = await loadCompanions(this._settings);
     const { width, height } = this._shell.root.getBoundingClientRect();
     this._layoutSize = { width, height };
     this._surface = this._makeSurface(displayFor(this._settings.display, this._layoutSize));
     followSurface(this._port);  // the pages a moving leaf shows, images lost with a context
-    this._surface.jumpTo(this._surface.positionOfPage(openingPage(this._settings, this.pageCount)));
+    this._surface.jumpTo(this._surface.positionOfPage(openingPageOf(companionModules, this._settings, this.pageCount)));
     this._input = attachBookInput(this._port);
     this._stopWatchingSize = watchBookSize(this._port, this._layoutSize);
     this._showOpenPages();
     this._store.update();
-    const companions = startCompanions(this, this._port);  // page memory, autoplay, the page sound
+    const companions = startCompanions(this, this._port, companionModules);  // page memory, autoplay, the page sound
     this._sound = companions.sound;
     this._stopCompanions = companions.stop;
     await this.whenIdle();

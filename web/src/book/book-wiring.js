@@ -1,10 +1,8 @@
 // How a book's parts are wired to it: each part (the page store, zoom, the overlay layers, input, live
 // pages, the surface's reports, the size watch, page memory, autoplay, the page sound) is made here with
 // the callbacks it needs, one a line, from the controller's port (book-controller.js `_makePort`).
-import { followPage } from './page-memory.js';
-import { autoplaySettings, startAutoplay } from './autoplay.js';
-import { startPageSound } from './page-sound.js';
-import { LivePages } from './live-pages.js';
+// Parts only some books use (page memory, autoplay, the page sound, live pages) are imported here only
+// when an option or a call asks for them: a plain book never downloads them.
 import { BookZoom } from './book-zoom.js';
 import { watchSize } from './size-watch.js';
 import { PageStore } from '../pages/page-store.js';
@@ -96,8 +94,9 @@ export function makeHtmlPages(HtmlPages, book) {
   });
 }
 
-/** insertPages, removePages, replacePage (live-pages.js). @param {BookPort} book */
-export function makeLivePages(book) {
+/** insertPages, removePages, replacePage (live-pages.js, imported on the first call). @param {BookPort} book */
+export async function makeLivePages(book) {
+  const { LivePages } = await import('./live-pages.js');
   return new LivePages({
     entries: book.entries,
     store: book.store(),
@@ -179,22 +178,75 @@ export function watchBookSize(book, initial) {
 }
 
 /**
+ * The modules of what follows the book that its options ask for, imported now (`hash`, `rememberPage`:
+ * page-memory.js; `autoplay`: autoplay.js; `sound`: page-sound.js); null for each not asked for, and no
+ * wait at all when none is. Page memory is needed before the first view (where the book opens).
+ */
+export function loadCompanions(settings) {
+  const wanted = {
+    memory: settings.hash || settings.rememberPage ? () => import('./page-memory.js') : null,
+    autoplay: settings.autoplay ? () => import('./autoplay.js') : null,
+    sound: settings.sound ? () => import('./page-sound.js') : null,
+  };
+  if (!Object.values(wanted).some(Boolean)) return NO_COMPANIONS;
+  return Promise.all(Object.values(wanted).map((load) => load?.() ?? null))
+    .then(([memory, autoplay, sound]) => ({ memory, autoplay, sound }));
+}
+const NO_COMPANIONS = Object.freeze({ memory: null, autoplay: null, sound: null });
+
+/** The page the book opens at: the address's or the remembered page when asked for, else `startPage`. */
+export function openingPageOf(companions, settings, pageCount) {
+  return companions.memory ? companions.memory.openingPage(settings, pageCount) : settings.startPage;
+}
+
+/**
  * What follows the book (`controller`, through its public API) from beside it: the address and the
- * remembered page, autoplay, the page sound. Returns the sound (page-sound.js) and the stop of all three.
+ * remembered page, autoplay, the page sound, from the modules loadCompanions() imported. Returns the
+ * sound (page-sound.js, or a stand-in until `sound` is first set) and the stop of all three.
  * @param {BookPort} book
  */
-export function startCompanions(controller, book) {
+export function startCompanions(controller, book, { memory, autoplay, sound }) {
   const { settings, root } = book;
-  const stopFollowingPage = followPage(controller, settings);  // #page=N and the remembered page
-  const autoplay = autoplaySettings(settings.autoplay);
-  const stopAutoplay = autoplay ? startAutoplay(controller, root, autoplay) : null;
-  const sound = startPageSound(controller, root, { animates: book.animates });
+  const stopFollowingPage = memory ? memory.followPage(controller, settings) : null;  // #page=N and the remembered page
+  const autoplaying = autoplay?.autoplaySettings(settings.autoplay);
+  const stopAutoplay = autoplaying ? autoplay.startAutoplay(controller, root, autoplaying) : null;
+  const pageSound = soundOf(controller, book, sound);
   return {
-    sound,
+    sound: pageSound,
     stop() {
-      stopFollowingPage();
+      stopFollowingPage?.();
       stopAutoplay?.();
-      sound.stop();
+      pageSound.stop();
+    },
+  };
+}
+
+// The page sound: page-sound.js when loaded; until then (sound off at create) a stand-in that imports it
+// once setOptions({ sound: true }) asks, and says what it would: off, muted, silent or waiting.
+function soundOf(controller, book, module) {
+  const start = (pageSound) => pageSound.startPageSound(controller, book.root, { animates: book.animates });
+  let sound = module ? start(module) : null;
+  let stopped = false;
+  let loading = null;
+  return {
+    update() {
+      if (sound) return sound.update();
+      if (book.settings.sound && !loading) {
+        loading = import('./page-sound.js').then((pageSound) => {
+          if (!stopped) sound = start(pageSound);
+        });
+      }
+      return undefined;
+    },
+    stop() {
+      stopped = true;
+      sound?.stop();
+    },
+    get status() {
+      if (sound) return sound.status;
+      const { sound: on, muted } = book.settings;
+      const state = !on ? 'off' : muted ? 'muted' : !book.animates() ? 'silent' : 'waiting';
+      return Object.freeze({ state, gain: 0, target: 0, speed: 0, taps: 0 });
     },
   };
 }
