@@ -309,7 +309,6 @@ EMSCRIPTEN_BINDINGS(conecurl_book) {
                       out.set("offsetY", b.zoom().offsetY);
                       return out;
                   }))
-        .function("resetZoom", optional_override([](Book& b) { b.setZoom(ViewZoom{}); }))
         .function("setDisplay", optional_override([](Book& b, val display) {
                       const std::string name = display.isString() ? display.as<std::string>() : "";
                       if (name != "single" && name != "double") js::throwError("TypeError", "display must be 'single' or 'double'");
@@ -325,7 +324,7 @@ EMSCRIPTEN_BINDINGS(conecurl_book) {
                   }));
 #ifdef CONECURL_TEST_BINDINGS
     // The test build (dist/test/, see CMakeLists.txt): the frame as JS objects for the reference checks,
-    // the camera matrix and a grip's pixel. The package's JS reads none of them.
+    // the camera matrix, a grip's pixel and a zoom reset. The package's JS reads none of them.
     value_object<LeafDraw>("LeafDraw")
         .field("leaf", &LeafDraw::leaf)
         .field("frontPage", &LeafDraw::frontPage)
@@ -337,7 +336,8 @@ EMSCRIPTEN_BINDINGS(conecurl_book) {
         .field("resting", &LeafDraw::resting);
     book.function("frame", &frameToJs)
         .function("viewProjection", &viewProjection)
-        .function("gripPixel", &gripPixelNow);
+        .function("gripPixel", &gripPixelNow)
+        .function("resetZoom", optional_override([](Book& b) { b.setZoom(ViewZoom{}); }));  // tests/node/layout.test.mjs
 #else
     (void)book;
 #endif

@@ -50,6 +50,17 @@ void setOptions(BookRenderer& r, val options) {
     r.setOptions(next);
 }
 
+// An upload's refusal as JS sees WebGL's: a tainted source is a SecurityError DOMException.
+void throwIfRefused(const std::string& problem) {
+    if (problem == BookRenderer::kTaintedSource) {
+        val::global("DOMException")
+            .new_(val("conecurl: page image is cross-origin without CORS, so its pixels cannot be read"),
+                  val("SecurityError"))
+            .throw_();
+    }
+    if (!problem.empty()) js::throwError("Error", problem);
+}
+
 // `source` is a browser image (ImageBitmap, canvas, <img>, ImageData, video) `width` x `height`
 // pixels big, uploaded by the browser straight into the page's texture (no copy through the heap).
 // A source the page may not read throws a SecurityError DOMException, as WebGL itself would.
@@ -61,13 +72,22 @@ void setPageImage(BookRenderer& r, val pageValue, val source, val widthValue, va
         js::throwError("TypeError", "page image must be an ImageBitmap, canvas, image, ImageData or video");
     }
     const std::string problem = r.setPageImage(page, width, height, source.as_handle());
-    if (problem == BookRenderer::kTaintedSource) {
-        val::global("DOMException")
-            .new_(val("conecurl: page image is cross-origin without CORS, so its pixels cannot be read"),
-                  val("SecurityError"))
-            .throw_();
+    throwIfRefused(problem);
+}
+
+// Rows [y, y + rows) of the page's image in bands (BookRenderer::setPageImageRows): checked and refused
+// as setPageImage's whole upload is.
+void setPageImageRows(BookRenderer& r, val pageValue, val source, val widthValue, val heightValue, val yValue, val rowsValue) {
+    const int page = js::wholeNumber(pageValue, "page", 0, kMaxPages);
+    const int width = js::wholeNumber(widthValue, "image width", 1, 65536);
+    const int height = js::wholeNumber(heightValue, "image height", 1, 65536);
+    const int y = js::wholeNumber(yValue, "band row", 0, height - 1);
+    const int rows = js::wholeNumber(rowsValue, "band rows", 1, height - y);
+    if (source.isNull() || source.typeOf().as<std::string>() != "object") {
+        js::throwError("TypeError", "page image must be an ImageBitmap, canvas, image, ImageData or video");
     }
-    if (!problem.empty()) js::throwError("Error", problem);
+    const std::string problem = r.setPageImageRows(page, width, height, y, rows, source.as_handle());
+    throwIfRefused(problem);
 }
 
 #ifdef CONECURL_TEST_BINDINGS
@@ -95,6 +115,7 @@ EMSCRIPTEN_BINDINGS(conecurl_renderer) {
         .class_function("create", &createRenderer)
         .function("setOptions", &setOptions)
         .function("setPageImage", &setPageImage)
+        .function("setPageImageRows", &setPageImageRows)
         .function("releasePageImage", optional_override([](BookRenderer& r, val page) {
                       r.releasePageImage(js::wholeNumber(page, "page", 0, kMaxPages));
                   }))

@@ -226,11 +226,13 @@ void BookRenderer::destroyGpuObjects() {
     glDeleteFramebuffers(1, &shadowFramebuffer_);
     glDeleteTextures(1, &shadowTexture_);
     for (const auto& [page, texture] : pageTextures_) glDeleteTextures(1, &texture);
+    dropBand();
     forgetGpuObjects();
 }
 
 void BookRenderer::forgetGpuObjects() {
     pageTextures_.clear();
+    dropBand(false);
     gridKey_ = GridKey{};  // the grid buffer is gone too
     leafProgram_ = Program{};
     shadowProgram_ = Program{};
@@ -299,6 +301,7 @@ std::string BookRenderer::setPageImage(int page, int width, int height, JsHandle
                decimal(maxTextureSize_);
     }
     if (!makeCurrent()) return "the WebGL2 context is not available";
+    if (band_.page == page) dropBand();  // the whole image now: the bands under way are moot
     auto found = findTexture(page);
     GLuint texture = found == pageTextures_.end() ? 0 : found->second;
     if (!texture) glGenTextures(1, &texture);
@@ -323,6 +326,7 @@ std::string BookRenderer::setPageImage(int page, int width, int height, JsHandle
 }
 
 void BookRenderer::releasePageImage(int page) {
+    if (band_.page == page && makeCurrent()) dropBand();
     auto found = findTexture(page);
     if (found == pageTextures_.end()) return;
     if (makeCurrent()) {
@@ -335,6 +339,7 @@ void BookRenderer::releasePageImage(int page) {
 }
 
 void BookRenderer::splicePageImages(int at, int removed, int inserted) {
+    if (band_.page >= 0 && makeCurrent()) dropBand();  // the JS layer starts that upload over
     std::vector<int> gone;  // the pages held, not every index removed: a million removed costs no more
     for (const auto& entry : pageTextures_) {
         if (entry.first >= at && entry.first < at + removed) gone.push_back(entry.first);

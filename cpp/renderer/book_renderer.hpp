@@ -63,6 +63,14 @@ public:
     // renderer keeps working either way.
     static constexpr const char* kTaintedSource = "tainted";
     std::string setPageImage(int page, int width, int height, JsHandle source);
+    // The same upload in horizontal bands, one call a band (page_bands.cpp), so that no frame of a turn
+    // carries a whole page: rows [y, y + rows) of the `width` x `height` source go into a texture of
+    // their own, which takes the page's place once its last row is in (until then the page shows what
+    // it showed). Bands come in order from y = 0; y = 0 starts over. Returns as setPageImage does, or
+    // why the band was refused.
+    std::string setPageImageRows(int page, int width, int height, int y, int rows, JsHandle source);
+    // The page whose upload in bands is under way, or -1.
+    int pageInBands() const { return band_.page; }
     void releasePageImage(int page);
     // The book's pages were spliced: `removed` pages at `at` went (their textures are released) and
     // `inserted` pages came in their place, so textures of later pages move to their new indices (no
@@ -198,6 +206,15 @@ private:
     int shadowWidth_ = 0;
     int shadowHeight_ = 0;
     PageTextures pageTextures_;
+    // The upload in bands under way (page_bands.cpp): its texture, filled down to `rows`.
+    struct Band {
+        int page = -1;
+        GLuint texture = 0;
+        int width = 0;
+        int height = 0;
+        int rows = 0;
+    } band_;
+    void dropBand(bool deleteTexture = true);
 };
 
 }  // namespace conecurl

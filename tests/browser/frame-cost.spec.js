@@ -192,7 +192,7 @@ test('browser: page pixels never pass through the wasm heap: reading a 1000-page
   expect(result.after.inUse - result.before.inUse).toBeLessThanOrEqual(1024);
 });
 
-test('browser: pages that arrive together mid-turn are uploaded one a frame, never several in one turning frame, and all of them by the end', async ({ page }) => {
+test('browser: pages that arrive together mid-turn are uploaded one band a frame (texSubImage2D), never several uploads in one turning frame, and all of them by the end', async ({ page }) => {
   await openReady(page, FIXTURE);
   const result = await page.evaluate(async () => {
     // Pages from 3 on wait at a gate, opened mid-turn: several loads land in the same task.
@@ -211,16 +211,18 @@ test('browser: pages that arrive together mid-turn are uploaded one a frame, nev
     open();
     const perFrame = [];
     const drawsPerFrame = [];
-    let last = window.__counts.texImageFromImage;
+    // Uploads of page pixels: whole (texImage2D from an image) or a band (texSubImage2D).
+    const uploads = () => window.__counts.texImageFromImage + (window.__counts.glByName.texSubImage2D || 0);
+    let last = uploads();
     let lastDraws = window.__counts.glByName.drawElements;
     // Every frame of the turn from here on (at least 12 on any machine: the engine's clock advances at
     // most 0.25 s a frame), the frame that lands it not counted.
     for (;;) {
       await nextFrame();
       if (!book.animating) break;
-      perFrame.push(window.__counts.texImageFromImage - last);
+      perFrame.push(uploads() - last);
       drawsPerFrame.push(window.__counts.glByName.drawElements - lastDraws);
-      last = window.__counts.texImageFromImage;
+      last = uploads();
       lastDraws = window.__counts.glByName.drawElements;
     }
     await turning;

@@ -68,3 +68,102 @@ test('browser: hash: the first view opens at #page=N with page memory loaded onl
   expect(modules.has(OPTIONAL.memory)).toBe(true);
   expect(problems).toEqual([]);
 });
+
+// In the page, before the book makes its context: every texImage2D / texSubImage2D is counted in bytes
+// of pixels (width x height x 4; an allocation without pixels counts 0) in the bucket of the animation
+// frame it falls in (uploads between two frames count in the later one's), when a leaf moves then.
+function countUploadsPerFrame(page) {
+  return page.addInitScript(() => {
+    const sizeOf = (source) => [source.naturalWidth || source.videoWidth || source.width, source.naturalHeight || source.videoHeight || source.height];
+    const bytesOf = (name, args) => {
+      const last = args[args.length - 1];
+      if (last === null || last === undefined) return 0;
+      // texImage2D(target, level, internal, format, type, source) and texSubImage2D(target, level, x, y, format, type, source): the whole source.
+      if ((name === 'texImage2D' && args.length === 6) || (name === 'texSubImage2D' && args.length === 7)) {
+        const [width, height] = sizeOf(last);
+        return width * height * 4;
+      }
+      const [width, height] = name === 'texImage2D' ? [args[3], args[4]] : [args[4], args[5]];
+      return width * height * 4;
+    };
+    window.uploadFrames = [];  // { bytes, calls } per animation frame in which a leaf moved
+    let open = { bytes: 0, calls: 0 };
+    for (const name of ['texImage2D', 'texSubImage2D']) {
+      const original = WebGL2RenderingContext.prototype[name];
+      WebGL2RenderingContext.prototype[name] = function (...args) {
+        if (window.book?.animating) {
+          open.bytes += bytesOf(name, args);
+          open.calls++;
+        }
+        return original.apply(this, args);
+      };
+    }
+    // Every frame callback (the book's, the test's) runs wrapped: the first of a frame closes the bucket.
+    let frameTime = -1;
+    const requestFrame = window.requestAnimationFrame;
+    window.requestAnimationFrame = (callback) => requestFrame((now) => {
+      if (now !== frameTime) {
+        frameTime = now;
+        if (open.calls > 0) window.uploadFrames.push(open);
+        open = { bytes: 0, calls: 0 };
+      }
+      callback(now);
+    });
+    window.flushUploadFrames = () => {
+      if (open.calls > 0) window.uploadFrames.push(open);
+      open = { bytes: 0, calls: 0 };
+      return window.uploadFrames.splice(0);
+    };
+  });
+}
+
+test.describe('at 2x pixel ratio (pages of over 1 MB)', () => {
+  test.use({ deviceScaleFactor: 2 });
+
+  test('browser: a page that arrives while a leaf moves is uploaded in bands: no frame of the turn uploads more than UPLOAD_BAND_BYTES, and the page shows its image after the turn (bytes counted per frame, pixels read back)', async ({ page }) => {
+    await countUploadsPerFrame(page);
+    const problems = await openReady(page, FIXTURE);
+    const { budget, pageBytes } = await page.evaluate(async () => {
+      const { UPLOAD_BAND_BYTES } = await import('/web/src/surfaces/page-textures.js');
+      // Pages bigger than the screen needs; once `holding`, a page asked for waits for release().
+      let release;
+      const gate = new Promise((resolve) => { release = resolve; });
+      window.release = release;
+      window.holding = false;
+      const big = (i) => window.makeNumberedPage(i, 1000, 1250);
+      const pages = Array.from({ length: 8 }, (_, i) => ({ src: () => (window.holding ? gate.then(() => big(i)) : big(i)) }));
+      await window.openBook({ pages, display: 'double', startPage: 1, loadWindow: 1, duration: 4000 });
+      window.holding = true;
+      const size = window.book.surface.pageImageSize(1);
+      return { budget: UPLOAD_BAND_BYTES, pageBytes: size.width * size.height * 4 };
+    });
+    expect(pageBytes).toBeGreaterThan(2 * budget);  // a whole page would be over budget: it must go in bands
+    expect(await page.evaluate(() => window.book.pageState(4).state)).toBe('idle');  // not loaded before the turn
+    await page.evaluate(() => window.flushUploadFrames());
+    await page.evaluate(async () => {
+      const turned = window.book.next();
+      window.release();  // page 4, under the turning leaf, arrives now, while it moves
+      await turned;
+    });
+    const frames = await page.evaluate(() => window.flushUploadFrames());
+    console.log(`uploads in turning frames (bytes): ${frames.map((f) => f.bytes).join(' ')}; band budget ${budget}, a page ${pageBytes}`);
+    expect(frames.length).toBeGreaterThanOrEqual(3);  // the page arrived mid-turn and went up in several frames
+    for (const frame of frames) expect(frame.bytes).toBeLessThanOrEqual(budget);
+    // Pages 3 and 4 show their own images (the colour read back low in the middle of each place).
+    await page.evaluate(() => window.settle());
+    const shown = await page.evaluate(() => {
+      const view = window.book.surface;
+      view.drawNow();
+      const pixels = view.readPixels();
+      const ratio = pixels.width / view.canvas.clientWidth;
+      return view.openPagePlaces().map(({ page: index, x, y, width, height }) => {
+        const px = Math.round((x + width / 2) * ratio);
+        const py = Math.round((y + height * 0.85) * ratio);  // below the page number
+        const i = (py * pixels.width + px) * 4;
+        return [index, window.pageAtColor([pixels.data[i], pixels.data[i + 1], pixels.data[i + 2]], 8)];
+      });
+    });
+    expect(shown).toEqual([[3, 3], [4, 4]]);
+    expect(problems).toEqual([]);
+  });
+});

@@ -11,7 +11,7 @@ import { loadEngineForNode } from './load-engine.mjs';
 const TEST_ONLY = [
   ['module', 'curlNormalFiniteDifference'], ['module', 'coneBeta'], ['module', 'leafPointToWorld'],
   ['module', 'leafNormalToWorld'], ['module', 'heapBytesInUse'],
-  ['Book', 'frame'], ['Book', 'viewProjection'], ['Book', 'gripPixel'],
+  ['Book', 'frame'], ['Book', 'viewProjection'], ['Book', 'gripPixel'], ['Book', 'resetZoom'],
   ['BookRenderer', 'captureLeaf'], ['BookRenderer', 'gridPoints'],
 ];
 const lookup = (engine, [where, name]) => (where === 'module' ? engine[name] : engine[where].prototype[name]);
@@ -28,7 +28,7 @@ test('node: the package build of the engine lacks every test-only binding, the t
     assert.equal(typeof shipped[name], 'function', name);
   }
   for (const name of ['tick', 'requestTurn']) assert.equal(typeof shipped.FrameLoop.prototype[name], 'function', name);
-  for (const name of ['readPixels', 'setPageImage', 'gridRows']) assert.equal(typeof shipped.BookRenderer.prototype[name], 'function', name);
+  for (const name of ['readPixels', 'setPageImage', 'setPageImageRows', 'gridRows']) assert.equal(typeof shipped.BookRenderer.prototype[name], 'function', name);
 });
 
 test('node: no shipped source (web/src, web/demo) calls a test-only binding of the engine', () => {

@@ -169,6 +169,12 @@ export interface BookRenderer {
    * not an image the browser can upload, a SecurityError DOMException for a cross-origin image without CORS.
    */
   setPageImage(page: number, source: TexImageSource, width: number, height: number): void;
+  /**
+   * The same upload in horizontal bands, one call a band: rows `y` to `y + rows` of the source into a
+   * texture of their own, which becomes the page's once its last row is in (the page shows its old
+   * image until then). Bands go from y = 0 down, one page at a time; y = 0 starts over. Thrown as setPageImage.
+   */
+  setPageImageRows(page: number, source: TexImageSource, width: number, height: number, y: number, rows: number): void;
   releasePageImage(page: number): void;
   /** `removed` pages at `at` gave way to `inserted`: their textures released, later pages' renumbered (no upload). */
   splicePageImages(at: number, removed: number, inserted: number): void;

@@ -202,7 +202,7 @@ export class PageStore {
         if (index >= 0 && this._cache.stateOf(index) === 'loading') this._cache.setState(index, 'idle');
         return;
       }
-      await this._hooks.surface().queuePageImage(index, image, { cover: this.cover() });  // mid-turn: one a frame
+      await this._hooks.surface().queuePageImage(index, image, { cover: this.cover() });  // mid-turn: in bands over frames
       if (this._closed) return;
       index = this._indexOf(entry, index);  // the surface renumbered its texture along with the page
       if (index < 0) {

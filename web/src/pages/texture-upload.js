@@ -32,23 +32,24 @@ let scratch = null;  // one canvas for every book's scaling: texImage2D copies i
 
 /**
  * What the texture is uploaded from: the source itself when it already has the size wanted, else the
- * source drawn at that size on a scratch canvas. The pixels never pass through getImageData or the
- * wasm heap: the browser copies them from there into the texture.
+ * source drawn at that size on a scratch canvas (`own`: a canvas of its own, for an upload in bands
+ * spread over frames). The pixels never pass through getImageData or the wasm heap: the browser copies
+ * them from there into the texture.
  */
-export function atSize(source, natural, { width, height }) {
+export function atSize(source, natural, { width, height }, { own = false } = {}) {
   if (natural.width === width && natural.height === height) return source;
   let drawable = source;
   if (source instanceof ImageData) {  // drawImage cannot scale ImageData: stage it as a bitmap-sized canvas
     drawable = makeCanvas(source.width, source.height);
     drawable.getContext('2d').putImageData(source, 0, 0);
   }
-  scratch ??= makeCanvas(width, height);
-  if (scratch.width !== width || scratch.height !== height) Object.assign(scratch, { width, height });
-  const context = scratch.getContext('2d');
+  const target = own ? makeCanvas(width, height) : (scratch ??= makeCanvas(width, height));
+  if (target.width !== width || target.height !== height) Object.assign(target, { width, height });
+  const context = target.getContext('2d');
   context.imageSmoothingQuality = 'high';  // a big reduction stays legible, not aliased
   context.clearRect(0, 0, width, height);
   context.drawImage(drawable, 0, 0, width, height);
-  return scratch;
+  return target;
 }
 
 function makeCanvas(width, height) {

@@ -54,8 +54,9 @@ export class BookView {
    */
   setPageImage(page: number, source: TexImageSource, options?: { cover?: { width: number; height: number } }): void;
   /**
-   * setPageImage, but while leaves move the upload waits for a frame, at most one a frame, so pages
-   * arriving together mid-turn never stall it. Resolves once uploaded; rejects as setPageImage throws.
+   * setPageImage, but while leaves move (or a turn is asked for) the upload is spread over the coming
+   * frames in bands of at most 512 KB a frame, so no frame of a turn carries a whole page. Resolves once
+   * uploaded; rejects as setPageImage throws.
    */
   queuePageImage(page: number, source: TexImageSource, options?: { cover?: { width: number; height: number } }): Promise<void>;
   releasePageImage(page: number): void;

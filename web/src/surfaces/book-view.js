@@ -51,6 +51,7 @@ export class BookView {
       renderer: () => this.renderer,
       upload: (page, source, options) => this.setPageImage(page, source, options),
       moving: () => this._frames.moving,
+      turning: () => this.book.animating(),
       pagesOnScreen: () => this.pagesOnScreen(),
       redraw: () => this.requestRender(),
     });
@@ -106,8 +107,9 @@ export class BookView {
   setPageImage(page, source, options) { this._textures.set(page, source, options); }
 
   /**
-   * Like setPageImage, but while leaves move the upload waits for the next frame, at most one a frame,
-   * so pages that arrive together mid-turn never stall it. Resolves once uploaded; rejects with what
+   * Like setPageImage, but while leaves move (or a turn is asked for) the upload is spread over the
+   * coming frames in bands of at most UPLOAD_BAND_BYTES (page-textures.js), so no frame of a turn
+   * carries a whole page. Resolves once uploaded; rejects with what
    * setPageImage throws (or an Error if the view is destroyed first).
    */
   queuePageImage(page, source, options = {}) { return this._textures.queue(page, source, options); }
@@ -298,8 +300,8 @@ export class BookView {
     return this._loop.tick(now, drawing);
   }
 
-  // After the step: the leaves' motion to the page sound, and page images that arrived, one a frame
-  // while leaves move (shown from the next), all at once at rest.
+  // After the step: the leaves' motion to the page sound, and page images that arrived: one band a
+  // frame while leaves move (a page shown from the frame after its last band), all at once at rest.
   _ticked() {
     if (this.onMotion) this.onMotion(this._loop.motion());  // a second call into the engine, only with sound on
     this._textures.drain(this._frames.moving);
