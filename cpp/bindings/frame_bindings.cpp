@@ -2,6 +2,7 @@
 // starts queued turns, composes the frame and draws it, and returns TickFlags. Thin: the clock is
 // cpp/core/book_clock, the drawing cpp/renderer/book_renderer.
 #include <emscripten/bind.h>
+#include <emscripten/em_macros.h>
 #include <emscripten/val.h>
 
 #include <string>
@@ -62,6 +63,16 @@ val pagesOnScreenOf(const Book& book) {
 }
 
 }  // namespace
+
+#ifdef CONECURL_TEST_BINDINGS
+// The test build only: the per-frame call through a plain C ABI instead of Embind, so that
+// scripts/bench/embind-call.mjs can weigh Embind's cost on the one call a frame makes.
+extern "C" EMSCRIPTEN_KEEPALIVE int conecurl_frame_tick(FrameLoop* loop, double nowMs, int draw) {
+    return tick(*loop, nowMs, draw != 0);
+}
+// And a call that does next to nothing (queuedTurns), to weigh the call alone.
+extern "C" EMSCRIPTEN_KEEPALIVE int conecurl_frame_queued_turns(const FrameLoop* loop) { return loop->clock.queuedTurns(); }
+#endif
 
 EMSCRIPTEN_BINDINGS(conecurl_frame) {
     using namespace emscripten;
