@@ -3,8 +3,14 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/env.sh
-if [ ! -f build/wasm/CMakeCache.txt ]; then
-  emcmake cmake -S . -B build/wasm -DCMAKE_BUILD_TYPE=MinSizeRel >/dev/null
+# CONECURL_CLOSURE_COMPILER=<a closure-compiler command> runs closure on the package's glue (CMakeLists.txt).
+closure=OFF
+if [ -n "${CONECURL_CLOSURE_COMPILER:-}" ]; then
+  export EM_CLOSURE_COMPILER="$CONECURL_CLOSURE_COMPILER"
+  closure=ON
+fi
+if [ ! -f build/wasm/CMakeCache.txt ] || ! grep -q "^CONECURL_CLOSURE:BOOL=$closure\$" build/wasm/CMakeCache.txt; then
+  emcmake cmake -S . -B build/wasm -DCMAKE_BUILD_TYPE=MinSizeRel -DCONECURL_CLOSURE=$closure >/dev/null
 fi
 cmake --build build/wasm -j2
 test -f dist/conecurl-engine.wasm && test -f dist/conecurl-engine.mjs && test -f dist/engine-constants.js
