@@ -120,6 +120,32 @@ function countUploadsPerFrame(page) {
 test.describe('at 2x pixel ratio (pages of over 1 MB)', () => {
   test.use({ deviceScaleFactor: 2 });
 
+  test('browser: the pages a turn uncovers are decoded and uploaded while the book rests (default load window): none is loading when the turn starts, and no turning frame uploads more than UPLOAD_BAND_BYTES (bytes counted per frame)', async ({ page }) => {
+    await countUploadsPerFrame(page);
+    const problems = await openReady(page, FIXTURE);
+    const budget = await page.evaluate(async () => {
+      const { UPLOAD_BAND_BYTES } = await import('/web/src/surfaces/page-textures.js');
+      const pages = Array.from({ length: 12 }, (_, i) => ({ src: () => window.makeNumberedPage(i, 1000, 1250) }));  // over 1 MB each as uploaded
+      await window.openBook({ pages, display: 'double', startPage: 1, duration: 1500 });
+      return UPLOAD_BAND_BYTES;
+    });
+    for (let turn = 0; turn < 3; turn++) {
+      // The spread a forward turn uncovers: the turning leaf's back and the page under it.
+      const before = await page.evaluate(() => {
+        const uncovered = window.book.openPages.map((p) => p + 2).filter((p) => p < window.book.pageCount);
+        return uncovered.map((p) => window.book.pageState(p).state);
+      });
+      expect(before, `turn ${turn}`).toEqual(['loaded', 'loaded']);
+      await page.evaluate(() => window.flushUploadFrames());
+      await page.evaluate(() => window.book.next());
+      const frames = await page.evaluate(() => window.flushUploadFrames());
+      console.log(`turn ${turn}: uploads in turning frames (bytes): ${frames.map((f) => f.bytes).join(' ') || 'none'}`);
+      for (const frame of frames) expect(frame.bytes).toBeLessThanOrEqual(budget);
+      await page.evaluate(() => window.settle());
+    }
+    expect(problems).toEqual([]);
+  });
+
   test('browser: a page that arrives while a leaf moves is uploaded in bands: no frame of the turn uploads more than UPLOAD_BAND_BYTES, and the page shows its image after the turn (bytes counted per frame, pixels read back)', async ({ page }) => {
     await countUploadsPerFrame(page);
     const problems = await openReady(page, FIXTURE);
