@@ -23,7 +23,7 @@ struct EdgeMark {
 };
 
 // A tab sticks out past the block's outer edge by this fraction of the page width.
-inline constexpr double kTabReachOfWidth = 0.045;
+inline constexpr double kTabReachOfWidth = 0.08;
 // Tabs share the fore-edge from the head down, each in its own slot, at most this tall (of the page
 // height), with this much of a slot left as a gap between neighbours.
 inline constexpr double kMaxTabSlotOfHeight = 0.13;
@@ -31,7 +31,7 @@ inline constexpr double kTabGapOfSlot = 0.18;
 inline constexpr double kTabEdgeMarginOfHeight = 0.05;  // the first slot starts this far below the head
 // A tick is this wide (of the page width, across the block's depth), however thin a leaf is, so a hit
 // on one leaf of a 1000-page book still shows.
-inline constexpr double kTickWidthOfWidth = 0.004;
+inline constexpr double kTickWidthOfWidth = 0.006;
 
 // The leaf that holds `page` (double display: a leaf per two pages, front and back; single: one).
 int leafOfPage(const BookConfig& config, int page);

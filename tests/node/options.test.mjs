@@ -109,7 +109,7 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses(null, 'options must be an object, got null');
   refuses('pages', 'options must be an object, got "pages"');
   refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, direction, startPage, duration, schedule, center, hardCovers, "
-    + 'lighting, shadows, gutter, thickness, loadWindow, wasmUrl, label, fallback, hash, autoplay, sound, muted, rememberPage, antialias, turnArea, on)');
+    + 'lighting, shadows, gutter, thickness, loadWindow, wasmUrl, label, fallback, hash, autoplay, sound, muted, rememberPage, antialias, turnArea, on, edgeMarks)');
   refuses({ pages, antialias: 'yes' }, "option 'antialias' must be 'auto', true or false, got \"yes\"");
   refuses({ pages, startPage: 3 }, "option 'startPage' must be below the page count 3, got 3");
   // A value whose own toString throws or is huge is described, not called.
@@ -152,4 +152,11 @@ test('node: schedule is \'paper\' (default) or \'smooth\'', () => {
   assert.equal(validateOptions({ pages: ['a.jpg'], schedule: 'smooth' }).schedule, 'smooth');
   assert.throws(() => validateOptions({ pages: ['a.jpg'], schedule: 'bouncy' }),
     { name: 'TypeError', message: "conecurl: option 'schedule' must be 'paper' or 'smooth', got \"bouncy\"" });
+});
+
+test('node: edgeMarks is true or false, off by default without controls', () => {
+  assert.equal(validateOptions({ pages: ['a.jpg'] }).edgeMarks, false);
+  assert.equal(validateOptions({ pages: ['a.jpg'], edgeMarks: true }).edgeMarks, true);
+  assert.throws(() => validateOptions({ pages: ['a.jpg'], edgeMarks: 'yes' }),
+    { name: 'TypeError', message: "conecurl: option 'edgeMarks' must be true or false, got \"yes\"" });
 });

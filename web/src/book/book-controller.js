@@ -8,6 +8,7 @@ import { createShell } from './book-shell.js';
 import { BookEvents } from './book-events.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { BookTurns } from './book-turns.js';
+import { EdgeMarks, edgeMarksOn } from './edge-marks.js';
 import {
   attachBookInput, followSurface, makeHtmlPages, makeLinkLayer, makeLivePages, makePageStore, makeZoom,
   startCompanions, watchBookSize,
@@ -193,6 +194,7 @@ export class BookController extends EventTarget {
     this._layoutSize = { width, height };
     this._surface = this._makeSurface(displayFor(this._settings.display, this._layoutSize));
     followSurface(this._port);  // the pages a moving leaf shows, images lost with a context
+    if (edgeMarksOn(this._settings)) this._layers.push(new EdgeMarks(this, this._port));  // tabs and ticks on the fore-edge
     this._surface.jumpTo(this._surface.positionOfPage(openingPage(this._settings, this.pageCount)));
     this._input = attachBookInput(this._port);
     this._stopWatchingSize = watchBookSize(this._port, this._layoutSize);

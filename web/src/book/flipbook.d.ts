@@ -138,6 +138,14 @@ export interface FlipbookOptions {
    * delivered just after it resolves, to listeners added right after `await Flipbook.create(...)`.
    */
   on?: { [K in keyof FlipbookEventMap]?: (event: FlipbookEventMap[K]) => void };
+  /**
+   * Marks on the book's edge: the page blocks' fore-edge carries a coloured index tab for each
+   * top-level entry of `outline()` and a tick for each page with a search hit (`searchchange`), drawn
+   * at the leaves they belong to, moving from one block to the other as leaves turn. At rest each tab
+   * and tick has a button over it, named by its title, that riffles there. Needs the WebGL book and
+   * `thickness` (a StaticBook draws no blocks). Default: true when `controls` is on, else false.
+   */
+  edgeMarks?: boolean;
 }
 
 /** Where a page stands: not wanted yet ('idle'), loading, loaded, or failed (with why, as `pageerror` said). */

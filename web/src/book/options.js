@@ -39,6 +39,7 @@ const OPTION_CHECKS = {
   turnArea: (v) => TURN_AREAS.includes(v) || TURN_AREAS.map((a) => `'${a}'`).join(', ').replace(/, ([^,]*)$/, ' or $1'),
   on: (v) => (isPlainEntry(v) && Object.entries(v).every(([type, f]) => BOOK_EVENTS.includes(type) && typeof f === 'function'))
     || `an object of listeners by event name (${BOOK_EVENTS.join(', ')})`,
+  edgeMarks: BOOLEAN,
 };
 /** Every option validateOptions() knows (Flipbook.create also takes pdf and pdfWorkerSrc in place of pages). */
 export const OPTION_NAMES = Object.keys(OPTION_CHECKS);
@@ -168,7 +169,8 @@ export function validateOptions(options) {
   }
   // A book with HTML pages turns from the pages' edges by default: a press on their content is theirs.
   const hasHtml = Array.from(options.pages, (page) => isHtmlPage(page) || (isPlainEntry(page) && page.html !== undefined)).some(Boolean);
-  return { ...DEFAULTS, turnArea: hasHtml ? 'edges' : 'page', ...options };
+  // edgeMarks: on with the controls unless given.
+  return { ...DEFAULTS, turnArea: hasHtml ? 'edges' : 'page', edgeMarks: Boolean(options.controls), ...options };
 }
 
 const oneLinkForm = (l) => ({ rect: l.rect, href: l.href ?? '#', toPage: l.page, title: l.title });

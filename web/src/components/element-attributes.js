@@ -68,7 +68,7 @@ export const ATTRIBUTES = {
   label: ['label', parseText],
   fallback: ['fallback', parseBoolean],
   pdf: ['pdf', parseText],
-  'pdf-worker-src': ['pdfWorkerSrc', parseText],
+  'pdf-worker-src': ['pdfWorkerSrc', parseText],  'edge-marks': ['edgeMarks', parseBoolean],
 };
 /** Options with no attribute, and why. */
 export const NO_ATTRIBUTE = {
