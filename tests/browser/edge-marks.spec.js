@@ -118,6 +118,22 @@ test('browser: index tabs are drawn at their leaves\' depth in each block, where
   expect(after[0].pixels.inner).toBeGreaterThan(after[2].pixels.inner);
 });
 
+test('browser: a tab leaves its block with its leaf: mid-turn the leaf in flight shows no tab, the others stay at their leaves, and the overlay buttons hide (readback)', async ({ page }) => {
+  await openWithOutline(page, { startPage: 69 });  // Methods (page 70) is on the right page's leaf
+  const resting = await page.evaluate(readMarks);
+  expect(resting.map((m) => [m.page, m.turned])).toEqual([[6, true], [70, false], [120, false], [180, false]]);
+  expect(resting[1].pixels.inner, 'the open leaf\'s tab starts at the page\'s edge').toBeLessThanOrEqual(2);
+  await expect(page.locator('[data-edge-mark]')).toHaveCount(4);
+  const flying = await page.evaluate((measure) => {
+    const marks = new Function(`return (${measure})`)();  // eslint-disable-line no-new-func
+    window.book.previewTurn('forward', 0.5);
+    return marks();
+  }, readMarks.toString());
+  expect(flying.map((m) => [m.page, m.turned])).toEqual([[6, true], [120, false], [180, false]]);
+  expectTabsAtTheirLeaves(flying);
+  await expect(page.locator('[data-edge-mark]')).toHaveCount(0);
+});
+
 test('browser: a tab\'s button is named by its section, and a click on it riffles to the section\'s page (waits for turned)', async ({ page }) => {
   await openWithOutline(page, { startPage: 40 });
   const tab = page.getByRole('button', { name: 'Appendix' });
@@ -180,4 +196,81 @@ test('browser: without edgeMarks (the default without controls) nothing is drawn
   expect(colouredOutside).toBe(0);
   expect(await page.evaluate(() => window.book.options.edgeMarks)).toBe(false);
   await expect(page.locator('[data-edge-mark]')).toHaveCount(0);
+});
+
+// WebGL calls a resting frame adds for the marks, once their buffer is up: the depth test asked,
+// their program, its matrix, one draw, and the program before them back.
+const EDGE_MARK_GL_CALLS = 5;
+
+test('browser: the marks cost a resting frame a fixed number of WebGL calls, however many there are, and none without marks (counts)', async ({ page }) => {
+  await openWithOutline(page, { startPage: 40, outline: [] });
+  const counts = await page.evaluate(() => {
+    const proto = WebGL2RenderingContext.prototype;
+    let calls = 0;
+    for (const name of Object.getOwnPropertyNames(proto)) {
+      const original = Object.getOwnPropertyDescriptor(proto, name).value;
+      if (name === 'constructor' || typeof original !== 'function') continue;
+      proto[name] = function counted(...args) { calls++; return original.apply(this, args); };
+    }
+    const view = window.book.surface;
+    const frame = () => { const before = calls; view.drawNow(); return calls - before; };
+    frame();
+    const none = frame();
+    const out = { none };
+    for (const n of [1, 12]) {
+      view.setEdgeMarks(Array.from({ length: n }, (_, i) => ({ page: 100 + 6 * i, kind: i % 2 ? 'tick' : 'tab' })));
+      frame();  // the buffer is filled
+      out[n] = frame();
+    }
+    view.setEdgeMarks([]);
+    frame();
+    out.cleared = frame();
+    return out;
+  });
+  console.log('WebGL calls a resting frame:', JSON.stringify(counts));
+  expect(counts[1] - counts.none).toBe(EDGE_MARK_GL_CALLS);
+  expect(counts[12] - counts.none).toBe(EDGE_MARK_GL_CALLS);
+  expect(counts.cleared).toBe(counts.none);
+});
+
+// Paper-like pages for the reference image: a heading and lines of grey "text" on cream paper.
+function paperPages(count) {
+  return Array.from({ length: count }, (_, index) => {
+    const canvas = document.createElement('canvas');
+    canvas.width = 320;
+    canvas.height = 400;
+    const g = canvas.getContext('2d');
+    g.fillStyle = '#fbf8f1';
+    g.fillRect(0, 0, 320, 400);
+    g.fillStyle = '#3b3b3b';
+    g.font = 'bold 20px "DejaVu Sans", sans-serif';
+    g.fillText(index % 8 === 0 ? `Part ${index / 8 + 1}` : '', 28, 56);
+    g.fillStyle = '#b9b4aa';
+    for (let line = 0; line < 16; line++) g.fillRect(28, 84 + line * 18, line % 5 === 4 ? 150 : 264, 6);
+    g.fillStyle = '#777';
+    g.font = '12px "DejaVu Sans", sans-serif';
+    g.fillText(String(index + 1), index % 2 ? 28 : 280, 384);
+    return canvas;
+  });
+}
+
+test('browser: a book with index tabs and search ticks on its edge matches its reference image', async ({ page }) => {
+  await page.setViewportSize({ width: 1000, height: 660 });
+  await openReady(page, FIXTURE);
+  await page.evaluate(async (pagesOf) => {
+    document.getElementById('container').style.cssText = 'width: 960px; height: 620px';
+    window.Flipbook.prototype.outline = async () => [
+      { title: 'Introduction', page: 2 }, { title: 'History', page: 24 }, { title: 'Design', page: 56 },
+      { title: 'Materials', page: 88 }, { title: 'Methods', page: 120 }, { title: 'Index', page: 150 },
+    ];
+    const pages = new Function(`return (${pagesOf})`)()(160);  // eslint-disable-line no-new-func
+    await window.openBook({ pages, startPage: 70, display: 'double', edgeMarks: true });
+    window.book.dispatchEvent(new CustomEvent('searchchange', { detail: {
+      query: 'paper', current: null,
+      hits: [{ page: 30, snippet: 'paper', rects: [] }, { page: 100, snippet: 'paper', rects: [] }, { page: 131, snippet: 'paper', rects: [] }],
+    } }));
+    await window.book.whenIdle();
+  }, paperPages.toString());
+  await expect(page.locator('[data-edge-mark="tab"]')).toHaveCount(6);
+  await expect(page.locator('#container')).toHaveScreenshot('edge-marks-tabs-and-ticks.png', { maxDiffPixelRatio: 0.005, threshold: 0.1 });
 });

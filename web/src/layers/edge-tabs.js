@@ -35,7 +35,9 @@ export function createEdgeTabs(root, { marks, placesOf, onActivate }) {
       width = TICK_HIT_CSS_PX;
     }
     const label = tab ? name : '';
-    const fontPx = Math.max(7, Math.min(11, place.height * 0.55));
+    // As large as lets the whole title fit across the tab (about 0.6 em a letter), from 8 to 11 px;
+    // a longer one ends in an ellipsis.
+    const fontPx = Math.max(8, Math.min(11, place.height * 0.5, (width - 4) / (0.62 * Math.max(1, name.length))));
     b.style.cssText = 'position:absolute;pointer-events:auto;cursor:pointer;margin:0;padding:0 2px;border:0;'
       + 'background:transparent;overflow:hidden;white-space:nowrap;'
       + `font:600 ${fontPx}px/1 system-ui,sans-serif;color:rgba(255,255,255,0.95);text-shadow:0 0 2px rgba(0,0,0,0.45);`
