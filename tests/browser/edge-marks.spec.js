@@ -169,6 +169,11 @@ test('browser: search hits are ticks on the blocks at their leaves, and go when 
     expect(tick.pixels.bottom - tick.pixels.top, 'head to tail').toBeGreaterThan(100);
   }
   await expect(page.getByRole('button', { name: /^Search hit: / })).toHaveCount(2);
+  // A click on a tick goes to its hit's page (riffling: it is far).
+  const turned = page.evaluate(() => new Promise((resolve) => window.book.addEventListener('turned', resolve, { once: true })));
+  await page.getByRole('button', { name: 'Search hit: later' }).click();
+  await turned;
+  expect(await page.evaluate(() => window.book.openPages)).toContain(150);
   await page.evaluate(() => window.book.dispatchEvent(new CustomEvent('searchchange', { detail: { query: '', hits: [], current: null } })));
   expect(await page.evaluate(readMarks)).toEqual([]);
   await expect(page.getByRole('button', { name: /^Search hit: / })).toHaveCount(0);
@@ -196,6 +201,27 @@ test('browser: without edgeMarks (the default without controls) nothing is drawn
   expect(colouredOutside).toBe(0);
   expect(await page.evaluate(() => window.book.options.edgeMarks)).toBe(false);
   await expect(page.locator('[data-edge-mark]')).toHaveCount(0);
+});
+
+test('browser: after a lost WebGL context is restored the tabs are drawn again at their leaves (readback)', async ({ page }) => {
+  await openWithOutline(page, { startPage: 40 });
+  const after = await page.evaluate(async (measure) => {
+    const marks = new Function(`return (${measure})`)();  // eslint-disable-line no-new-func
+    const view = window.book.surface;
+    const lose = view.canvas.getContext('webgl2').getExtension('WEBGL_lose_context');
+    const event = (name) => new Promise((resolve) => view.canvas.addEventListener(name, resolve, { once: true }));
+    const lost = event('webglcontextlost');
+    lose.loseContext();
+    await lost;
+    // Chrome allows a restore only once the lost event's dispatch has returned: any later task.
+    await new Promise((resolve) => setTimeout(resolve, 0));
+    const restored = event('webglcontextrestored');
+    lose.restoreContext();
+    await restored;  // the view made its GL objects again in its own listener, registered first
+    return marks();
+  }, readMarks.toString());
+  expect(after.map((m) => [m.page, m.turned])).toEqual([[6, true], [70, false], [120, false], [180, false]]);
+  expectTabsAtTheirLeaves(after);
 });
 
 // WebGL calls a resting frame adds for the marks, once their buffer is up: the depth test asked,
