@@ -168,15 +168,15 @@ test('browser: search hits are ticks on the blocks at their leaves, and go when 
     expect(Math.abs((tick.pixels.inner + tick.pixels.outer) / 2 - tick.depthFraction * tick.pixels.band), 'at its leaf (px)').toBeLessThanOrEqual(2.5);
     expect(tick.pixels.bottom - tick.pixels.top, 'head to tail').toBeGreaterThan(100);
   }
-  await expect(page.getByRole('button', { name: /^Search hit: / })).toHaveCount(2);
+  await expect(page.getByRole('button', { name: /^Search hit on page / })).toHaveCount(2);
   // A click on a tick goes to its hit's page (riffling: it is far).
   const turned = page.evaluate(() => new Promise((resolve) => window.book.addEventListener('turned', resolve, { once: true })));
-  await page.getByRole('button', { name: 'Search hit: later' }).click();
+  await page.getByRole('button', { name: 'Search hit on page 151: later' }).click();
   await turned;
   expect(await page.evaluate(() => window.book.openPages)).toContain(150);
   await page.evaluate(() => window.book.dispatchEvent(new CustomEvent('searchchange', { detail: { query: '', hits: [], current: null } })));
   expect(await page.evaluate(readMarks)).toEqual([]);
-  await expect(page.getByRole('button', { name: /^Search hit: / })).toHaveCount(0);
+  await expect(page.getByRole('button', { name: /^Search hit on page / })).toHaveCount(0);
 });
 
 test('browser: without edgeMarks (the default without controls) nothing is drawn outside the pages but the blocks, and no buttons are made (readback)', async ({ page }) => {

@@ -23,10 +23,10 @@ export function createEdgeTabs(root, { marks, placesOf, onActivate }) {
     const b = document.createElement('button');
     b.type = 'button';
     const tab = mark.kind === 'tab';
-    const name = mark.label || `Page ${mark.page + 1}`;
-    // Text only: titles come from PDFs and page authors.
-    b.title = tab ? name : `Search hit: ${name}`;
-    b.setAttribute('aria-label', b.title);
+    const name = tab ? mark.label || `Page ${mark.page + 1}` : `Search hit on page ${mark.page + 1}${mark.label ? `: ${mark.label}` : ''}`;
+    // Text only: titles and snippets come from PDFs and page authors.
+    b.title = name;
+    b.setAttribute('aria-label', name);
     b.dataset.edgeMark = mark.kind;
     b.dataset.page = String(mark.page);
     let { x, width } = place;
