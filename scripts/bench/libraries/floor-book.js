@@ -56,7 +56,7 @@ export const turnPages = (position, pageCount, display) => [
 export class PageImages {
   constructor(urls, width, height) {
     this.urls = urls;
-    this.size = { resizeWidth: Math.round(width), resizeHeight: Math.round(height), resizeQuality: 'medium' };
+    this.size = { resizeWidth: Math.round(width), resizeHeight: Math.round(height), resizeQuality: 'high' }  // as conecurl's page loader;
     this.decoded = new Map();  // page -> Promise<ImageBitmap>
   }
 
@@ -118,8 +118,11 @@ export async function floorBook({ urls, display, duration, width, height, surfac
   const restingPages = () => scene(position, pageCount, display).map((q) => q.page);
   const missing = (pages) => pages.filter((page) => !surface.has(page));
   const prepare = (pages) => Promise.all(missing(pages).map(async (page) => surface.prepare(page, await images.get(page), images)));
+  // The next two turns' pages, so a turn asked right after another does not wait for a decode.
   const decodeAhead = () => {
-    if (position < lastPosition(pageCount, display)) for (const page of missing(turnPages(position, pageCount, display))) images.get(page);
+    for (const at of [position, position + 1]) {
+      if (at < lastPosition(pageCount, display)) for (const page of missing(turnPages(at, pageCount, display))) images.get(page);
+    }
   };
   await prepare(restingPages());
   surface.draw(scene(position, pageCount, display), place);
