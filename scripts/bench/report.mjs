@@ -269,7 +269,8 @@ export function markdown({ meta, loadBytes, summary, ratios, targets, floorTarge
 // The short version docs/benchmark.md shows: one row per configuration and library, then the targets.
 const README_COLUMNS = [
   ['firstFrameMs', 'first frame ms', 0], ['turnSeconds', 's / turn', 2], ['frameMedianMs', 'frame median ms', 0],
-  ['frameP95Ms', 'p95 ms', 0], ['maxOverMedian', 'max / median', 1], ['mainThreadMsPerFrame', 'main ms / frame', 1],
+  ['frameP95Ms', 'p95 ms', 0], ['maxOverMedian', 'max / median', 1], ['frames', 'frames', 0], ['mainThreadMsPerFrame', 'main ms / frame', 1],
+  ['mainThreadMsTurns', 'main ms over the turns', 0],
   ['gpuCpuMsPerFrame', 'GPU ms / frame', 0], ['idleCpuPercent', 'idle CPU %', 1], ['jsHeapMB', 'JS heap MB', 1],
   ['rendererPssMB', 'renderer MB', 0],
 ];

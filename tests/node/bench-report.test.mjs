@@ -216,6 +216,8 @@ test('node: bench report and published tables show every floor target with its l
       assert.equal(row, `| ${target.figure} | ${floorLimitText(target)} | ${measured} | ${verdict} |`);
     }
   }
+  assert.match(published, /^\| double-20 \| floor-webgl \| /m, 'the published table has a row for each floor');
+  assert.match(published, /^\| double-20 \| floor-2d \| /m);
   // The per-configuration table has a column per contender and conecurl's ratio to each.
   const header = md.split('\n').find((line) => line.startsWith('| metric |'));
   assert.equal(header, '| metric | conecurl | page-flip | turn.js | WebGL floor | 2D floor | conecurl / page-flip | conecurl / turn.js '
