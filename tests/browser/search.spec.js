@@ -130,3 +130,199 @@ test('browser: search() finds exactly the pages whose pdf.js text holds the word
   expect(result.coffee.snippets[0]).toMatch(/Coffee In a Café/);
   expect(result['café'].snippets[0]).toMatch(/Café/);
 });
+
+test('browser: a hit\'s rectangles lie over the word as the PDF drew it (one per line, fractions of the page)', async ({ page }) => {
+  await openPdfBook(page);
+  const hits = await page.evaluate(() => window.book.search('zebra'));
+  // Page 1, line 0: "The zebra has stripes." — where pdf-lib put the word, in points.
+  const line = lineAt(1, 0);
+  const x = line.x + made.widthOf('The ', 'body');
+  const width = made.widthOf('zebra', 'body');
+  const hit = hits.filter((h) => h.page === 1)[1];  // the first is the heading's "Zebras"
+  expect(hit.rects).toHaveLength(1);
+  const [fx, fy, fw, fh] = hit.rects[0];
+  const [pw, ph] = PAGE_SIZE;
+  expect(Math.abs(fx * pw - x)).toBeLessThan(1.5);
+  expect(Math.abs(fw * pw - width)).toBeLessThan(2);
+  // The box spans the glyphs: from above the x-height to the baseline and below, about a line high.
+  expect(fy * ph).toBeLessThan(line.baseline - 0.6 * line.size);
+  expect((fy + fh) * ph).toBeGreaterThan(line.baseline);
+  expect(fh * ph).toBeLessThan(1.5 * line.size);
+  // The heading's hit on page 4 ("THE CAFE OF THE ZEBRA" is body text; "Chapter One: Zebras" a heading on page 1).
+  const heading = await page.evaluate(() => window.book.search('Chapter One'));
+  const h = lineAt(1, -1);
+  expect(Math.abs(heading[0].rects[0][0] * pw - h.x)).toBeLessThan(1.5);
+  expect(Math.abs(heading[0].rects[0][2] * pw - made.widthOf('Chapter One', 'heading'))).toBeLessThan(3);
+  // A phrase across two lines of text gives one rectangle per line.
+  const across = await page.evaluate(() => window.book.search('coffee comes'));
+  expect(across).toHaveLength(1);
+  expect(across[0].rects).toHaveLength(2);
+  expect(across[0].rects[1][1]).toBeGreaterThan(across[0].rects[0][1]);
+});
+
+test('browser: search() rejects with an AbortError when its signal aborts, and a later search still answers', async ({ page }) => {
+  await openPdfBook(page);
+  const result = await page.evaluate(async () => {
+    const names = [];
+    const before = new AbortController();
+    before.abort();
+    try { await window.book.search('zebra', { signal: before.signal }); } catch (error) { names.push(error.name); }
+    const during = new AbortController();
+    const running = window.book.search('zebra', { signal: during.signal });
+    during.abort();
+    try { await running; names.push('resolved'); } catch (error) { names.push(error.name); }
+    let typeError = '';
+    try { await window.book.search(42); } catch (error) { typeError = error.name; }
+    const after = await window.book.search('zebra');
+    return { names, typeError, after: after.map((h) => h.page) };
+  });
+  expect(result.names).toEqual(['AbortError', 'AbortError']);
+  expect(result.typeError).toBe('TypeError');
+  expect(result.after).toEqual([1, 1, 4]);  // page 1: the heading's "Zebras" and "The zebra"
+});
+
+/** Pixels in the drawing buffer inside `box` (CSS px of the canvas): how many are dark (text) and how many marked (yellow/orange). */
+function pixelsIn(page, box) {
+  return page.evaluate((b) => {
+    const view = window.book.surface;
+    view.drawNow();
+    const { width, height, data } = view.readPixels();  // bottom-up rows? readPixels gives top-down here
+    const ratio = width / window.book.element.querySelector('canvas').clientWidth;
+    let dark = 0;
+    let marked = 0;
+    let all = 0;
+    for (let y = Math.round(b.y * ratio); y < Math.round((b.y + b.height) * ratio); y++) {
+      for (let x = Math.round(b.x * ratio); x < Math.round((b.x + b.width) * ratio); x++) {
+        const i = (y * width + x) * 4;
+        const [r, g, bl] = [data[i], data[i + 1], data[i + 2]];
+        all += 1;
+        if (r < 110 && g < 110 && bl < 110) dark += 1;
+        if (r > 180 && g > 110 && bl < 120) marked += 1;
+      }
+    }
+    return { dark, marked, all, height };
+  }, box);
+}
+
+/** Yellow/orange pixels over the whole drawing buffer: the marks drawn in the pages' textures. */
+function markedPixels(page) {
+  return page.evaluate(() => {
+    const view = window.book.surface;
+    view.drawNow();
+    const { data } = view.readPixels();
+    let marked = 0;
+    for (let i = 0; i < data.length; i += 4) if (data[i] > 180 && data[i + 1] > 110 && data[i + 2] < 120) marked += 1;
+    return marked;
+  });
+}
+
+test('browser: showHit() turns to the hit and marks it: data-search-hit elements over the word, yellow in the page, searchchange; clearSearch() removes all', async ({ page }) => {
+  await openPdfBook(page);
+  const shown = await page.evaluate(async () => {
+    const events = [];
+    window.book.addEventListener('searchchange', (e) => events.push({ query: e.detail.query, hits: e.detail.hits.length, current: e.detail.current?.page ?? null }));
+    const hits = await window.book.search('cafe');
+    const turned = new Promise((resolve) => window.book.addEventListener('turned', resolve, { once: true }));
+    await window.book.showHit(hits[1]);  // page 4: a far page from the cover, so the book turns there
+    await turned;
+    await window.book.whenIdle();
+    const canvasBox = window.book.element.querySelector('canvas').getBoundingClientRect();
+    const marks = [...window.book.element.querySelectorAll('[data-search-hit]')].map((m) => {
+      const r = m.getBoundingClientRect();
+      return { page: Number(m.dataset.page), current: m.hasAttribute('data-current'),
+        box: { x: r.left - canvasBox.left, y: r.top - canvasBox.top, width: r.width, height: r.height } };
+    });
+    return { events, openPages: window.book.openPages, marks, hit: hits[1] };
+  });
+  expect(shown.openPages).toContain(4);
+  expect(shown.events).toEqual([{ query: 'cafe', hits: 3, current: null }, { query: 'cafe', hits: 3, current: 4 }]);
+  // Open pages 3 and 4: the hits on both are marked, the one shown is current.
+  expect(shown.marks.map((m) => [m.page, m.current]).sort()).toEqual([[3, false], [4, true]]);
+  const current = shown.marks.find((m) => m.current);
+  const inside = await pixelsIn(page, current.box);
+  expect(inside.dark / inside.all, 'the word\'s glyphs under the mark').toBeGreaterThan(0.05);
+  expect(inside.marked / inside.all, 'the mark drawn in the page').toBeGreaterThan(0.3);
+  // Just above the mark, the line's gap: no glyph there.
+  const above = await pixelsIn(page, { ...current.box, y: current.box.y - current.box.height * 0.9, height: current.box.height * 0.5 });
+  expect(above.dark).toBe(0);
+
+  const cleared = await page.evaluate(async () => {
+    const events = [];
+    window.book.addEventListener('searchchange', (e) => events.push(e.detail));
+    window.book.clearSearch();
+    await window.book.whenIdle();
+    return { events, marks: window.book.element.querySelectorAll('[data-search-hit]').length };
+  });
+  expect(cleared.events).toEqual([{ query: '', hits: [], current: null }]);
+  expect(cleared.marks).toBe(0);
+  expect(await markedPixels(page)).toBe(0);
+});
+
+test('browser: a marked hit, flat and while its page curls (drawn in its texture), matches its reference images', async ({ page }) => {
+  await openPdfBook(page);
+  await page.evaluate(async () => {
+    const hits = await window.book.search('zebra');
+    await window.book.showHit(hits.find((h) => h.page === 4));  // the right page of the spread 3-4
+    await window.book.whenIdle();
+  });
+  const flatMarked = await markedPixels(page);
+  expect(flatMarked).toBeGreaterThan(0);
+  await expect(page.locator('#container')).toHaveScreenshot('search-hit-flat.png', { maxDiffPixelRatio: 0.005, threshold: 0.1 });
+  const posed = await page.evaluate(() => {
+    const shown = window.book.previewTurn('forward', 0.12);  // page 4's leaf lifted and curling
+    return { shown, marks: window.book.element.querySelectorAll('[data-search-hit]').length };
+  });
+  expect(posed).toEqual({ shown: true, marks: 0 });  // the elements give way while the leaf moves...
+  const curlingMarked = await markedPixels(page);
+  expect(curlingMarked).toBeGreaterThan(flatMarked * 0.3);  // ...and the mark curls with the paper
+  await expect(page.locator('#container')).toHaveScreenshot('search-hit-curling.png', { maxDiffPixelRatio: 0.005, threshold: 0.1 });
+  // Cleared, the curling page shows no mark.
+  await page.evaluate(() => window.book.clearSearch());
+  await page.evaluate(() => window.book.whenIdle());
+  expect(await markedPixels(page)).toBe(0);
+});
+
+test('browser: search() over HTML pages finds their text, with rects from a Range over the word', async ({ page }) => {
+  await openReady(page, '/tests/browser/fixtures/html-fixture.html');
+  const result = await page.evaluate(async () => {
+    const make = (text) => {
+      const section = document.createElement('section');
+      section.className = 'html-page';
+      const p = document.createElement('p');
+      p.textContent = text;
+      section.append(p);
+      return section;
+    };
+    const pages = [make('Cover'), make('An Élan of words here.'), make('Nothing'), make('élan again, and ELAN')];
+    window.book = await window.Flipbook.create(window.container, { pages, display: 'double', duration: 300 });
+    await window.book.whenIdle();
+    const hits = await window.book.search('elan');
+    // Where the word is in its page, measured here with a Range over the text itself.
+    const p = pages[1].querySelector('p');
+    const range = document.createRange();
+    range.setStart(p.firstChild, 3);
+    range.setEnd(p.firstChild, 7);
+    const r = range.getBoundingClientRect();
+    const box = pages[1].parentElement.getBoundingClientRect();
+    return { hits, expected: [(r.left - box.left) / box.width, (r.top - box.top) / box.height, r.width / box.width, r.height / box.height] };
+  });
+  expect(result.hits.map((h) => h.page)).toEqual([1, 3, 3]);
+  const got = result.hits[0].rects[0];
+  result.expected.forEach((v, i) => expect(Math.abs(got[i] - v)).toBeLessThan(0.002));
+  expect(result.hits[0].snippet).toContain('Élan');
+});
+
+test('browser: the time of the first and of a repeated search on the test PDF (reported, not asserted)', async ({ page }) => {
+  await openPdfBook(page);
+  const times = await page.evaluate(async () => {
+    let t = performance.now();
+    const first = await window.book.search('zebra');
+    const firstMs = performance.now() - t;
+    t = performance.now();
+    const again = await window.book.search('coffee');
+    return { firstMs, againMs: performance.now() - t, pages: window.book.pageCount, first: first.length, again: again.length };
+  });
+  console.log(`search on the ${times.pages}-page test PDF: first ${times.firstMs.toFixed(1)} ms, repeated ${times.againMs.toFixed(1)} ms`);
+  expect(times.first).toBe(3);
+  expect(times.again).toBeGreaterThan(0);
+});
