@@ -25,8 +25,12 @@ export function foldText(text) {
   const starts = [];
   const ends = [];
   for (let i = 0; i < text.length;) {
-    const ch = String.fromCodePoint(text.codePointAt(i));
-    let f = /\s/u.test(ch) ? ' ' : foldChar(ch);
+    const code = text.charCodeAt(i);
+    const ch = code < 0xd800 || code > 0xdbff ? text[i] : String.fromCodePoint(text.codePointAt(i));
+    // ASCII, most of most text, without the normaliser: letters lower-cased, whitespace a space.
+    let f;
+    if (code < 128) f = code <= 32 ? ' ' : ch.toLowerCase();
+    else f = /\s/u.test(ch) ? ' ' : foldChar(ch);
     if (f === ' ' && folded.endsWith(' ')) f = '';
     for (let k = 0; k < f.length; k++) {
       folded += f[k];
@@ -43,9 +47,9 @@ export function foldQuery(text) {
   return foldText(text).folded.trim();
 }
 
-/** Original-text ranges [start, end) of every match of `query` (folded) in `text`, in order. */
-function matches(text, query) {
-  const { folded, starts, ends } = foldText(text);
+/** Original-text ranges [start, end) of every match of `query` (folded) in `text` (folded once: `fold`), in order. */
+function matches(text, query, fold = foldText(text)) {
+  const { folded, starts, ends } = fold;
   const found = [];
   for (let at = folded.indexOf(query); at >= 0; at = folded.indexOf(query, at + query.length)) {
     found.push([starts[at], ends[at + query.length - 1]]);
@@ -189,7 +193,8 @@ export class PdfTextIndex {
   /** The hits on page `index`: [{ page, snippet, rects }], in reading order. */
   async hits(index, query) {
     const record = await this.page(index);
-    return matches(record.text, query).map(([start, end]) => ({
+    record.fold ??= foldText(record.text);  // folded once, kept with the page's text for later searches
+    return matches(record.text, query, record.fold).map(([start, end]) => ({
       page: index, snippet: snippetOf(record.text, start, end), rects: pdfRects(record, start, end),
     }));
   }
