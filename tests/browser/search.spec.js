@@ -4,6 +4,7 @@
 // diacritics folded), aborts, and its hits' rectangles lie over the word's glyphs; showHit() turns
 // there and marks the hit, flat (data-search-hit elements) and curling (in the page's texture).
 import { test, expect } from '@playwright/test';
+import { existsSync, readFileSync } from 'node:fs';
 import { openReady } from './helpers.js';
 import { BOOKMARKS, PAGES, PAGE_SIZE, lineAt, makeDocumentPdf } from './document-pdf.js';
 
@@ -48,6 +49,51 @@ test('browser: outline() of a PDF is pdf.js\'s outline with each destination res
   }, entry.page);
   expect(shown).toContain(entry.page);
   expect(PAGES[entry.page].heading).toBe(entry.title);
+});
+
+// A typeset PDF found on the machine (Debian's shared-mime-info package ships its specification, made
+// by a real typesetter: embedded fonts, kerned text runs, bookmarks); the test is skipped where it is absent.
+const TYPESET_PDF = '/usr/share/doc/shared-mime-info/shared-mime-info-spec.pdf';
+
+test('browser: a typeset PDF found on the machine: outline() is pdf.js\'s outline, search() finds exactly the pages whose pdf.js text holds each word', async ({ page }) => {
+  test.skip(!existsSync(TYPESET_PDF), `${TYPESET_PDF} is not on this machine`);
+  await openReady(page, '/tests/browser/fixtures/pdf-fixture.html');
+  const result = await page.evaluate(async (base64) => {
+    const bytes = window.bytesFromBase64(base64);
+    window.book = await window.Flipbook.create(window.container, { pdf: bytes, display: 'double', duration: 300 });
+    const pdfjs = await import('pdfjs-dist');
+    const doc = await pdfjs.getDocument({ data: bytes.slice() }).promise;
+    const resolve = async (items) => {
+      const out = [];
+      for (const item of items ?? []) {
+        const dest = typeof item.dest === 'string' ? await doc.getDestination(item.dest) : item.dest;
+        const children = await resolve(item.items);
+        const page = Array.isArray(dest) ? await doc.getPageIndex(dest[0]) : children[0]?.page;
+        if (page !== undefined) out.push({ title: item.title, page, children });
+      }
+      return out;
+    };
+    const fold = (s) => s.normalize('NFKD').replace(/\p{M}/gu, '').toLowerCase().replace(/\s+/g, ' ');
+    const texts = [];
+    for (let i = 1; i <= doc.numPages; i++) {
+      const content = await (await doc.getPage(i)).getTextContent();
+      texts.push(fold(content.items.map((item) => (item.str ?? '') + (item.hasEOL ? ' ' : '')).join('')));
+    }
+    const words = {};
+    for (const word of ['magic', 'glob', 'Namespace', 'sub-class', 'freedesktop']) {
+      const hits = await window.book.search(word);
+      words[word] = { pages: [...new Set(hits.map((h) => h.page))], expected: texts.map((t, i) => (t.includes(fold(word)) ? i : -1)).filter((i) => i >= 0),
+        rectsOnPage: hits.every((h) => h.rects.length > 0 && h.rects.every(([x, y, w, hh]) => x >= 0 && y >= 0 && x + w <= 1.001 && y + hh <= 1.001)) };
+    }
+    return { outline: await window.book.outline(), reference: await resolve(await doc.getOutline()), words, pages: doc.numPages };
+  }, readFileSync(TYPESET_PDF).toString('base64'));
+  expect(result.outline).toEqual(result.reference);
+  for (const [word, r] of Object.entries(result.words)) {
+    expect(r.pages, word).toEqual(r.expected);
+    expect(r.rectsOnPage, word).toBe(true);
+  }
+  expect(result.words.magic.pages.length).toBeGreaterThan(0);
+  console.log(`typeset PDF: ${result.pages} pages, ${result.outline.length} top-level bookmarks, 'magic' on ${result.words.magic.pages.length} pages`);
 });
 
 test('browser: outline() of an image book is its checked `outline` option; a bad entry is a TypeError naming it', async ({ page }) => {
