@@ -353,8 +353,16 @@ test('browser: search() over HTML pages finds their text, with rects from a Rang
     range.setEnd(p.firstChild, 7);
     const r = range.getBoundingClientRect();
     const box = pages[1].parentElement.getBoundingClientRect();
-    return { hits, expected: [(r.left - box.left) / box.width, (r.top - box.top) / box.height, r.width / box.width, r.height / box.height] };
+    const expected = [(r.left - box.left) / box.width, (r.top - box.top) / box.height, r.width / box.width, r.height / box.height];
+    // Pages inserted: the hits' page numbers no longer hold, so the search ends.
+    await window.book.showHit(hits[1]);
+    const ended = new Promise((resolve) => window.book.addEventListener('searchchange', (e) => resolve(e.detail), { once: true }));
+    await window.book.insertPages(0, [make('A new first page')]);
+    const afterInsert = await ended;
+    return { hits, expected, afterInsert, marks: window.book.element.querySelectorAll('[data-search-hit]').length };
   });
+  expect(result.afterInsert).toEqual({ query: '', hits: [], current: null });
+  expect(result.marks).toBe(0);
   expect(result.hits.map((h) => h.page)).toEqual([1, 3, 3]);
   const got = result.hits[0].rects[0];
   result.expected.forEach((v, i) => expect(Math.abs(got[i] - v)).toBeLessThan(0.002));
@@ -449,4 +457,37 @@ test('browser: <cone-flipbook outline="..."> gives its book the outline from JSO
   expect(result.outline).toEqual([{ title: 'Second', page: 1, children: [] }]);
   expect(result.download).toBe('/files/x.pdf');
   expect(result.message).toMatch(/attribute 'outline' must be JSON/);
+});
+
+test('browser: on a StaticBook (2D canvas) with HTML pages, showHit() lays its data-search-hit mark over the word on the live page', async ({ page }) => {
+  await openReady(page, '/tests/browser/fixtures/html-fixture.html');
+  const result = await page.evaluate(async () => {
+    const make = (text) => {
+      const section = document.createElement('section');
+      section.className = 'html-page';
+      const p = document.createElement('p');
+      p.textContent = text;
+      section.append(p);
+      return section;
+    };
+    const pages = [make('Cover'), make('First'), make('Second'), make('Where the heron stands'), make('Last')];
+    window.book = await window.StaticBook.create(window.container, { pages, display: 'double' });
+    await window.book.whenIdle();
+    const hits = await window.book.search('HERON');
+    await window.book.showHit(hits[0]);
+    const mark = window.book.element.querySelector('[data-search-hit][data-current]');
+    const p = pages[3].querySelector('p');
+    const range = document.createRange();
+    range.setStart(p.firstChild, 10);
+    range.setEnd(p.firstChild, 15);
+    const word = range.getBoundingClientRect();
+    const box = mark.getBoundingClientRect();
+    return { pages: hits.map((h) => h.page), open: window.book.openPages, markPage: mark.dataset.page, kind: window.book.surface.kind,
+      word: [word.left, word.top, word.width, word.height], box: [box.left, box.top, box.width, box.height] };
+  });
+  expect(result.kind).toBe('canvas');
+  expect(result.pages).toEqual([3]);
+  expect(result.open).toContain(3);
+  expect(result.markPage).toBe('3');
+  result.box.forEach((v, i) => expect(Math.abs(v - result.word[i])).toBeLessThan(1.5));
 });

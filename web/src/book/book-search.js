@@ -114,14 +114,15 @@ export class BookSearch {
     if (had) this._changed();
   }
 
-  /** Pages were spliced: the hits' page numbers no longer hold. */
+  /**
+   * Pages were spliced: the hits' page numbers no longer hold, and marked images moved with their
+   * pages. The search ends and every kept page gets its clean image again.
+   */
   pagesChanged() {
+    const marked = this._marks.size > 0;
     this._marks.clear();
     this.clear();
-  }
-
-  remove() {
-    this._layer.remove();
+    if (marked) for (const page of this._book.store().residentPages) this._book.store().remark(page).catch(() => {});
   }
 
   _changed() {
