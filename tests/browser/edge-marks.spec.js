@@ -10,8 +10,7 @@ const OUTLINE = [
   { title: 'Preface', page: 6 }, { title: 'Methods', page: 70 }, { title: 'Results', page: 120 }, { title: 'Appendix', page: 180 },
 ];
 
-// Until docapi's outline() lands in this branch, the fixture's Flipbook is given an outline() (the
-// public method edge-marks.js reads) before the book is made.
+// A book with an outline (the `outline` option: outline() gives it, and edge-marks.js reads outline()).
 // `edgeMarks: null` leaves the option out.
 async function openWithOutline(page, { pages = 200, startPage = 0, outline = OUTLINE, edgeMarks = true } = {}) {
   // A large book, so a block of 80 leaves is some 40 pixels deep: a leaf's place shows to a few leaves.
@@ -19,10 +18,8 @@ async function openWithOutline(page, { pages = 200, startPage = 0, outline = OUT
   await openReady(page, FIXTURE);
   await page.evaluate(async (options) => {
     document.getElementById('container').style.cssText = 'width: 1240px; height: 820px';
-    const { outline: entries, ...rest } = options;
-    if (rest.edgeMarks === null) delete rest.edgeMarks;
-    window.Flipbook.prototype.outline = async () => entries;
-    await window.openBook({ ...rest, display: 'double', duration: 300 });
+    if (options.edgeMarks === null) delete options.edgeMarks;
+    await window.openBook({ ...options, display: 'double', duration: 300 });
   }, { pages, startPage, outline, edgeMarks });
 }
 
@@ -285,12 +282,12 @@ test('browser: a book with index tabs and search ticks on its edge matches its r
   await openReady(page, FIXTURE);
   await page.evaluate(async (pagesOf) => {
     document.getElementById('container').style.cssText = 'width: 960px; height: 620px';
-    window.Flipbook.prototype.outline = async () => [
-      { title: 'Introduction', page: 2 }, { title: 'History', page: 24 }, { title: 'Design', page: 56 },
-      { title: 'Materials', page: 88 }, { title: 'Methods', page: 120 }, { title: 'Index', page: 150 },
+    const outline = [
+      { title: 'Introduction', page: 2 }, { title: 'History', page: 24, children: [{ title: 'Early books', page: 30 }] },
+      { title: 'Design', page: 56 }, { title: 'Materials', page: 88 }, { title: 'Methods', page: 120 }, { title: 'Index', page: 150 },
     ];
     const pages = new Function(`return (${pagesOf})`)()(160);  // eslint-disable-line no-new-func
-    await window.openBook({ pages, startPage: 70, display: 'double', edgeMarks: true });
+    await window.openBook({ pages, startPage: 70, display: 'double', edgeMarks: true, outline });
     window.book.dispatchEvent(new CustomEvent('searchchange', { detail: {
       query: 'paper', current: null,
       hits: [{ page: 30, snippet: 'paper', rects: [] }, { page: 100, snippet: 'paper', rects: [] }, { page: 131, snippet: 'paper', rects: [] }],
