@@ -21,6 +21,8 @@ async function openWithOutline(page, { pages = 200, startPage = 0, outline = OUT
     if (options.edgeMarks === null) delete options.edgeMarks;
     await window.openBook({ ...options, display: 'double', duration: 300 });
   }, { pages, startPage, outline, edgeMarks });
+  // outline() is loaded on first use: the tabs come once it answers (their buttons say so).
+  if (edgeMarks) await expect(page.locator('[data-edge-mark="tab"]')).toHaveCount(outline.length);
 }
 
 // The drawn frame read back, and for each mark that shows: where the engine says it lies (buffer px),
@@ -174,6 +176,27 @@ test('browser: search hits are ticks on the blocks at their leaves, and go when 
   await page.evaluate(() => window.book.dispatchEvent(new CustomEvent('searchchange', { detail: { query: '', hits: [], current: null } })));
   expect(await page.evaluate(readMarks)).toEqual([]);
   await expect(page.getByRole('button', { name: /^Search hit on page / })).toHaveCount(0);
+});
+
+test('browser: a real search() of HTML pages puts a tick on the leaf of each page it finds, and clearSearch() takes them away', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  await page.evaluate(async () => {
+    const pages = Array.from({ length: 40 }, (_, i) => {
+      const div = document.createElement('div');
+      div.style.cssText = 'width: 320px; height: 400px; background: #fbf8f1; font: 16px sans-serif; padding: 20px; box-sizing: border-box';
+      div.textContent = i === 9 || i === 31 ? `Page ${i}: a needle in the hay.` : `Page ${i}: only hay here.`;
+      return div;
+    });
+    await window.openBook({ pages, startPage: 20, display: 'double', edgeMarks: true });
+  });
+  const hits = await page.evaluate(async () => (await window.book.search('needle')).map((hit) => hit.page));
+  expect(hits).toEqual([9, 31]);
+  await expect(page.locator('[data-edge-mark="tick"]')).toHaveCount(2);
+  const ticks = await page.evaluate(() => window.book.surface.edgeMarkPlaces().map((p) => [p.page, p.kind, p.turned]));
+  expect(ticks).toEqual([[9, 'tick', true], [31, 'tick', false]]);
+  await page.evaluate(() => window.book.clearSearch());
+  await expect(page.locator('[data-edge-mark="tick"]')).toHaveCount(0);
+  expect(await page.evaluate(() => window.book.surface.edgeMarkPlaces())).toEqual([]);
 });
 
 test('browser: without edgeMarks (the default without controls) nothing is drawn outside the pages but the blocks, and no buttons are made (readback)', async ({ page }) => {
