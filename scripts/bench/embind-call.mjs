@@ -13,8 +13,9 @@ const calls = Number(process.argv[2]) || 2_000_000;
 const book = engine.Book.create({ pageCount: 20, display: 'double' });
 const loop = new engine.FrameLoop(book, null);  // no renderer: tick(now, false) never draws
 const pointer = loop.$$.ptr;  // Embind's handle on the C++ object, for the C ABI call
-const cTick = engine._conecurl_frame_tick ?? engine.asm?.conecurl_frame_tick;
-const cQueued = engine._conecurl_frame_queued_turns ?? engine.asm?.conecurl_frame_queued_turns;
+// cwrap of numbers only hands back the wasm export itself: no conversion in the way.
+const cTick = engine.cwrap('conecurl_frame_tick', 'number', ['number', 'number', 'number']);
+const cQueued = engine.cwrap('conecurl_frame_queued_turns', 'number', ['number']);
 if (typeof cTick !== 'function' || typeof cQueued !== 'function') throw new Error('embind-call: the test build has no conecurl_frame_tick (rebuild: bash scripts/build-wasm.sh)');
 
 function measure(label, call) {

@@ -73,10 +73,10 @@ test('node: FlipbookOptions (flipbook.d.ts) has exactly the options Flipbook.cre
   assert.deepEqual(names(declared('book/flipbook.d.ts', 'FlipbookOptions')), sorted(CREATE_OPTIONS));
 });
 
-test('node: book.options is typed with a value for exactly the options that always have one (DEFAULTS, pages, turnArea); setOptions takes LIVE_OPTIONS', () => {
+test('node: book.options is typed with a value for exactly the options that always have one (DEFAULTS, pages, turnArea, edgeMarks); setOptions takes LIVE_OPTIONS', () => {
   const controller = declared('book/flipbook.d.ts', 'BookController');
   const always = properties(typeOfMember(controller, 'options')).filter((s) => !optional(s)).map((s) => s.name);
-  assert.deepEqual(sorted(always), sorted([...Object.keys(DEFAULTS), 'pages', 'turnArea']));
+  assert.deepEqual(sorted(always), sorted([...Object.keys(DEFAULTS), 'pages', 'turnArea', 'edgeMarks']));
   const [setOptions] = checker.getSignaturesOfType(typeOfMember(controller, 'setOptions'), SignatureKind.Call);
   assert.deepEqual(names(checker.getParameterType(setOptions, 0)), sorted(LIVE_OPTIONS));
 });

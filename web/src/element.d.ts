@@ -20,7 +20,9 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
  * schedule, center, hard-covers, lighting, shadows, gutter, hash, sound, muted, fallback
  * ("true"/"false"), thickness ("true"/"false"/a number), autoplay ("true"/"false"/the milliseconds
  * between turns), antialias ("auto"/"true"/"false"), turn-area ("page"/"edges"/"corners"/"none"),
- * label (the book's name for screen readers), load-window, remember-page, wasm-url, pdf, pdf-worker-src.
+ * label (the book's name for screen readers), load-window, remember-page, wasm-url, pdf, pdf-worker-src,
+ * outline (the table of contents as JSON; the property also keeps the array), download (a URL),
+ * edge-marks ("true"/"false").
  * lighting, shadows, gutter, thickness, display, sound and muted apply to the running book; a change of
  * any other builds a new book at the page shown.
  */
@@ -77,6 +79,13 @@ export class ConeFlipbookElement extends HTMLElement {
   fallback: FlipbookOptions['fallback'];
   wasmUrl: FlipbookOptions['wasmUrl'];
   pdfWorkerSrc: FlipbookOptions['pdfWorkerSrc'];
+  /** The table of contents: an array is kept as given; a string is its JSON (the outline attribute). */
+  get outline(): FlipbookOptions['outline'];
+  set outline(value: FlipbookOptions['outline'] | string | null);
+  /** The URL download() and the Download button fetch (the download attribute). */
+  download: FlipbookOptions['download'];
+  /** Tabs and ticks on the book's fore-edge (the edge-marks attribute); default: on with controls. */
+  edgeMarks: FlipbookOptions['edgeMarks'];
   /**
    * Waits for the book being built (the StaticBook fallback without WebGL2 or the engine); rejects
    * with its error, or at once if not in the document or destroyed.

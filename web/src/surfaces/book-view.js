@@ -107,10 +107,8 @@ export class BookView {
   setPageImage(page, source, options) { this._textures.set(page, source, options); }
 
   /**
-   * Like setPageImage, but while leaves move (or a turn is asked for) the upload is spread over the
-   * coming frames in bands of at most UPLOAD_BAND_BYTES (page-textures.js), so no frame of a turn
-   * carries a whole page. Resolves once uploaded; rejects with what
-   * setPageImage throws (or an Error if the view is destroyed first).
+   * Like setPageImage, but while leaves move (or a turn is asked for) in bands of at most UPLOAD_BAND_BYTES a
+   * frame (page-textures.js). Resolves once uploaded; rejects as setPageImage throws (or if destroyed first).
    */
   queuePageImage(page, source, options = {}) { return this._textures.queue(page, source, options); }
 
@@ -141,6 +139,32 @@ export class BookView {
     const toCss = this._size.cssPerPixel(width);
     return this.book.openPagePlaces(width, height).map(({ page, turned, x, y, width: w, height: h }) => (
       { page, turned, x: x * toCss, y: y * toCss, width: w * toCss, height: h * toCss }));
+  }
+
+  /**
+   * Marks on the page blocks' fore-edge, drawn by the engine at the leaves of their pages: `tab`s (index
+   * tabs in slots down the edge, in page order) and `tick`s (a thin line on the block). Replaces the
+   * marks before; [] removes them. A TypeError names a bad mark.
+   * @param {Array<{ page: number, kind: 'tab' | 'tick' }>} marks
+   */
+  setEdgeMarks(marks) {
+    const list = Array.isArray(marks) ? marks.map((mark) => ({ page: mark?.page, kind: mark?.kind })) : marks;
+    this.renderer.setEdgeMarks(list);  // checks each mark
+    this._edgeMarks = list;
+    this.requestRender();
+  }
+
+  /**
+   * Where the marks given to setEdgeMarks() lie now that show (on leaves at rest in a drawn block), in
+   * CSS pixels from the canvas's top-left, ticks first: { mark (its index), page, kind, turned, x, y,
+   * width, height }, the engine's camera as openPagePlaces() uses it.
+   */
+  edgeMarkPlaces() {
+    if (!this._edgeMarks?.length) return [];
+    const { width, height } = this.fitCanvas();
+    const toCss = this._size.cssPerPixel(width);
+    return this.book.edgeMarkPlaces(this._edgeMarks, width, height).map(({ x, y, width: w, height: h, ...mark }) => (
+      { ...mark, x: x * toCss, y: y * toCss, width: w * toCss, height: h * toCss }));
   }
 
   /**
