@@ -37,6 +37,12 @@ function countCalls() {
         // (target, level, internalformat, format, type, source): straight from a browser image.
         else if (args.length === 6 && args[5] && typeof args[5] === 'object') counts.texImageFromImage++;
       }
+      if (name === 'texSubImage2D') {
+        // A band of a page (page-textures.js, while leaves move): from a browser image too, never from memory.
+        const source = args[args.length - 1];
+        if (ArrayBuffer.isView(source)) counts.texImageFromBytes++;
+        else if (source && typeof source === 'object') counts.texImageFromImage++;
+      }
       return original.apply(this, args);
     };
   }
@@ -211,8 +217,8 @@ test('browser: pages that arrive together mid-turn are uploaded one band a frame
     open();
     const perFrame = [];
     const drawsPerFrame = [];
-    // Uploads of page pixels: whole (texImage2D from an image) or a band (texSubImage2D).
-    const uploads = () => window.__counts.texImageFromImage + (window.__counts.glByName.texSubImage2D || 0);
+    // Uploads of page pixels from images: whole (texImage2D) or a band (texSubImage2D).
+    const uploads = () => window.__counts.texImageFromImage;
     let last = uploads();
     let lastDraws = window.__counts.glByName.drawElements;
     // Every frame of the turn from here on (at least 12 on any machine: the engine's clock advances at
