@@ -1,6 +1,7 @@
 // Browser: what a book loads and when. A plain book of images fetches none of the optional parts (page
-// sound, autoplay, page memory, live pages, HTML pages, PDF, the 2D fallback): each is fetched only once
-// an option or a call asks for it (counted by the module URLs the page requests).
+// sound, autoplay, page memory, live pages, HTML pages, PDF, the 2D fallback, the document API): each is
+// fetched only once an option or a call asks for it (counted by the module URLs the page requests); and
+// page images reach the GPU outside the turn's frames or in bands (bytes counted per frame).
 import { test, expect } from '@playwright/test';
 import { openReady } from './helpers.js';
 
@@ -16,6 +17,12 @@ const OPTIONAL = {
   pdf: '/web/src/pages/pdf-pages.js',
   fallback: '/web/src/book/static-book.js',
   canvas: '/web/src/surfaces/canvas-surface.js',
+  // The document API, each part on first use.
+  outline: '/web/src/book/book-outline.js',
+  search: '/web/src/book/book-search.js',
+  textIndex: '/web/src/pages/text-index.js',
+  thumbnails: '/web/src/book/page-thumbnails.js',
+  document: '/web/src/book/book-document.js',
 };
 
 // Every module path under /web/src/ the page requests, from now on.
