@@ -20,7 +20,9 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
  * schedule, center, hard-covers, lighting, shadows, gutter, hash, sound, muted, fallback
  * ("true"/"false"), thickness ("true"/"false"/a number), autoplay ("true"/"false"/the milliseconds
  * between turns), antialias ("auto"/"true"/"false"), turn-area ("page"/"edges"/"corners"/"none"),
- * label (the book's name for screen readers), load-window, remember-page, wasm-url, pdf, pdf-worker-src.
+ * label (the book's name for screen readers), load-window, remember-page, wasm-url, pdf, pdf-worker-src,
+ * controls (bare or "true": the toolbar; its parts as an object through the property), labels (the
+ * toolbar's texts as a JSON object, or an object through the property).
  * lighting, shadows, gutter, thickness, display, sound and muted apply to the running book; a change of
  * any other builds a new book at the page shown.
  */
@@ -77,6 +79,12 @@ export class ConeFlipbookElement extends HTMLElement {
   fallback: FlipbookOptions['fallback'];
   wasmUrl: FlipbookOptions['wasmUrl'];
   pdfWorkerSrc: FlipbookOptions['pdfWorkerSrc'];
+  /** The toolbar: true or false set the attribute; `{ search: false }` is kept as given. */
+  get controls(): FlipbookOptions['controls'];
+  set controls(value: FlipbookOptions['controls'] | null);
+  /** The toolbar's texts: an object is kept as given; a string is written to the attribute (JSON). */
+  get labels(): FlipbookOptions['labels'];
+  set labels(value: FlipbookOptions['labels'] | string | null);
   /**
    * Waits for the book being built (the StaticBook fallback without WebGL2 or the engine); rejects
    * with its error, or at once if not in the document or destroyed.
