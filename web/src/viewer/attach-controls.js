@@ -13,6 +13,7 @@ import { searchPanel } from './search-panel.js';
 
 const ZOOM_STEP = 0.5;
 const NARROW = 600;         // CSS px: below, icons only and panels as sheets from the bottom
+const COMPACT = 800;        // CSS px: below, the panels' buttons show their icons only too
 const SHEET_SHARE = 0.62;   // of the book's height, a sheet's
 const PANEL_KINDS = { thumbnails: thumbnailsPanel, contents: contentsPanel, search: searchPanel };
 
@@ -70,12 +71,13 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
   function fitPanels() {
     const narrow = viewer.clientWidth < NARROW;
     viewer.toggleAttribute('data-narrow', narrow);
+    viewer.toggleAttribute('data-compact', viewer.clientWidth < COMPACT);
     const height = book.element.getBoundingClientRect().height;
     for (const panel of Object.values(panels)) panel.element.style.height = `${Math.round(narrow ? height * SHEET_SHARE : height)}px`;
   }
 
   const show = () => toolbar.show({
-    page: book.page,
+    pages: [...new Set([Math.min(...book.openPages) + 1, Math.max(...book.openPages) + 1])].join('\u2013'),
     pageCount: book.pageCount,
     atStart: book.page <= 0,
     atEnd: Math.max(...book.openPages) >= book.pageCount - 1,

@@ -1,6 +1,6 @@
 // Roving focus for a toolbar (the WAI-ARIA toolbar pattern): one Tab stop, the arrow keys move between
 // its controls, Home and End go to the first and last. In a text field the arrows move the caret, and
-// leave the field only from its start (Left) or end (Right).
+// leave the field from its start (Left), its end (Right), or while all its text is selected.
 
 /** Makes `toolbar`'s controls (`items()`: the focusable ones, in order) one Tab stop; returns the stop. */
 export function rovingFocus(toolbar, items) {
@@ -21,8 +21,10 @@ export function rovingFocus(toolbar, items) {
   const onKey = (event) => {
     if (event.defaultPrevented || event.altKey || event.ctrlKey || event.metaKey) return;
     const field = event.target instanceof HTMLInputElement ? event.target : null;
-    const atStart = !field || (field.selectionStart === 0 && field.selectionEnd === 0);
-    const atEnd = !field || (field.selectionStart === field.value.length && field.selectionEnd === field.value.length);
+    // A field whose whole text is selected (as it is once focused) lets the arrows move on too.
+    const all = field && field.selectionStart === 0 && field.selectionEnd === field.value.length;
+    const atStart = !field || all || (field.selectionStart === 0 && field.selectionEnd === 0);
+    const atEnd = !field || all || (field.selectionStart === field.value.length && field.selectionEnd === field.value.length);
     const step = { ArrowLeft: atStart ? -1 : 0, ArrowRight: atEnd ? 1 : 0, Home: field ? 0 : 'first', End: field ? 0 : 'last' }[event.key];
     if (!step) return;
     event.preventDefault();

@@ -20,10 +20,11 @@ export function thumbnailsPanel(book, panel, labels) {
   const failed = new Set();
   const wanted = [];            // pages waiting for a thumbnail, in order of asking
   let inFlight = 0;
-  let aspect = pageAspect(book);
+  let aspect = null;             // the pages' height over width, read when first shown
   let frame = 0;
 
   const geometry = () => {
+    aspect ??= pageAspect(book);
     const width = panel.body.clientWidth;
     const columns = Math.max(1, Math.floor((width - GAP) / (THUMB_WIDTH + 8 + GAP)));
     const cell = (width - GAP) / columns;
@@ -122,7 +123,7 @@ export function thumbnailsPanel(book, panel, labels) {
     failed.clear();
     for (const item of items.values()) item.remove();
     items.clear();
-    aspect = pageAspect(book);
+    aspect = null;
     schedule();
   };
   let removed = false;
@@ -156,6 +157,6 @@ export function thumbnailsPanel(book, panel, labels) {
 
 // Height over width of a page, from where the open pages lie (1.414 before the book has any).
 function pageAspect(book) {
-  const place = book.openPagePlaces?.().find((p) => p.page >= 0 && p.width > 0);
+  const place = book.openPagePlaces().find((p) => p.page >= 0 && p.width > 0);
   return place ? place.height / place.width : Math.SQRT2;
 }

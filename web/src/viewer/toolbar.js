@@ -77,7 +77,10 @@ export function createToolbar(labels, parts, actions) {
     element,
     buttons,
     pageField,
-    /** Shows the book's state: { page (from 0), pageCount, atStart, atEnd, zoom, maxZoom, fullscreen }. */
+    /**
+     * Shows the book's state: { pages (the open pages' numbers from 1: "6" or "6–7"), pageCount, atStart,
+     * atEnd, zoom, maxZoom, fullscreen }.
+     */
     show(state) {
       const disable = (button, off) => button?.setAttribute('aria-disabled', String(off));
       disable(buttons.previous, state.atStart);
@@ -85,7 +88,7 @@ export function createToolbar(labels, parts, actions) {
       disable(buttons.zoomOut, state.zoom <= 1);
       disable(buttons.zoomIn, state.zoom >= state.maxZoom);
       buttons.fullscreen?.setAttribute('aria-pressed', String(state.fullscreen));
-      showPage?.(fill(labels.pageOf, { n: state.page + 1, total: state.pageCount }), state.pageCount);
+      showPage?.(fill(labels.pageOf, { n: state.pages, total: state.pageCount }), state.pageCount);
       focus.refresh();
     },
     remove() {

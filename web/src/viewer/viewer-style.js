@@ -29,10 +29,10 @@ const VIEWER_CSS = `
 }
 .conecurl-icon { flex: none; fill: none; stroke: currentColor; stroke-width: 2; stroke-linecap: round; stroke-linejoin: round; }
 .conecurl-page-field {
-  flex: none; width: 8.5em; height: 30px; padding: 0 6px; box-sizing: border-box; text-align: center;
+  flex: none; width: 7.5em; height: 30px; padding: 0 6px; box-sizing: border-box; text-align: center;
   background: var(--conecurl-field-bg, rgba(255, 255, 255, 0.12)) !important;
 }
-.conecurl-hidden-text, .conecurl-viewer[data-narrow] .conecurl-text {
+.conecurl-hidden-text, .conecurl-viewer:is([data-narrow], [data-compact]) .conecurl-text {
   position: absolute; width: 1px; height: 1px; margin: -1px; padding: 0; border: 0; overflow: hidden;
   clip: rect(0 0 0 0); clip-path: inset(50%); white-space: nowrap;
 }
