@@ -36,7 +36,10 @@ const VIEWER_CSS = `
   position: absolute; width: 1px; height: 1px; margin: -1px; padding: 0; border: 0; overflow: hidden;
   clip: rect(0 0 0 0); clip-path: inset(50%); white-space: nowrap;
 }
-.conecurl-viewer[data-narrow] .conecurl-page-field { width: 6.5em; }
+.conecurl-viewer[data-narrow] .conecurl-toolbar { gap: 0; padding: 0 4px; }
+.conecurl-viewer[data-narrow] .conecurl-toolbar button { min-width: 32px; padding: 0 4px; }
+.conecurl-viewer[data-narrow] .conecurl-gap { min-width: 0; }
+.conecurl-viewer[data-narrow] .conecurl-page-field { width: 5.5em; padding: 0 2px; }
 .conecurl-panel {
   position: absolute; left: 0; bottom: 100%; z-index: 2; display: flex; flex-direction: column;
   width: var(--conecurl-panel-width, 300px); max-width: 100%; box-sizing: border-box;
@@ -49,7 +52,7 @@ const VIEWER_CSS = `
 .conecurl-panel-head h2 { flex: 1; margin: 0; font-size: 1em; font-weight: 600; }
 .conecurl-panel-body { flex: 1; min-height: 0; overflow: auto; position: relative; }
 .conecurl-panel button:hover { background: var(--conecurl-panel-hover, rgba(0, 0, 0, 0.07)); }
-.conecurl-panel :is(button, input):focus-visible { outline-color: var(--conecurl-accent, #3d7be0); }
+.conecurl-viewer .conecurl-panel :is(button, input, [tabindex]):focus-visible { outline-color: var(--conecurl-accent, #3d7be0); }
 .conecurl-thumbs { position: relative; }
 .conecurl-thumb {
   position: absolute; flex-direction: column; height: auto !important; padding: 4px !important; gap: 4px !important;
