@@ -196,3 +196,135 @@ test('browser: without controls the viewer\'s module is never loaded', async ({ 
   await expect(page.getByRole('toolbar')).toHaveCount(0);
   expect(loaded.filter((url) => !/viewer-(options|labels)\.js$/.test(url))).toEqual([]);
 });
+
+test('browser: the Thumbnails panel of a 1000-page book holds only the rows near its scroll position (counted), marks the open pages, and a press riffles there', async ({ page }, testInfo) => {
+  await openViewer(page, 1000, { controls: true });
+  // From the press to the first thumbnail image in the panel (reported, not asserted).
+  const firstThumbnailMs = await page.evaluate(() => new Promise((resolve) => {
+    const viewer = document.querySelector('.conecurl-viewer');
+    const start = performance.now();
+    const seen = new MutationObserver(() => {
+      if (viewer.querySelector('.conecurl-panel canvas, .conecurl-panel img')) {
+        seen.disconnect();
+        resolve(performance.now() - start);
+      }
+    });
+    seen.observe(viewer, { childList: true, subtree: true });
+    viewer.querySelector('[data-control="thumbnails"]').click();
+  }));
+  testInfo.annotations.push({ type: 'time to first thumbnails (1000 pages)', description: `${firstThumbnailMs.toFixed(0)} ms` });
+  console.log(`viewer: first thumbnails of a 1000-page book after ${firstThumbnailMs.toFixed(0)} ms`);
+  const panel = page.getByRole('dialog', { name: 'Thumbnails' });
+  await expect(panel.getByRole('button', { name: 'Page 1', exact: true })).toHaveAttribute('aria-current', 'page');
+  const held = () => page.evaluate(() => {
+    const panel = document.querySelector('.conecurl-panel:not([hidden])');
+    return { images: panel.querySelectorAll('img, canvas').length, buttons: panel.querySelectorAll('.conecurl-thumb').length };
+  });
+  // Thumbnails are drawn as they come into view: wait for those in view, then count.
+  await expect(panel.locator('canvas').first()).toBeVisible();
+  const atTop = await held();
+  expect(atTop.buttons).toBeGreaterThan(0);
+  expect(atTop.buttons).toBeLessThan(150);
+  expect(atTop.images).toBeLessThan(150);
+  // Scrolled to the middle: the rows there are made, those at the top are gone.
+  await panel.locator('.conecurl-panel-body').evaluate((body) => { body.scrollTop = body.scrollHeight / 2; });
+  const middle = panel.getByRole('button', { name: 'Page 500', exact: true });
+  await expect(middle).toBeVisible();
+  await expect(middle.locator('canvas')).toHaveCount(1);
+  await expect(panel.getByRole('button', { name: 'Page 1', exact: true })).toHaveCount(0);
+  const inMiddle = await held();
+  expect(inMiddle.buttons).toBeLessThan(150);
+  expect(inMiddle.images).toBeLessThan(150);
+  testInfo.annotations.push({ type: 'elements held (1000 pages)', description: `top: ${JSON.stringify(atTop)}, middle: ${JSON.stringify(inMiddle)}` });
+  console.log(`viewer: thumbnails panel holds ${JSON.stringify(atTop)} at the top, ${JSON.stringify(inMiddle)} in the middle`);
+  // A press far away riffles there (one turnstart with riffle: true), and the mark follows.
+  const riffled = page.evaluate(() => new Promise((resolve) => {
+    window.book.addEventListener('turnstart', (event) => resolve(Boolean(event.detail.riffle)), { once: true });
+  }));
+  await turnedAfter(page, () => middle.click());
+  expect(await riffled).toBe(true);
+  expect(await openPages(page)).toContain(499);
+  await expect(middle).toHaveAttribute('aria-current', 'page');
+});
+
+const OUTLINE = [
+  { title: 'Cover', page: 0 },
+  { title: 'Part one', page: 3, children: [{ title: 'Chapter A', page: 5 }, { title: 'Chapter B', page: 8 }] },
+  { title: 'Part two', page: 10 },
+];
+
+test('browser: the Contents panel shows outline() as a tree of buttons named by their titles; an entry turns there and the section being read is marked', async ({ page }) => {
+  await openViewer(page, 12, { controls: true, outline: OUTLINE });
+  await page.getByRole('button', { name: 'Contents', exact: true }).click();
+  const panel = page.getByRole('dialog', { name: 'Contents' });
+  for (const title of ['Cover', 'Part one', 'Chapter A', 'Chapter B', 'Part two']) {
+    await expect(panel.getByRole('button', { name: title, exact: true })).toHaveCount(1);
+  }
+  // Nested: the chapters are in a list inside Part one's item.
+  await expect(panel.locator('li:has(> button:has-text("Part one")) ul button')).toHaveCount(2);
+  await expect(panel.getByRole('button', { name: 'Cover' })).toHaveAttribute('aria-current', 'location');
+  await turnedAfter(page, () => panel.getByRole('button', { name: 'Chapter B' }).click());
+  expect(await openPages(page)).toContain(8);
+  await expect(panel.getByRole('button', { name: 'Chapter B' })).toHaveAttribute('aria-current', 'location');
+  await expect(panel.locator('[aria-current]')).toHaveCount(1);
+  // Turning by other means moves the mark as well.
+  await turnedAfter(page, () => page.evaluate(() => window.book.flip(3)));
+  await expect(panel.getByRole('button', { name: 'Part one' })).toHaveAttribute('aria-current', 'location');
+});
+
+test('browser: axe-core finds no serious or critical violation with the toolbar, and with each panel open', async ({ page }) => {
+  await openViewer(page, 40, { controls: { download: true, print: true }, outline: OUTLINE });
+  expect(await seriousViolations(page), 'toolbar').toEqual([]);
+  for (const name of ['Thumbnails', 'Contents', 'Search']) {
+    await page.getByRole('button', { name, exact: true }).click();
+    const panel = page.getByRole('dialog', { name });
+    await expect(panel).toBeVisible();
+    if (name === 'Thumbnails') await expect(panel.locator('canvas').first()).toBeVisible();
+    if (name === 'Contents') await expect(panel.getByRole('button', { name: 'Cover' })).toBeVisible();
+    expect(await seriousViolations(page), `${name} panel`).toEqual([]);
+  }
+});
+
+test('browser: the toolbar, reference image (toolbar-800.png: every part, a wide book)', async ({ page }) => {
+  await page.setViewportSize({ width: 900, height: 600 });
+  await page.evaluate(() => { document.getElementById('container').style.width = '860px'; });
+  await openViewer(page, 12, { controls: { download: true, print: true } });
+  await page.evaluate(() => document.activeElement?.blur());
+  await expect(page.locator('.conecurl-viewer')).toHaveScreenshot('viewer-toolbar.png', { maxDiffPixelRatio: 0.005, threshold: 0.1 });
+});
+
+test.describe('a 390x844 phone', () => {
+  // Not isMobile: the fixture has no viewport meta, so a mobile browser would lay it out 980 px wide.
+  test.use({ viewport: { width: 390, height: 844 }, deviceScaleFactor: 1, hasTouch: true });
+
+  test('browser: on a phone\'s width the toolbar fits, shows icons only (names kept), and a panel opens as a sheet from the bottom', async ({ page }, testInfo) => {
+    await page.evaluate(() => Object.assign(document.getElementById('container').style, { width: '100%', height: '600px' }));
+    await openViewer(page, 12, { controls: true });
+    const toolbar = page.getByRole('toolbar');
+    const fit = await toolbar.evaluate((element) => {
+      const box = element.getBoundingClientRect();
+      const controls = [...element.querySelectorAll('button, input')].map((c) => c.getBoundingClientRect());
+      const texts = [...element.querySelectorAll('button span')].map((span) => span.getBoundingClientRect().width);
+      return {
+        overflow: element.scrollWidth - element.clientWidth,
+        right: box.right,
+        allInside: controls.every((c) => c.left >= box.left - 0.5 && c.right <= box.right + 0.5),
+        widestText: Math.max(...texts),
+        icons: element.querySelectorAll('button svg').length,
+        buttons: element.querySelectorAll('button').length,
+      };
+    });
+    expect(fit.overflow).toBe(0);
+    expect(fit.right).toBeLessThanOrEqual(390);
+    expect(fit.allInside).toBe(true);
+    expect(fit.widestText).toBeLessThanOrEqual(1);  // the texts are only for screen readers
+    expect(fit.icons).toBe(fit.buttons);
+    await expect(toolbar.getByRole('button', { name: 'Thumbnails' })).toHaveCount(1);
+    await toolbar.getByRole('button', { name: 'Search', exact: true }).click();
+    const sheet = await page.getByRole('dialog', { name: 'Search' }).evaluate((element) => element.getBoundingClientRect().toJSON());
+    const bar = await toolbar.evaluate((element) => element.getBoundingClientRect().toJSON());
+    expect(sheet.width).toBeCloseTo(bar.width, 0);
+    expect(sheet.bottom).toBeCloseTo(bar.top, 0);
+    await page.screenshot({ path: testInfo.outputPath('phone.png') });  // looked at by hand
+  });
+});
