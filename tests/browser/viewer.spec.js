@@ -257,6 +257,12 @@ test('browser: the Contents panel shows outline() as a tree of buttons named by 
   await openViewer(page, 12, { controls: true, outline: OUTLINE });
   await page.getByRole('button', { name: 'Contents', exact: true }).click();
   const panel = page.getByRole('dialog', { name: 'Contents' });
+  // The panel lies beside the book, not over it: the book fits itself to the rest of its box.
+  await page.waitForFunction(() => {
+    const panel = document.querySelector('.conecurl-panel:not([hidden])').getBoundingClientRect();
+    const canvas = window.book.surface.canvas.getBoundingClientRect();
+    return canvas.left >= panel.right - 0.5 && Math.abs(canvas.width - window.book.surface.canvas.clientWidth) < 1;
+  });
   for (const title of ['Cover', 'Part one', 'Chapter A', 'Chapter B', 'Part two']) {
     await expect(panel.getByRole('button', { name: title, exact: true })).toHaveCount(1);
   }
@@ -285,7 +291,7 @@ test('browser: axe-core finds no serious or critical violation with the toolbar,
   }
 });
 
-test('browser: the toolbar, reference image (toolbar-800.png: every part, a wide book)', async ({ page }) => {
+test('browser: the toolbar, reference image (viewer-toolbar.png: every part, on a book 860 px wide)', async ({ page }) => {
   await page.setViewportSize({ width: 900, height: 600 });
   await page.evaluate(() => { document.getElementById('container').style.width = '860px'; });
   await openViewer(page, 12, { controls: { download: true, print: true } });
@@ -325,6 +331,8 @@ test.describe('a 390x844 phone', () => {
     const bar = await toolbar.evaluate((element) => element.getBoundingClientRect().toJSON());
     expect(sheet.width).toBeCloseTo(bar.width, 0);
     expect(sheet.bottom).toBeCloseTo(bar.top, 0);
+    // The book takes what is above the sheet.
+    await page.waitForFunction((top) => window.book.surface.canvas.getBoundingClientRect().bottom <= top + 0.5, sheet.top);
     await page.screenshot({ path: testInfo.outputPath('phone.png') });  // looked at by hand
   });
 });

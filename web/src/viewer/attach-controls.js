@@ -63,18 +63,33 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
       return;
     }
     for (const other of Object.values(panels)) other.close();
-    fitPanels();
     panel.open();
   }
 
-  // Narrow books: icons only, sheets from the bottom; the panels as tall as the book (a sheet, part of it).
-  function fitPanels() {
-    const narrow = viewer.clientWidth < NARROW;
+  // The book and the open panel side by side: on a wide book the panel takes the left of the book's
+  // box and the book the rest; on a narrow one (icons only) the panel is a sheet over the toolbar and
+  // the book takes what is above it. The book fits itself to its new box (its size watch).
+  const given = book.element.style;
+  const bookStyle = { height: given.height, width: given.width, marginLeft: given.marginLeft, marginBottom: given.marginBottom };
+  const BOOK_HEIGHT = 'calc(100% - var(--conecurl-toolbar-height, 44px))';
+  function layout() {
+    const width = viewer.clientWidth;
+    const narrow = width < NARROW;
     viewer.toggleAttribute('data-narrow', narrow);
-    viewer.toggleAttribute('data-compact', viewer.clientWidth < COMPACT);
-    const height = book.element.getBoundingClientRect().height;
-    for (const panel of Object.values(panels)) panel.element.style.height = `${Math.round(narrow ? height * SHEET_SHARE : height)}px`;
+    viewer.toggleAttribute('data-compact', width < COMPACT);
+    const space = container.getBoundingClientRect().height - viewer.getBoundingClientRect().height;
+    const sheet = Math.round(space * SHEET_SHARE);
+    for (const panel of Object.values(panels)) panel.element.style.height = `${Math.max(0, narrow ? sheet : space)}px`;
+    const open = Object.values(panels).find((panel) => panel.isOpen());
+    const beside = open && !narrow ? open.element.getBoundingClientRect().width : 0;
+    Object.assign(book.element.style, {
+      height: open && narrow ? `calc(100% - var(--conecurl-toolbar-height, 44px) - ${sheet}px)` : BOOK_HEIGHT,
+      width: beside ? `calc(100% - ${beside}px)` : bookStyle.width,
+      marginLeft: beside ? `${beside}px` : bookStyle.marginLeft,
+      marginBottom: open && narrow ? `${sheet}px` : bookStyle.marginBottom,  // the toolbar stays where it was
+    });
   }
+  for (const panel of Object.values(panels)) panel.onToggle(layout);
 
   const show = () => toolbar.show({
     pages: [...new Set([Math.min(...book.openPages) + 1, Math.max(...book.openPages) + 1])].join('\u2013'),
@@ -86,7 +101,7 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
     fullscreen: Boolean(book.fullscreen),
   });
   const resized = () => {
-    fitPanels();
+    layout();
     show();
   };
   // Escape anywhere in the viewer closes the open panel and gives focus back to its button.
@@ -101,11 +116,9 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
   const events = { turned: show, pageschange: show, zoom: show, fullscreenchange: show, ready: show, resize: resized };
   for (const [type, listener] of Object.entries(events)) book.addEventListener(type, listener);
 
-  // The book's box gives the toolbar its height: the book fits itself to the rest (its size watch).
-  const bookHeight = book.element.style.height;
-  book.element.style.height = 'calc(100% - var(--conecurl-toolbar-height, 44px))';
+  // The book's box gives the toolbar its height: the book fits itself to the rest.
   container.append(viewer);
-  fitPanels();
+  layout();
   show();
 
   return {
@@ -123,7 +136,7 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
       toolbar.remove();
       viewer.remove();
       removeStyle();
-      book.element.style.height = bookHeight;
+      Object.assign(book.element.style, bookStyle);
     },
   };
 }
