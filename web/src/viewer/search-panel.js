@@ -89,14 +89,36 @@ export function searchPanel(book, panel, labels) {
 
   function choose(i) {
     if (hits.length === 0) return;
+    mark(i);
+    book.showHit(hits[current]).catch(() => {});
+  }
+
+  // Hit `i` is the current one: marked in the list, announced.
+  function mark(i) {
     current = (i + hits.length) % hits.length;
     results.querySelector('[aria-current]')?.removeAttribute('aria-current');
     const button = results.children[current]?.firstElementChild;
     button?.setAttribute('aria-current', 'true');
     button?.scrollIntoView({ block: 'nearest' });
     announce(fill(labels.hitOf, { n: current + 1, total: hits.length }));
-    book.showHit(hits[current]).catch(() => {});
   }
+
+  // The book says what its search is (searchchange): a hit shown from elsewhere (a tick on the book's
+  // edge) becomes the current one here; a search ended elsewhere empties the panel.
+  const followBook = (event) => {
+    const { query: shown, current: hit } = event.detail;
+    if (shown === '' && query !== '') {
+      controller?.abort();
+      query = '';
+      hits = [];
+      current = -1;
+      results.replaceChildren();
+      announce('');
+    } else if (hit && hits.indexOf(hit) >= 0 && hits.indexOf(hit) !== current) {
+      mark(hits.indexOf(hit));
+    }
+  };
+  book.addEventListener('searchchange', followBook);
 
   function announce(text) {
     if (status.textContent !== text) status.textContent = text;
@@ -130,6 +152,7 @@ export function searchPanel(book, panel, labels) {
     remove() {
       removed = true;
       controller?.abort();
+      book.removeEventListener('searchchange', followBook);
     },
   };
 }
