@@ -84,6 +84,17 @@ test('browser: the Search panel finds the hits, steps through them (Enter, Shift
   await results.nth(last).click();
   await expect(status).toHaveText(`${last + 1} of ${expected.length}`);
   await page.waitForFunction((want) => !window.book.animating && window.book.openPages.includes(want), expected[last].page);
+  // A hit shown by other means (a tick on the book's edge) becomes the current one here.
+  await page.evaluate(async () => {
+    const hits = await window.book.search('zebra');
+    window.book.showHit(hits[1]);
+  });
+  await expect(status).toHaveText(`2 of ${expected.length}`);
+  await expect(results.nth(1)).toHaveAttribute('aria-current', 'true');
+  // A search ended by other means empties the panel.
+  await page.evaluate(() => window.book.clearSearch());
+  await expect(results).toHaveCount(0);
+  await expect(status).toHaveText('');
   // Nothing found: said so.
   await field.fill('okapi');
   await field.press('Enter');

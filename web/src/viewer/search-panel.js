@@ -103,10 +103,10 @@ export function searchPanel(book, panel, labels) {
     announce(fill(labels.hitOf, { n: current + 1, total: hits.length }));
   }
 
-  // The book says what its search is (searchchange): a hit shown from elsewhere (a tick on the book's
-  // edge) becomes the current one here; a search ended elsewhere empties the panel.
+  // The book says what its search is (searchchange): a search run or ended elsewhere shows here, and a
+  // hit shown elsewhere (a tick on the book's edge) becomes the current one.
   const followBook = (event) => {
-    const { query: shown, current: hit } = event.detail;
+    const { query: shown, hits: now, current: hit } = event.detail;
     if (shown === '' && query !== '') {
       controller?.abort();
       query = '';
@@ -114,9 +114,18 @@ export function searchPanel(book, panel, labels) {
       current = -1;
       results.replaceChildren();
       announce('');
-    } else if (hit && hits.indexOf(hit) >= 0 && hits.indexOf(hit) !== current) {
-      mark(hits.indexOf(hit));
+      return;
     }
+    if (shown !== '' && !(now.length === hits.length && now.every((h, i) => h === hits[i]))) {
+      query = shown;
+      field.value = shown;
+      hits = now;
+      current = -1;
+      results.replaceChildren(...hits.map((h, i) => resultItem(h, i)));
+      announce(hits.length === 0 ? labels.noHits : '');
+    }
+    const at = hit ? hits.indexOf(hit) : -1;
+    if (at >= 0 && at !== current) mark(at);
   };
   book.addEventListener('searchchange', followBook);
 
