@@ -164,3 +164,16 @@ test('browser: <cone-flipbook controls> shows the toolbar; the controls property
   });
   await expect(page.getByRole('toolbar')).toHaveCount(0);
 });
+
+test('browser: the demo\'s PDF book has the toolbar, and its Contents panel lists the brochure\'s bookmarks; one turns there', async ({ page }) => {
+  await openReady(page, '/web/demo/');
+  await page.selectOption('#source', 'pdf');
+  await expect(page.locator('#where')).toHaveText('Page 1 of 12', { timeout: 30_000 });
+  await page.getByRole('toolbar', { name: 'Book controls' }).getByRole('button', { name: 'Contents' }).click();
+  const panel = page.getByRole('dialog', { name: 'Contents' });
+  await expect(panel.locator('.conecurl-tree button')).toHaveCount(12);
+  await panel.getByRole('button', { name: 'Light on paper' }).click();
+  // Page 8 lies open (alone or in a spread: the open panel leaves the book less width, display 'auto').
+  await page.waitForFunction(() => !window.conecurlDemo.book.animating && window.conecurlDemo.book.openPages.includes(7));
+  await expect(panel.getByRole('button', { name: 'Light on paper' })).toHaveAttribute('aria-current', 'location');
+});
