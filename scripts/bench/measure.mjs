@@ -15,10 +15,11 @@ const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
  * @param {string} o.url          harness URL with the query for this library and configuration
  * @param {{width: number, height: number}} o.viewport
  * @param {number} o.turns        turns to make
+ * @param {number} o.askedTurnMs  the turn duration the page was asked for (returned with the result)
  * @param {number} o.turnTimeoutMs
  * @param {number} o.idleMs       how long idle CPU is sampled
  */
-export async function measureOnce({ url, viewport, turns, turnTimeoutMs, idleMs }) {
+export async function measureOnce({ url, viewport, turns, askedTurnMs, turnTimeoutMs, idleMs }) {
   const browser = await chromium.launch(chromiumLaunchOptions());
   const errors = [];
   try {
@@ -77,6 +78,11 @@ export async function measureOnce({ url, viewport, turns, turnTimeoutMs, idleMs 
     const rendererPss = pssBytes(rendererPid);
     const gpuPss = gpuPids.reduce((sum, pid) => sum + (pssBytes(pid) || 0), 0);
     const stats = await page.evaluate(() => window.bench.stats());
+    // The wasm files the page fetched (URL, decoded bytes): the runner checks conecurl and a baseline each
+    // loaded its own.
+    const wasm = await page.evaluate(() => performance.getEntriesByType('resource')
+      .filter((entry) => new URL(entry.name).pathname.endsWith('.wasm'))
+      .map((entry) => ({ url: entry.name, bytes: entry.decodedBodySize })));
 
     return {
       readyMs,
@@ -84,6 +90,7 @@ export async function measureOnce({ url, viewport, turns, turnTimeoutMs, idleMs 
       settleMs,
       turns: turnTimes.map((t) => ({ start: t.start - stamps[0], end: t.end - stamps[0] })),
       turnSeconds: wallTurns,
+      askedTurnMs,
       intervals,
       frames,
       perFrame: {
@@ -104,6 +111,7 @@ export async function measureOnce({ url, viewport, turns, turnTimeoutMs, idleMs 
       memory: { jsHeapBytes, rendererPssBytes: rendererPss, gpuPssBytes: gpuPss },
       stats,
       turnStats,
+      wasm,
       errors,
     };
   } finally {

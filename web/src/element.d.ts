@@ -21,6 +21,7 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
  * ("true"/"false"), thickness ("true"/"false"/a number), autoplay ("true"/"false"/the milliseconds
  * between turns), antialias ("auto"/"true"/"false"), turn-area ("page"/"edges"/"corners"/"none"),
  * label (the book's name for screen readers), load-window, remember-page, wasm-url, pdf, pdf-worker-src,
+ * outline (the table of contents as JSON; the property also keeps the array), download (a URL).
  * controls (bare or "true": the toolbar; its parts as an object through the property), labels (the
  * toolbar's texts as a JSON object, or an object through the property).
  * lighting, shadows, gutter, thickness, display, sound and muted apply to the running book; a change of
@@ -79,6 +80,11 @@ export class ConeFlipbookElement extends HTMLElement {
   fallback: FlipbookOptions['fallback'];
   wasmUrl: FlipbookOptions['wasmUrl'];
   pdfWorkerSrc: FlipbookOptions['pdfWorkerSrc'];
+  /** The table of contents: an array is kept as given; a string is its JSON (the outline attribute). */
+  get outline(): FlipbookOptions['outline'];
+  set outline(value: FlipbookOptions['outline'] | string | null);
+  /** The URL download() and the Download button fetch (the download attribute). */
+  download: FlipbookOptions['download'];
   /** The toolbar: true or false set the attribute; `{ search: false }` is kept as given. */
   get controls(): FlipbookOptions['controls'];
   set controls(value: FlipbookOptions['controls'] | null);

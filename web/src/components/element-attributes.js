@@ -50,6 +50,15 @@ function parseList(raw, attribute) {
   return urls;
 }
 
+// docapi (issue 23): the outline as JSON text.
+function parseOutline(raw, attribute) {
+  try {
+    return JSON.parse(raw);
+  } catch {
+    throw attributeError(attribute, 'JSON: an array of { "title", "page", "children"? }', raw);
+  }
+}
+
 // attribute -> [Flipbook option, parser]; the parsers check syntax, Flipbook.create the values.
 export const ATTRIBUTES = {
   pages: ['pages', parseList],
@@ -77,6 +86,9 @@ export const ATTRIBUTES = {
   fallback: ['fallback', parseBoolean],
   pdf: ['pdf', parseText],
   'pdf-worker-src': ['pdfWorkerSrc', parseText],
+  // docapi (issue 23)
+  outline: ['outline', parseOutline],
+  download: ['download', parseText],
   // viewer (issue 23): a bare `controls` shows the whole toolbar; the parts as an object go through the property.
   controls: ['controls', parseBoolean],
   labels: ['labels', parseJsonObject],
@@ -113,6 +125,7 @@ export const KEPT_VALUES = {
   pdf: { keeps: (value) => value instanceof ArrayBuffer || value instanceof Uint8Array, strings: true,
     allowed: 'a URL string, an ArrayBuffer or a Uint8Array' },
   autoplay: { keeps: plainObject, allowed: 'true, false, { interval, loop } or the milliseconds between turns' },
+  outline: { keeps: Array.isArray, strings: true, allowed: 'an array of { title, page, children? } or its JSON text' },
   controls: { keeps: plainObject, allowed: 'true, false or an object of parts ({ search: false })' },
   labels: { keeps: plainObject, strings: true, allowed: 'an object of texts by key, or its JSON' },
 };
