@@ -24,11 +24,12 @@ async function openPdfViewer(page, options = {}) {
 
 /** Resolves once the book's next `turned` has been heard, after `act` ran. */
 async function turnedAfter(page, act) {
-  const heard = page.evaluate(() => new Promise((resolve) => {
-    window.book.addEventListener('turned', () => resolve(), { once: true });
-  }));
+  await page.evaluate(() => {  // the listener in place before `act` (an evaluate left pending may run after it)
+    window.landed = false;
+    window.book.addEventListener('turned', () => { window.landed = true; }, { once: true });
+  });
   await act();
-  await heard;
+  await page.waitForFunction(() => window.landed);
 }
 
 const flat = (entries) => entries.flatMap((entry) => [entry, ...flat(entry.children ?? [])]);
@@ -110,11 +111,14 @@ test('browser: the Search panel finds the hits, steps through them (Enter, Shift
   await field.fill('zebra');
   await field.press('Enter');
   await expect(status).toHaveText(`1 of ${expected.length}`);
-  const cleared = page.evaluate(() => new Promise((resolve) => {
-    window.book.addEventListener('searchchange', (event) => { if (event.detail.query === '') resolve(event.detail.hits.length); });
-  }));
+  // The listener is in place before the key (an evaluate left pending may run after it).
+  await page.evaluate(() => {
+    window.cleared = null;
+    window.book.addEventListener('searchchange', (event) => { if (event.detail.query === '') window.cleared = event.detail.hits.length; });
+  });
   await page.keyboard.press('Escape');
-  expect(await cleared).toBe(0);
+  await page.waitForFunction(() => window.cleared !== null);
+  expect(await page.evaluate(() => window.cleared)).toBe(0);
   await expect(page.locator('[data-search-hit]')).toHaveCount(0);
 });
 

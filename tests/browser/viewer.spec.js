@@ -19,11 +19,12 @@ async function openViewer(page, pages, options = {}) {
 
 /** Resolves once the book's next `turned` has been heard and it rests, after `act` ran. */
 async function turnedAfter(page, act) {
-  const heard = page.evaluate(() => new Promise((resolve) => {
-    window.book.addEventListener('turned', () => window.settle().then(resolve), { once: true });
-  }));
+  await page.evaluate(() => {  // the listener in place before `act` (an evaluate left pending may run after it)
+    window.landed = false;
+    window.book.addEventListener('turned', () => window.settle().then(() => { window.landed = true; }), { once: true });
+  });
   await act();
-  await heard;
+  await page.waitForFunction(() => window.landed);
 }
 
 const openPages = (page) => page.evaluate(() => window.book.openPages);
@@ -238,11 +239,11 @@ test('browser: the Thumbnails panel of a 1000-page book holds only the rows near
   testInfo.annotations.push({ type: 'elements held (1000 pages)', description: `top: ${JSON.stringify(atTop)}, middle: ${JSON.stringify(inMiddle)}` });
   console.log(`viewer: thumbnails panel holds ${JSON.stringify(atTop)} at the top, ${JSON.stringify(inMiddle)} in the middle`);
   // A press far away riffles there (one turnstart with riffle: true), and the mark follows.
-  const riffled = page.evaluate(() => new Promise((resolve) => {
-    window.book.addEventListener('turnstart', (event) => resolve(Boolean(event.detail.riffle)), { once: true });
-  }));
+  await page.evaluate(() => {  // in place before the press (an evaluate left pending may run after it)
+    window.book.addEventListener('turnstart', (event) => { window.riffled = Boolean(event.detail.riffle); }, { once: true });
+  });
   await turnedAfter(page, () => middle.click());
-  expect(await riffled).toBe(true);
+  expect(await page.evaluate(() => window.riffled)).toBe(true);
   expect(await openPages(page)).toContain(499);
   await expect(middle).toHaveAttribute('aria-current', 'page');
 });
