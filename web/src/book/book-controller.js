@@ -10,7 +10,8 @@ import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { BookTurns } from './book-turns.js';
 import { EdgeMarks, edgeMarksOn } from './edge-marks.js';
 import {
-  attachBookInput, followSurface, makeDocumentApi, makeHtmlPages, makeLinkLayer, makeLivePages, makePageStore, makeZoom,
+  attachBookInput, attachViewer, followSurface, makeDocumentApi, makeHtmlPages, makeLinkLayer, makeLivePages, makePageStore,
+  makeZoom,
   startCompanions, watchBookSize,
 } from './book-wiring.js';
 import { MAX_ZOOM, displayFor, openPages } from '../engine/layout.js';
@@ -184,6 +185,8 @@ export class BookController extends EventTarget {
       this._finalPage = this.page;  // page and display still answer after destroy()
       this._finalDisplay = this.display;
     }
+    this._controls?.remove();  // before the book goes: closing a panel may end a search
+    this._controls = null;
     this._destroyed = true;
     this._events.drop();
     this._store.close();
@@ -212,6 +215,7 @@ export class BookController extends EventTarget {
     // HTML pages live over the canvas while they lie open (html-pages.js, loaded only for books that have them).
     const HtmlPages = this._pages.some((entry) => entry.html) ? (await import('../layers/html-pages.js')).HtmlPages : null;
     if (HtmlPages && !this._destroyed) this._mountHtml(HtmlPages);
+    this._controls = await attachViewer(this, this._port);  // the toolbar first: the book fits the rest of its box
     const { width, height } = this._shell.root.getBoundingClientRect();
     this._layoutSize = { width, height };
     this._surface = this._makeSurface(displayFor(this._settings.display, this._layoutSize));
