@@ -128,8 +128,10 @@ void BookRenderer::setBlendEquation(GLenum equation) {
     blendEquation_ = equation;
 }
 
-void BookRenderer::bindTexture(int unit, GLuint texture) {
-    // Leaves `unit` active, so texture calls that follow (uploads, parameters) act on `texture`.
+void BookRenderer::bindTexture(int unit, GLuint texture, bool toEdit) {
+    // For drawing, a texture already bound to its unit costs no call. To edit (`toEdit`), `unit` is
+    // left active, so texture calls that follow (uploads, parameters) act on `texture`.
+    if (!toEdit && boundTextures_[unit] == texture) return;
     if (activeUnit_ != unit) {
         glActiveTexture(GL_TEXTURE0 + unit);
         activeUnit_ = unit;
@@ -241,7 +243,7 @@ void BookRenderer::createGpuObjects() {
     glGenTextures(1, &paperTexture_);
     boundTextures_.fill(0);
     activeUnit_ = -1;
-    bindTexture(0, paperTexture_);
+    bindTexture(0, paperTexture_, true);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, kPaper);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
 
@@ -356,7 +358,7 @@ std::string BookRenderer::setPageImage(int page, int width, int height, JsHandle
     auto found = findTexture(page);
     GLuint texture = found == pageTextures_.end() ? 0 : found->second;
     if (!texture) glGenTextures(1, &texture);
-    bindTexture(0, texture);
+    bindTexture(0, texture, true);
     const int uploaded = conecurl_tex_image_from_source(static_cast<void*>(source));
     if (uploaded != 0) {
         if (found == pageTextures_.end()) {
@@ -423,7 +425,7 @@ void BookRenderer::ensureShadowTarget(int width, int height) {
     if (w == shadowWidth_ && h == shadowHeight_) return;
     shadowWidth_ = w;
     shadowHeight_ = h;
-    bindTexture(2, shadowTexture_);
+    bindTexture(2, shadowTexture_, true);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -573,7 +575,7 @@ void BookRenderer::ensureCacheTarget(int width, int height) {
     if (width == cacheWidth_ && height == cacheHeight_) return;
     cacheWidth_ = width;
     cacheHeight_ = height;
-    bindTexture(3, cacheTexture_);
+    bindTexture(3, cacheTexture_, true);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -621,6 +623,7 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
         glViewport(0, 0, width, height);
         glClear(GL_COLOR_BUFFER_BIT);
         drawRestingSpread(book, frame, camera);
+        lastViewProjection_ = camera.viewProjection;
         return;
     }
     const bool shadows = options_.shadows;
@@ -655,11 +658,19 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
     if (key != restingKey_) {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         drawRestingSpread(book, frame, camera);
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, cacheFramebuffer_);
-        glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-        restingKey_ = key;
         ++restingSpreadDraws_;
+        // While the camera moves (a closed book centring as it opens) every frame draws the spread
+        // anew: it is kept only once the camera holds still for a frame.
+        const bool cameraMoving = camera.viewProjection != lastViewProjection_;
+        lastViewProjection_ = camera.viewProjection;
+        if (cameraMoving) {
+            invalidateRestingSpread();
+        } else {
+            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, cacheFramebuffer_);
+            glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+            restingKey_ = key;
+        }
         cachedTextures_.fill(0);
         for (int i = 0, n = 0; i < frame.count; ++i) {
             if (!frame.leaves[i].resting) continue;
@@ -670,6 +681,7 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
         glClear(GL_DEPTH_BUFFER_BIT);
         composeRestingSpread();
     }
+    lastViewProjection_ = camera.viewProjection;
 
     if (shadows) {
         // The shadow on the resting pages: their colour times (1 - the blurred mask), drawn over the

@@ -130,7 +130,7 @@ private:
     void setUniform(Program& program, Uniform u, const float* values, int count);
     void setUniform(Program& program, Uniform u, float x) { setUniform(program, u, &x, 1); }
     void useProgram(Program& program);
-    void bindTexture(int unit, GLuint texture);
+    void bindTexture(int unit, GLuint texture, bool toEdit = false);
 
     bool makeCurrent();
     void createGpuObjects();
@@ -198,6 +198,7 @@ private:
     int stackGeneration_ = 0;   // counts rebuilds of the stacks' buffer, for the resting key
     int restingSpreadDraws_ = 0;
     RestingKey restingKey_{};
+    glm::mat4 lastViewProjection_{0.0f};  // the last frame's camera: a moving one is not cached
     std::array<GLuint, 2 * kMaxLeafDraws> cachedTextures_{};  // the page textures the cache shows
     GLuint cacheFramebuffer_ = 0;
     GLuint cacheTexture_ = 0;
