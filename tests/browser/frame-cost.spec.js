@@ -455,3 +455,38 @@ test('browser: while a leaf moves the resting spread is drawn once and laid down
   }
   expect(unchanged).toEqual([0, 0]);
 });
+
+test('browser: every turning frame lays the cached resting spread down: the resting left page shows in each of the first frames of a turn, shadows on and off, on a canvas that takes the blit (pixels)', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  for (const shadows of [true, false]) {
+    const result = await page.evaluate(async (shadows) => {
+      await window.openBook({ pages: 8, display: 'double', duration: 3000, loadWindow: 8, startPage: 1, shadows });
+      await window.settle();
+      const book = window.book;
+      const place = book.openPagePlaces()[0];  // the left page: it rests while the right leaf turns
+      const x = Math.round(place.x + place.width / 2);
+      const y = Math.round(place.y + place.height * 0.8);  // below the page's number: its own colour
+      const pixel = () => {
+        const { data, width } = book.surface.readPixels();
+        return [...data.subarray((y * width + x) * 4, (y * width + x) * 4 + 4)];
+      };
+      book.surface.drawNow();
+      const resting = pixel();
+      // Read in the same animation frame as the book drew it (this callback runs after the book's).
+      // The engine's clock advances at most 0.25 s a frame: four frames of a 3 s turn keep the leaf
+      // and its shadow (cast right and down) off the left page.
+      const turning = book.next();
+      const frames = [];
+      while (frames.length < 4) {
+        const drawn = book.surface.framesDrawn;
+        await new Promise((resolve) => requestAnimationFrame(resolve));
+        if (book.surface.framesDrawn !== drawn) frames.push(pixel());
+      }
+      await turning;
+      return { resting, frames };
+    }, shadows);
+    console.log(`shadows ${shadows}: left page ${result.resting} at rest, ${JSON.stringify(result.frames)} in the first turning frames`);
+    expect(result.resting[3]).toBe(255);
+    for (const frame of result.frames) expect(frame).toEqual(result.resting);
+  }
+});
