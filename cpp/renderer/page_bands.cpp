@@ -35,13 +35,13 @@ std::string BookRenderer::setPageImageRows(int page, int width, int height, int 
         dropBand();
         band_ = Band{page, 0, width, height, 0};
         glGenTextures(1, &band_.texture);
-        bindTexture(0, band_.texture);
+        bindTexture(0, band_.texture, true);
         // Storage only: no pixels pass here (the bands bring them).
         glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
     } else if (band_.page != page || band_.width != width || band_.height != height || band_.rows != y) {
         return "page image band out of order (bands go from row 0 down, one page at a time)";
     }
-    bindTexture(0, band_.texture);
+    bindTexture(0, band_.texture, true);  // to edit: unit 0 active whatever was bound
     const int uploaded = conecurl_tex_rows_from_source(static_cast<void*>(source), y, width, rows);
     if (uploaded != 0) {
         dropBand();

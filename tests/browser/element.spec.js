@@ -323,6 +323,8 @@ test('browser: turn-area, label and fallback are attributes too; every option pr
       label: 'Atlas of clouds', fallback: false, pdf: new Uint8Array([37, 80, 68, 70]), pdfWorkerSrc: '/no/worker.mjs',
       outline: [{ title: 'Clouds', page: 1 }], download: '/files/atlas.pdf',
       edgeMarks: true,
+      // viewer (issue 23): objects kept as given
+      controls: { search: false }, labels: { next: 'Suivant' },
     };
     const unsampled = PROPERTY_OPTIONS.filter((option) => option !== 'display' && !(option in values));
     const loose = document.createElement('cone-flipbook');  // not in the document: nothing is built

@@ -21,8 +21,9 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
  * ("true"/"false"), thickness ("true"/"false"/a number), autoplay ("true"/"false"/the milliseconds
  * between turns), antialias ("auto"/"true"/"false"), turn-area ("page"/"edges"/"corners"/"none"),
  * label (the book's name for screen readers), load-window, remember-page, wasm-url, pdf, pdf-worker-src,
- * outline (the table of contents as JSON; the property also keeps the array), download (a URL),
- * edge-marks ("true"/"false").
+ * outline (the table of contents as JSON; the property also keeps the array), download (a URL), edge-marks ("true"/"false").
+ * controls (bare or "true": the toolbar; its parts as an object through the property), labels (the
+ * toolbar's texts as a JSON object, or an object through the property).
  * lighting, shadows, gutter, thickness, display, sound and muted apply to the running book; a change of
  * any other builds a new book at the page shown.
  */
@@ -86,6 +87,12 @@ export class ConeFlipbookElement extends HTMLElement {
   download: FlipbookOptions['download'];
   /** Tabs and ticks on the book's fore-edge (the edge-marks attribute); default: on with controls. */
   edgeMarks: FlipbookOptions['edgeMarks'];
+  /** The toolbar: true or false set the attribute; `{ search: false }` is kept as given. */
+  get controls(): FlipbookOptions['controls'];
+  set controls(value: FlipbookOptions['controls'] | null);
+  /** The toolbar's texts: an object is kept as given; a string is written to the attribute (JSON). */
+  get labels(): FlipbookOptions['labels'];
+  set labels(value: FlipbookOptions['labels'] | string | null);
   /**
    * Waits for the book being built (the StaticBook fallback without WebGL2 or the engine); rejects
    * with its error, or at once if not in the document or destroyed.

@@ -9,8 +9,8 @@ import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { BookTurns } from './book-turns.js';
 import { EdgeMarks, edgeMarksOn } from './edge-marks.js';
 import {
-  attachBookInput, followSurface, loadCompanions, makeDocumentApi, makeHtmlPages, makeLinkLayer, makeLivePages, makePageStore,
-  makeZoom, openingPageOf, startCompanions, watchBookSize,
+  attachBookInput, attachViewer, followSurface, loadCompanions, makeDocumentApi, makeHtmlPages, makeLinkLayer, makeLivePages,
+  makePageStore, makeZoom, openingPageOf, startCompanions, watchBookSize,
 } from './book-wiring.js';
 import { MAX_ZOOM, displayFor, openPages } from '../engine/layout.js';
 
@@ -186,6 +186,8 @@ export class BookController extends EventTarget {
       this._finalPage = this.page;  // page and display still answer after destroy()
       this._finalDisplay = this.display;
     }
+    this._controls?.remove();  // before the book goes: closing a panel may end a search
+    this._controls = null;
     this._destroyed = true;
     this._events.drop();
     this._store.close();
@@ -214,6 +216,7 @@ export class BookController extends EventTarget {
     // HTML pages live over the canvas while they lie open (html-pages.js, loaded only for books that have them).
     const HtmlPages = this._pages.some((entry) => entry.html) ? (await import('../layers/html-pages.js')).HtmlPages : null;
     if (HtmlPages && !this._destroyed) this._mountHtml(HtmlPages);
+    this._controls = await attachViewer(this, this._port);  // the toolbar first: the book fits the rest of its box
     // Page memory, autoplay and the page sound: their modules imported only when the options ask.
     const companionModules = await loadCompanions(this._settings);
     const { width, height } = this._shell.root.getBoundingClientRect();

@@ -320,3 +320,16 @@ export function makeDocumentApi(controller, book) {
     },
   };
 }
+
+/**
+ * The viewer (the `controls` option): its module loaded only now, attached to `controller` through its
+ * public API as conecurl/viewer's attachControls is; null without `controls` or once destroyed.
+ * @param {BookPort} book
+ */
+export async function attachViewer(controller, book) {
+  const { controls, labels } = book.settings;
+  if (!controls) return null;
+  const { attachControls } = await import('../viewer/attach-controls.js');
+  if (book.destroyed()) return null;
+  return attachControls(controller, { controls, labels, pdf: book.pdf() });
+}

@@ -4,6 +4,7 @@ import { BOOK_EVENTS } from './book-events.js';
 import { DIRECTIONS } from '../engine/direction.js';
 import { MAX_LEAF_THICKNESS, MAX_PAGES } from '../engine/layout.js';
 import { TURN_AREAS } from '../input/turn-area.js';
+import { checkControls, checkLabels } from '../viewer/viewer-options.js';
 
 const BOOLEAN = (v) => typeof v === 'boolean' || 'true or false';
 export { MAX_PAGES };  // the engine's Book refuses more (cpp/core/book_constants.hpp)
@@ -44,6 +45,9 @@ const OPTION_CHECKS = {
   download: (v) => (typeof v === 'string' && v.trim() !== '') || 'a URL string',
   // edgemarks (issue 23)
   edgeMarks: BOOLEAN,
+  // viewer (issue 23): the toolbar and its panels (web/src/viewer/)
+  controls: checkControls,
+  labels: checkLabels,
 };
 /** Every option validateOptions() knows (Flipbook.create also takes pdf and pdfWorkerSrc in place of pages). */
 export const OPTION_NAMES = Object.keys(OPTION_CHECKS);
@@ -55,6 +59,7 @@ export const DEFAULTS = {
   display: 'auto', direction: 'ltr', startPage: 0, duration: 1000, schedule: 'paper', center: true, hardCovers: false,
   lighting: true, shadows: true, gutter: true, thickness: true, loadWindow: 4, label: 'Book', fallback: true, hash: false,
   autoplay: false, sound: false, muted: false, antialias: 'auto',
+  controls: false,
 };
 /** Options a live book takes through setOptions(); the others need a new book. */
 export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter', 'thickness', 'display', 'sound', 'muted'];
