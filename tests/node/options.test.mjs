@@ -39,7 +39,8 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     muted: 'true or false',
     rememberPage: 'a non-empty string (the key it is kept under)',
     antialias: "'auto', true or false",
-    on: 'an object of listeners by event name (ready, progress, pageerror, turnstart, turned, turncancel, resize, zoom, sharpened, link, pageschange, error)',
+    textLayer: 'true or false',
+    on: 'an object of listeners by event name (ready, progress, pageerror, turnstart, turned, turncancel, resize, zoom, sharpened, link, pageschange, error, passagelink)',
   };
   const bad = {
     display: [NaN, 'triple', 2, null, ['double']],
@@ -64,6 +65,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     rememberPage: ['', '  ', 3, null, true],
     antialias: ['AUTO', 'on', 1, null, NaN],
     on: [null, [], () => {}, { turnd: () => {} }, { turned: 'log' }, { ready: null }],
+    textLayer: ['true', 1, null],
   };
   assert.deepEqual(Object.keys(bad).sort(), Object.keys(allowed).sort());
   for (const [option, values] of Object.entries(bad)) {
@@ -109,7 +111,7 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses(null, 'options must be an object, got null');
   refuses('pages', 'options must be an object, got "pages"');
   refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, direction, startPage, duration, schedule, center, hardCovers, "
-    + 'lighting, shadows, gutter, thickness, loadWindow, wasmUrl, label, fallback, hash, autoplay, sound, muted, rememberPage, antialias, turnArea, on)');
+    + 'lighting, shadows, gutter, thickness, loadWindow, wasmUrl, label, fallback, hash, autoplay, sound, muted, rememberPage, antialias, turnArea, on, textLayer)');
   refuses({ pages, antialias: 'yes' }, "option 'antialias' must be 'auto', true or false, got \"yes\"");
   refuses({ pages, startPage: 3 }, "option 'startPage' must be below the page count 3, got 3");
   // A value whose own toString throws or is huge is described, not called.
@@ -145,6 +147,16 @@ test('node: turnArea is one of page, edges, corners, none; its default is edges 
     { name: 'TypeError', message: "conecurl: option 'turnArea' must be 'page', 'edges', 'corners' or 'none', got \"middle\"" });
   assert.throws(() => validateOptions({ pages: [{ html: 'a <b>string</b>' }] }),
     { name: 'TypeError', message: /option 'pages\[0\]\.html' must be an HTML element .*strings are never parsed as HTML/ });
+});
+
+test('node: a PDF book (validateOptions told pdf) turns from the edges by default while its text layer is on; textLayer is a boolean, default true', () => {
+  assert.equal(validateOptions({ pages: ['a.jpg'] }, { pdf: true }).turnArea, 'edges');
+  assert.equal(validateOptions({ pages: ['a.jpg'] }, { pdf: true }).textLayer, true);
+  assert.equal(validateOptions({ pages: ['a.jpg'], textLayer: false }, { pdf: true }).turnArea, 'page');
+  assert.equal(validateOptions({ pages: ['a.jpg'], turnArea: 'page' }, { pdf: true }).turnArea, 'page');
+  assert.equal(validateOptions({ pages: ['a.jpg'] }).turnArea, 'page');  // an image book has no text layer
+  assert.throws(() => validateOptions({ pages: ['a.jpg'], textLayer: 'yes' }),
+    { name: 'TypeError', message: 'conecurl: option \'textLayer\' must be true or false, got "yes"' });
 });
 
 test('node: schedule is \'paper\' (default) or \'smooth\'', () => {

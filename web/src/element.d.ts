@@ -20,7 +20,8 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
  * schedule, center, hard-covers, lighting, shadows, gutter, hash, sound, muted, fallback
  * ("true"/"false"), thickness ("true"/"false"/a number), autoplay ("true"/"false"/the milliseconds
  * between turns), antialias ("auto"/"true"/"false"), turn-area ("page"/"edges"/"corners"/"none"),
- * label (the book's name for screen readers), load-window, remember-page, wasm-url, pdf, pdf-worker-src.
+ * label (the book's name for screen readers), load-window, remember-page, wasm-url, pdf, pdf-worker-src,
+ * text-layer ("true"/"false": a PDF's selectable text).
  * lighting, shadows, gutter, thickness, display, sound and muted apply to the running book; a change of
  * any other builds a new book at the page shown.
  */
@@ -77,6 +78,8 @@ export class ConeFlipbookElement extends HTMLElement {
   fallback: FlipbookOptions['fallback'];
   wasmUrl: FlipbookOptions['wasmUrl'];
   pdfWorkerSrc: FlipbookOptions['pdfWorkerSrc'];
+  /** A PDF book's selectable text over its flat pages (the text-layer attribute); default true. */
+  textLayer: FlipbookOptions['textLayer'];
   /**
    * Waits for the book being built (the StaticBook fallback without WebGL2 or the engine); rejects
    * with its error, or at once if not in the document or destroyed.

@@ -19,6 +19,8 @@ export interface FlipbookEventProps {
   onLink?: (event: FlipbookEventMap['link']) => void;
   /** The pages prop changed and the book applied it (inserted, removed or replaced pages, no new book). */
   onPagesChange?: (event: FlipbookEventMap['pageschange']) => void;
+  /** A reader copied a link to a passage they selected (a PDF book's text layer). */
+  onPassageLink?: (event: FlipbookEventMap['passagelink']) => void;
   /** The book could not be built, or a prop was refused (a TypeError naming it); without it, the console hears. */
   onError?: (event: CustomEvent<{ error: Error }>) => void;
 }

@@ -9,7 +9,7 @@ import { BookEvents } from './book-events.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { BookTurns } from './book-turns.js';
 import {
-  attachBookInput, followSurface, makeHtmlPages, makeLinkLayer, makeLivePages, makePageStore, makeZoom,
+  attachBookInput, followSurface, makeHtmlPages, makeLinkLayer, makeLivePages, makePageStore, makeTextLayer, makeZoom,
   startCompanions, watchBookSize,
 } from './book-wiring.js';
 import { MAX_ZOOM, displayFor, openPages } from '../engine/layout.js';
@@ -39,7 +39,9 @@ export class BookController extends EventTarget {
     this._store = makePageStore(this._port);
     this._turns = new BookTurns(this._port);
     this._html = null;  // HTML pages, once _build() has loaded their module
-    this._layers = [makeLinkLayer(this._port)];
+    this._text = null;  // a PDF's selectable text, once _build() has loaded its module (text-layer.js)
+    this._links = makeLinkLayer(this._port);
+    this._layers = [this._links];
     this._reducedMotion = typeof matchMedia === 'function' ? matchMedia('(prefers-reduced-motion: reduce)') : null;
   }
 
@@ -189,6 +191,12 @@ export class BookController extends EventTarget {
     // HTML pages live over the canvas while they lie open (html-pages.js, loaded only for books that have them).
     const HtmlPages = this._pages.some((entry) => entry.html) ? (await import('../layers/html-pages.js')).HtmlPages : null;
     if (HtmlPages && !this._destroyed) this._mountHtml(HtmlPages);
+    // A PDF's text, selectable over its flat pages (under the links, which stay clickable).
+    const TextLayer = this._pdf && this._settings.textLayer ? (await import('../layers/text-layer.js')).createTextLayer : null;
+    if (TextLayer && !this._destroyed) {
+      this._text = makeTextLayer(TextLayer, this._port, this._links.element);
+      this._layers.splice(this._layers.indexOf(this._links), 0, this._text);
+    }
     const { width, height } = this._shell.root.getBoundingClientRect();
     this._layoutSize = { width, height };
     this._surface = this._makeSurface(displayFor(this._settings.display, this._layoutSize));
@@ -254,7 +262,8 @@ export class BookController extends EventTarget {
   _showOpenPages() {
     this._layoutLayers();
     const pages = this.openPages;
-    this._shell.showOpenPages(pages, this.pageCount, pages.map((i) => this._pages[i].alt));
+    // A page whose text layer is there is read from it, in order: its alt would say it all again.
+    this._shell.showOpenPages(pages, this.pageCount, pages.map((i) => (this._text ? undefined : this._pages[i].alt)));
   }
 
   // Overlay layers: laid over the open pages while the book rests, hidden while a leaf moves.

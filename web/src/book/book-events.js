@@ -21,6 +21,8 @@ export const EVENT_DETAILS = {
   link: ['page', 'href', 'toPage?'],
   pageschange: ['change', 'at', 'count', 'pageCount', 'page'],
   error: ['error'],
+  // textlayer (issue 23)
+  passagelink: ['page', 'text', 'url', 'copied'],
 };
 /** Every event a book dispatches. */
 export const BOOK_EVENTS = Object.keys(EVENT_DETAILS);

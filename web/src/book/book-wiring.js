@@ -9,6 +9,7 @@ import { BookZoom } from './book-zoom.js';
 import { watchSize } from './size-watch.js';
 import { PageStore } from '../pages/page-store.js';
 import { createLinkLayer } from '../layers/link-layer.js';
+import { sharePassage } from './passage-link.js';
 import { turnsAt } from '../input/turn-area.js';
 import { attachInput } from '../input/book-input.js';
 
@@ -75,6 +76,24 @@ export function makeLinkLayer(book) {
   return createLinkLayer(book.root, {
     linksOf: (page) => book.entries[page].links,
     onActivate: book.followLink,
+  });
+}
+
+/**
+ * A PDF's selectable text (text-layer.js createTextLayer, loaded only for PDF books with `textLayer`),
+ * laid in under `before` (the links); its passage button copies a link and says so (`passagelink`).
+ * @param {BookPort} book
+ */
+export function makeTextLayer(createTextLayer, book, before) {
+  return createTextLayer(book.root, {
+    pdf: book.pdfDocument(),
+    canvas: book.canvas,
+    before,
+    turnArea: book.settings.turnArea,
+    direction: book.settings.direction,
+    onPassage: (passage) => {
+      sharePassage(passage).then((detail) => { if (!book.destroyed()) book.emit('passagelink', detail); });
+    },
   });
 }
 

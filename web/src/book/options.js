@@ -39,6 +39,8 @@ const OPTION_CHECKS = {
   turnArea: (v) => TURN_AREAS.includes(v) || TURN_AREAS.map((a) => `'${a}'`).join(', ').replace(/, ([^,]*)$/, ' or $1'),
   on: (v) => (isPlainEntry(v) && Object.entries(v).every(([type, f]) => BOOK_EVENTS.includes(type) && typeof f === 'function'))
     || `an object of listeners by event name (${BOOK_EVENTS.join(', ')})`,
+  // textlayer (issue 23): a PDF book's selectable text over its flat pages.
+  textLayer: BOOLEAN,
 };
 /** Every option validateOptions() knows (Flipbook.create also takes pdf and pdfWorkerSrc in place of pages). */
 export const OPTION_NAMES = Object.keys(OPTION_CHECKS);
@@ -50,6 +52,7 @@ export const DEFAULTS = {
   display: 'auto', direction: 'ltr', startPage: 0, duration: 1000, schedule: 'paper', center: true, hardCovers: false,
   lighting: true, shadows: true, gutter: true, thickness: true, loadWindow: 4, label: 'Book', fallback: true, hash: false,
   autoplay: false, sound: false, muted: false, antialias: 'auto',
+  textLayer: true,
 };
 /** Options a live book takes through setOptions(); the others need a new book. */
 export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter', 'thickness', 'display', 'sound', 'muted'];
@@ -148,9 +151,10 @@ function checkLinks(links, where, pageCount, kind) {
 
 /**
  * Checks a book's options and returns them with the defaults filled in. Throws a TypeError naming
- * the first bad option (or page entry) and what it allows.
+ * the first bad option (or page entry) and what it allows. `pdf`: the pages are a PDF's (Flipbook.create
+ * opened it), so its text layer is on unless `textLayer: false`.
  */
-export function validateOptions(options) {
+export function validateOptions(options, { pdf = false } = {}) {
   if (options === null || typeof options !== 'object') {
     throw new TypeError(`conecurl: options must be an object, got ${describeValue(options)}`);
   }
@@ -166,9 +170,11 @@ export function validateOptions(options) {
   if (options.startPage !== undefined && options.startPage >= options.pages.length) {
     throw new TypeError(`conecurl: option 'startPage' must be below the page count ${options.pages.length}, got ${options.startPage}`);
   }
-  // A book with HTML pages turns from the pages' edges by default: a press on their content is theirs.
+  // A book with HTML pages, or a PDF's selectable text, turns from the pages' edges by default: a press
+  // on their content is theirs.
   const hasHtml = Array.from(options.pages, (page) => isHtmlPage(page) || (isPlainEntry(page) && page.html !== undefined)).some(Boolean);
-  return { ...DEFAULTS, turnArea: hasHtml ? 'edges' : 'page', ...options };
+  const hasText = pdf && (options.textLayer ?? DEFAULTS.textLayer);
+  return { ...DEFAULTS, turnArea: hasHtml || hasText ? 'edges' : 'page', ...options };
 }
 
 const oneLinkForm = (l) => ({ rect: l.rect, href: l.href ?? '#', toPage: l.page, title: l.title });

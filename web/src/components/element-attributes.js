@@ -69,6 +69,8 @@ export const ATTRIBUTES = {
   fallback: ['fallback', parseBoolean],
   pdf: ['pdf', parseText],
   'pdf-worker-src': ['pdfWorkerSrc', parseText],
+  // textlayer (issue 23)
+  'text-layer': ['textLayer', parseBoolean],
 };
 /** Options with no attribute, and why. */
 export const NO_ATTRIBUTE = {

@@ -1,0 +1,305 @@
+// Browser: a PDF book's selectable text (text-layer.js): a generated multi-page PDF (pdf-lib, standard
+// Helvetica) and a typeset one found on the machine get one `data-text-layer` per open flat page whose
+// spans lie over the rendered words (dark pixels of a screenshot); a mouse drag over a line selects that
+// line and never turns; the layer is gone while a leaf moves and back after; it follows zoom; turnArea
+// defaults to 'edges' with grips over the text's turn area; passage links round-trip through the address.
+import { test, expect } from '@playwright/test';
+import { existsSync, readFileSync } from 'node:fs';
+import { PDFDocument, StandardFonts, rgb } from 'pdf-lib';
+import { openReady } from './helpers.js';
+import { decodePng } from './png.js';
+
+const PAGE_COUNT = 6;
+const PAGE_SIZE = [300, 400];  // points, portrait: two pages side by side in the 640x400 fixture
+const FONT_SIZE = 14;
+const LINE_GAP = 44;           // points between lines: room to look for ink around each line
+/** Line `n` (0-based) of page `index` (0-based): words unique to that page and line, ending clear of the turn band. */
+const lineText = (index, n) => `${n + 1}.${index + 1} alpha${index + 1} bravo${n + 1} charlie`;
+const LINES = 5;
+// The last line runs into the right margin, into the free edge's turn band of a right-hand page.
+const EDGE_LINE = (index) => `Edge${index + 1} words reach the margin here`;
+// A typeset PDF (DocBook through a TeX toolchain) many Debian machines carry; the test that uses it skips without it.
+const TYPESET_PDF = '/usr/share/doc/shared-mime-info/shared-mime-info-spec.pdf';
+
+async function makePdf() {
+  const pdf = await PDFDocument.create();
+  const font = await pdf.embedFont(StandardFonts.Helvetica);
+  for (let i = 0; i < PAGE_COUNT; i++) {
+    const page = pdf.addPage(PAGE_SIZE);
+    for (let n = 0; n < LINES; n++) {
+      page.drawText(lineText(i, n), { x: 30, y: PAGE_SIZE[1] - 50 - n * LINE_GAP, size: FONT_SIZE, font, color: rgb(0, 0, 0) });
+    }
+    const edge = EDGE_LINE(i);
+    page.drawText(edge, { x: PAGE_SIZE[0] - 8 - font.widthOfTextAtSize(edge, FONT_SIZE), y: 60, size: FONT_SIZE, font, color: rgb(0, 0, 0) });
+  }
+  return Buffer.from(await pdf.save()).toString('base64');
+}
+
+let pdfBase64;
+test.beforeAll(async () => { pdfBase64 = await makePdf(); });
+
+/** Opens the fixture (with `hash` in the address, if given) and a PDF book in it with `options`. */
+async function openBook(page, options = {}, { hash = '', base64 = pdfBase64, textLayers = true } = {}) {
+  await openReady(page, `/tests/browser/fixtures/pdf-fixture.html${hash}`);
+  await page.evaluate(async ({ base64, options }) => {
+    window.events = [];
+    const on = Object.fromEntries(['turnstart', 'turned', 'passagelink'].map((type) => [type, (e) => window.events.push({ type, detail: e.detail })]));
+    window.book = await window.Flipbook.create(window.container, {
+      pdf: window.bytesFromBase64(base64), display: 'double', duration: 400, lighting: false, shadows: false, gutter: false, on, ...options,
+    });
+    await window.book.whenIdle();
+  }, { base64, options });
+  if (textLayers) await waitForTextLayers(page);
+}
+
+/** Waits until every open page has its text layer, with spans in it. */
+async function waitForTextLayers(page) {
+  await page.waitForFunction(() => {
+    const open = window.book.openPages;
+    const layers = [...document.querySelectorAll('[data-text-layer]')];
+    return !window.book.animating && layers.length === open.length
+      && open.every((p) => layers.some((l) => Number(l.dataset.page) === p && l.querySelector('span')));
+  });
+}
+
+/** The box (viewport CSS px) of the span on page `index` whose text is `text`. */
+function spanBox(page, index, text) {
+  return page.evaluate(({ index, text }) => {
+    const span = [...document.querySelectorAll(`[data-text-layer][data-page="${index}"] span`)].find((s) => s.textContent === text);
+    if (!span) return null;
+    const { x, y, width, height } = span.getBoundingClientRect();
+    return { x, y, width, height };
+  }, { index, text });
+}
+
+/** The bounding box of the dark pixels (viewport CSS px) in `box` grown by `margin` on every side. */
+async function inkBox(page, box, margin) {
+  const clip = { x: Math.floor(box.x - margin), y: Math.floor(box.y - margin), width: Math.ceil(box.width + 2 * margin), height: Math.ceil(box.height + 2 * margin) };
+  const png = decodePng(await page.screenshot({ clip }));
+  let [x0, y0, x1, y1, count] = [Infinity, Infinity, -Infinity, -Infinity, 0];
+  for (let y = 0; y < png.height; y++) {
+    for (let x = 0; x < png.width; x++) {
+      const i = (y * png.width + x) * 4;
+      if (png.data[i] + png.data[i + 1] + png.data[i + 2] < 3 * 110) {
+        count++;
+        [x0, y0, x1, y1] = [Math.min(x0, x), Math.min(y0, y), Math.max(x1, x + 1), Math.max(y1, y + 1)];
+      }
+    }
+  }
+  return count === 0 ? null : { x: clip.x + x0, y: clip.y + y0, width: x1 - x0, height: y1 - y0, count };
+}
+
+/** The ink around a span lies within it (a few px of slack) and fills most of its width. */
+function expectInkUnder(ink, box, slack = 3) {
+  expect(ink, 'dark pixels near the span').not.toBeNull();
+  expect(ink.x).toBeGreaterThanOrEqual(box.x - slack);
+  expect(ink.y).toBeGreaterThanOrEqual(box.y - slack);
+  expect(ink.x + ink.width).toBeLessThanOrEqual(box.x + box.width + slack);
+  expect(ink.y + ink.height).toBeLessThanOrEqual(box.y + box.height + slack);
+  expect(ink.width).toBeGreaterThan(0.85 * box.width);
+}
+
+test('browser: a PDF book lays one data-text-layer per open flat page, its spans over the rendered words, read once in page order', async ({ page }) => {
+  await openBook(page, { startPage: 1 });
+  const layers = await page.evaluate(() => [...document.querySelectorAll('[data-text-layer]')].map((l) => ({
+    page: Number(l.dataset.page), hidden: l.closest('[aria-hidden="true"]') !== null, text: l.textContent,
+  })));
+  expect(layers.map((l) => l.page)).toEqual([1, 2]);
+  for (const layer of layers) {
+    expect(layer.hidden).toBe(false);
+    // Reading order: the page's lines top to bottom.
+    const at = [0, 1, 2, 3, 4].map((n) => layer.text.indexOf(lineText(layer.page, n)));
+    expect(at.every((i) => i >= 0)).toBe(true);
+    expect([...at].sort((a, b) => a - b)).toEqual(at);
+  }
+  // The words are read once: the book's hidden page list no longer repeats the PDF's text.
+  const alpha = await page.evaluate(() => window.book.element.textContent.split('alpha2 ').length - 1);
+  expect(alpha).toBe(LINES);
+  // Each line's span lies over its ink, on both pages.
+  for (const index of [1, 2]) {
+    for (const n of [0, 3]) {
+      const box = await spanBox(page, index, lineText(index, n));
+      expect(box, `span of ${lineText(index, n)}`).not.toBeNull();
+      expectInkUnder(await inkBox(page, box, 14), box);
+    }
+  }
+});
+
+test('browser: a mouse drag over a line of a flat PDF page selects that line and does not turn; the passage button appears', async ({ page }) => {
+  await openBook(page, { startPage: 1 });
+  const box = await spanBox(page, 2, lineText(2, 1));
+  const y = box.y + box.height / 2;
+  await page.mouse.move(box.x + 1, y);
+  await page.mouse.down();
+  for (let i = 1; i <= 10; i++) await page.mouse.move(box.x + 1 + (box.width - 2) * (i / 10), y);
+  await page.mouse.up();
+  const after = await page.evaluate(() => ({
+    selected: window.getSelection().toString(), page: window.book.page, animating: window.book.animating,
+    events: window.events.map((e) => e.type),
+  }));
+  expect(after.selected).toContain('alpha3 bravo2 charli');
+  expect(after.page).toBe(1);
+  expect(after.animating).toBe(false);
+  expect(after.events).toEqual([]);
+  await expect(page.locator('[data-passage-link]')).toBeVisible();
+  await expect(page.locator('[data-passage-link]')).toHaveText('Copy link to this passage');
+  await page.screenshot({ path: test.info().outputPath('text-selected.png') });
+});
+
+test('browser: the text layer is gone while a leaf moves and back, on the new pages, after it lands', async ({ page }) => {
+  await openBook(page, { startPage: 1 });
+  const frames = await page.evaluate(async () => {
+    const seen = [];
+    let landed = false;
+    const turn = window.book.next().then(() => { landed = true; });
+    while (!landed) {
+      seen.push({ animating: window.book.animating, layers: document.querySelectorAll('[data-text-layer]').length });
+      await new Promise(requestAnimationFrame);
+    }
+    await turn;
+    return seen;
+  });
+  const moving = frames.filter((f) => f.animating);
+  expect(moving.length).toBeGreaterThan(0);
+  expect(moving.every((f) => f.layers === 0)).toBe(true);
+  await waitForTextLayers(page);
+  const pages = await page.evaluate(() => [...document.querySelectorAll('[data-text-layer]')].map((l) => Number(l.dataset.page)));
+  expect(pages).toEqual([3, 4]);
+});
+
+test('browser: the text layer follows zoom: spans scale with the page and keep their place on it', async ({ page }) => {
+  await openBook(page, { startPage: 1 });
+  const measure = () => page.evaluate(() => {
+    const place = window.book.openPagePlaces().find((p) => p.page === 1);
+    const span = [...document.querySelectorAll('[data-text-layer][data-page="1"] span')].find((s) => s.textContent.startsWith('1.2 '));
+    const r = span.getBoundingClientRect();
+    const c = window.book.element.getBoundingClientRect();
+    return { place, fx: (r.x - c.x - place.x) / place.width, fy: (r.y - c.y - place.y) / place.height, width: r.width, height: r.height };
+  });
+  const before = await measure();
+  await page.evaluate(() => { window.book.zoom = 2; });
+  await page.waitForFunction(() => {
+    const layer = document.querySelector('[data-text-layer][data-page="1"]');
+    const place = window.book.openPagePlaces().find((p) => p.page === 1);
+    return layer && place && Math.abs(parseFloat(layer.style.width) - place.width) < 0.5;
+  });
+  const after = await measure();
+  expect(after.place.width / before.place.width).toBeCloseTo(2, 2);
+  expect(after.width / before.width).toBeCloseTo(2, 1);
+  expect(after.height / before.height).toBeCloseTo(2, 1);
+  expect(Math.abs(after.fx - before.fx)).toBeLessThan(0.005);
+  expect(Math.abs(after.fy - before.fy)).toBeLessThan(0.005);
+});
+
+test('browser: with a text layer turnArea defaults to edges, and a drag from the free edge over text turns; textLayer: false has no layer', async ({ page }) => {
+  await openBook(page, { startPage: 1 });
+  expect(await page.evaluate(() => window.book.options.turnArea)).toBe('edges');
+  // The right page's edge line reaches into its turn band: there a grip lies over the text.
+  const box = await spanBox(page, 2, EDGE_LINE(2));
+  const x = box.x + box.width - 3;
+  const y = box.y + box.height / 2;
+  const hit = await page.evaluate(({ x, y }) => document.elementFromPoint(x, y).className, { x, y });
+  expect(hit).toBe('conecurl-turn-grip');
+  // Inside the page, away from the band, the same line's text is the reader's.
+  const inner = await page.evaluate(({ x, y }) => document.elementFromPoint(x, y).tagName, { x: box.x + 4, y });
+  expect(inner).toBe('SPAN');
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  for (let i = 1; i <= 12; i++) await page.mouse.move(x - i * 30, y);
+  await page.mouse.up();
+  await page.waitForFunction(() => window.events.some((e) => e.type === 'turned'));
+  expect(await page.evaluate(() => window.events.find((e) => e.type === 'turnstart').detail.drag)).toBe(true);
+  expect(await page.evaluate(() => window.book.page)).toBe(3);
+
+  await openBook(page, { startPage: 1, textLayer: false }, { textLayers: false });
+  expect(await page.evaluate(() => window.book.options.turnArea)).toBe('page');
+  expect(await page.locator('[data-text-layer]').count()).toBe(0);
+});
+
+/** Selects line `n` of page `index` by dragging over it (viewport points from its span). */
+async function selectLine(page, index, n) {
+  const box = await spanBox(page, index, lineText(index, n));
+  const y = box.y + box.height / 2;
+  await page.mouse.move(box.x + 1, y);
+  await page.mouse.down();
+  for (let i = 1; i <= 8; i++) await page.mouse.move(box.x + 1 + (box.width - 2) * (i / 8), y);
+  await page.mouse.up();
+}
+
+test('browser: a passage link round-trips: select, the button by keyboard, the link in the clipboard and the event; the link opens the book at that page', async ({ page, context }) => {
+  await context.grantPermissions(['clipboard-read', 'clipboard-write']);
+  await openBook(page, { startPage: 1 });
+  await selectLine(page, 2, 3);
+  await expect(page.locator('[data-passage-link]')).toBeVisible();
+  // Keyboard: from the book, Tab reaches the button, Enter uses it.
+  await page.evaluate(() => window.book.element.focus());
+  await page.keyboard.press('Tab');
+  expect(await page.evaluate(() => document.activeElement.hasAttribute('data-passage-link'))).toBe(true);
+  await page.keyboard.press('Enter');
+  await page.waitForFunction(() => window.events.some((e) => e.type === 'passagelink'));
+  const detail = await page.evaluate(() => window.events.find((e) => e.type === 'passagelink').detail);
+  expect(detail.page).toBe(2);
+  expect(detail.text).toBe(lineText(2, 3).trim());
+  const { pathname } = new URL(page.url());
+  expect(detail.url).toBe(`${new URL(page.url()).origin}${pathname}#page=3&text=${encodeURIComponent(detail.text)}`);
+  expect(detail.copied).toBe(true);
+  expect(await page.evaluate(() => navigator.clipboard.readText())).toBe(detail.url);
+  expect(await page.evaluate(() => window.book.page)).toBe(1);
+
+  // A new page at that address, with hash: true, opens at the passage's page.
+  const other = await context.newPage();
+  const { hash } = new URL(detail.url);
+  await openBook(other, { hash: true }, { hash });
+  expect(await other.evaluate(() => window.book.openPages)).toContain(2);
+  await other.close();
+});
+
+test('browser: a passage link marks its passage as a search hit over the words (needs search() and showHit())', async ({ page }) => {
+  const text = lineText(4, 2);
+  await openBook(page, { hash: true }, { hash: `#page=5&text=${encodeURIComponent(text)}` });
+  const hasSearch = await page.evaluate(() => typeof window.book.search === 'function' && typeof window.book.showHit === 'function');
+  test.skip(!hasSearch, 'search() and showHit() are not in this build yet (docapi)');
+  expect(await page.evaluate(() => window.book.openPages)).toContain(4);
+  await page.waitForFunction(() => document.querySelector('[data-search-hit]'));
+  const span = await spanBox(page, 4, text);
+  const marks = await page.evaluate(() => [...document.querySelectorAll('[data-search-hit]')].map((m) => {
+    const { x, y, width, height } = m.getBoundingClientRect();
+    return { x, y, width, height };
+  }));
+  const over = marks.filter((m) => m.x < span.x + span.width && span.x < m.x + m.width && m.y < span.y + span.height && span.y < m.y + m.height);
+  expect(over.length).toBeGreaterThan(0);
+  const union = over.reduce((a, m) => ({ x0: Math.min(a.x0, m.x), x1: Math.max(a.x1, m.x + m.width) }), { x0: Infinity, x1: -Infinity });
+  expect(Math.abs(union.x0 - span.x)).toBeLessThan(4);
+  expect(Math.abs(union.x1 - (span.x + span.width))).toBeLessThan(4);
+});
+
+test('browser: a typeset PDF found on the machine gets a text layer whose spans lie over its words', async ({ page }) => {
+  test.skip(!existsSync(TYPESET_PDF), `no typeset PDF at ${TYPESET_PDF}`);
+  const base64 = readFileSync(TYPESET_PDF).toString('base64');
+  await openBook(page, { startPage: 2, display: 'single' }, { base64 });
+  const open = await page.evaluate(() => window.book.openPages);
+  // Its body text is 4 px high at zoom 1: look at it magnified.
+  await page.evaluate(() => { window.book.zoom = 4; });
+  await page.waitForFunction((index) => {
+    const layer = document.querySelector(`[data-text-layer][data-page="${index}"]`);
+    const place = window.book.openPagePlaces().find((p) => p.page === index);
+    return !window.book.animating && layer && place && Math.abs(parseFloat(layer.style.width) - place.width) < 0.5;
+  }, open[0]);
+  // Words of several letters, whole on the page: each one's span has ink under it and none around it.
+  const boxes = await page.evaluate((index) => {
+    const layer = document.querySelector(`[data-text-layer][data-page="${index}"]`);
+    const c = window.book.element.getBoundingClientRect();
+    return [...layer.querySelectorAll('span')].filter((s) => /^[A-Za-z][A-Za-z ,.]{12,}$/.test(s.textContent)).map((s) => {
+      const { x, y, width, height } = s.getBoundingClientRect();
+      return { x, y, width, height, text: s.textContent, inside: x > c.x && y > c.y && x + width < c.right && y + height < c.bottom };
+    }).filter((b) => b.inside && b.height > 10).slice(0, 8);
+  }, open[0]);
+  expect(boxes.length).toBeGreaterThan(2);
+  await page.screenshot({ path: test.info().outputPath('typeset-zoomed.png') });
+  for (const box of boxes) {
+    const ink = await inkBox(page, box, 0);
+    expect(ink, `ink under "${box.text}"`).not.toBeNull();
+    expect(ink.width, `"${box.text}": ink across the span`).toBeGreaterThan(0.85 * box.width);
+    expect(ink.height, `"${box.text}": ink down the span`).toBeGreaterThan(0.4 * box.height);
+  }
+});
