@@ -2,8 +2,9 @@
 // Helvetica) and a typeset one found on the machine get one `data-text-layer` per open flat page whose
 // spans lie over the rendered words (dark pixels of a screenshot); a mouse drag over a line selects that
 // line and never turns; the layer is gone while a leaf moves and back after; it follows zoom; turnArea
-// defaults to 'edges' with grips over the text's turn area; passage links round-trip through the address.
+// defaults to 'edges' (text in the band still selects); passage links round-trip through the address.
 import { test, expect } from '@playwright/test';
+import AxeBuilder from '@axe-core/playwright';
 import { existsSync, readFileSync } from 'node:fs';
 import { PDFDocument, StandardFonts, rgb } from 'pdf-lib';
 import { openReady } from './helpers.js';
@@ -191,22 +192,39 @@ test('browser: the text layer follows zoom: spans scale with the page and keep t
   expect(Math.abs(after.fy - before.fy)).toBeLessThan(0.005);
 });
 
-test('browser: with a text layer turnArea defaults to edges, and a drag from the free edge over text turns; textLayer: false has no layer', async ({ page }) => {
+/** A viewport point at fractions (fx, fy) of open page `index`'s place. */
+function pagePoint(page, index, fx, fy) {
+  return page.evaluate(({ index, fx, fy }) => {
+    const place = window.book.openPagePlaces().find((p) => p.page === index);
+    const box = window.book.element.getBoundingClientRect();
+    return { x: box.x + place.x + fx * place.width, y: box.y + place.y + fy * place.height };
+  }, { index, fx, fy });
+}
+
+/** Drags the mouse from `from` by `dx` in 12 steps. */
+async function dragBy(page, from, dx) {
+  await page.mouse.move(from.x, from.y);
+  await page.mouse.down();
+  for (let i = 1; i <= 12; i++) await page.mouse.move(from.x + (dx * i) / 12, from.y);
+  await page.mouse.up();
+}
+
+test('browser: with a text layer turnArea defaults to edges: text in the edge band selects, a drag from the blank edge turns, one inside does not; textLayer: false has no layer', async ({ page }) => {
   await openBook(page, { startPage: 1 });
   expect(await page.evaluate(() => window.book.options.turnArea)).toBe('edges');
-  // The right page's edge line reaches into its turn band: there a grip lies over the text.
+  // The right page's edge line reaches into its turn band: a word there is still the reader's.
   const box = await spanBox(page, 2, EDGE_LINE(2));
-  const x = box.x + box.width - 3;
   const y = box.y + box.height / 2;
-  const hit = await page.evaluate(({ x, y }) => document.elementFromPoint(x, y).className, { x, y });
-  expect(hit).toBe('conecurl-turn-grip');
-  // Inside the page, away from the band, the same line's text is the reader's.
-  const inner = await page.evaluate(({ x, y }) => document.elementFromPoint(x, y).tagName, { x: box.x + 4, y });
-  expect(inner).toBe('SPAN');
-  await page.mouse.move(x, y);
-  await page.mouse.down();
-  for (let i = 1; i <= 12; i++) await page.mouse.move(x - i * 30, y);
-  await page.mouse.up();
+  const inBand = await pagePoint(page, 2, 0.97, 0);
+  expect(box.x + box.width).toBeGreaterThan(inBand.x);
+  expect(await page.evaluate(({ x, y }) => document.elementFromPoint(x, y).tagName, { x: box.x + box.width - 3, y })).toBe('SPAN');
+  await dragBy(page, { x: box.x + 1, y }, box.width - 2);
+  expect(await page.evaluate(() => window.getSelection().toString())).toContain('words reach the margin her');
+  // A drag inside the page where no word lies (turnArea 'edges') neither turns nor selects.
+  await dragBy(page, await pagePoint(page, 2, 0.5, 0.7), -150);
+  expect(await page.evaluate(() => ({ page: window.book.page, events: window.events.length }))).toEqual({ page: 1, events: 0 });
+  // A drag from the free edge where no word lies turns.
+  await dragBy(page, await pagePoint(page, 2, 0.98, 0.7), -360);
   await page.waitForFunction(() => window.events.some((e) => e.type === 'turned'));
   expect(await page.evaluate(() => window.events.find((e) => e.type === 'turnstart').detail.drag)).toBe(true);
   expect(await page.evaluate(() => window.book.page)).toBe(3);
@@ -214,6 +232,35 @@ test('browser: with a text layer turnArea defaults to edges, and a drag from the
   await openBook(page, { startPage: 1, textLayer: false }, { textLayers: false });
   expect(await page.evaluate(() => window.book.options.turnArea)).toBe('page');
   expect(await page.locator('[data-text-layer]').count()).toBe(0);
+});
+
+test.describe('touch', () => {
+  test.use({ hasTouch: true });
+
+  test('browser (touch): a tap on text does not turn, in the page or in the edge band; a tap on the blank free edge turns', async ({ page }) => {
+    await openBook(page, { startPage: 1 });
+    const line = await spanBox(page, 2, lineText(2, 2));
+    const edge = await spanBox(page, 2, EDGE_LINE(2));
+    await page.touchscreen.tap(line.x + line.width / 2, line.y + line.height / 2);
+    await page.touchscreen.tap(edge.x + edge.width - 3, edge.y + edge.height / 2);
+    // The taps' clicks have gone by (each pointerup and click is dispatched before tap() resolves).
+    expect(await page.evaluate(() => ({ page: window.book.page, animating: window.book.animating, events: window.events.length })))
+      .toEqual({ page: 1, animating: false, events: 0 });
+    const blank = await pagePoint(page, 2, 0.97, 0.7);
+    await page.touchscreen.tap(blank.x, blank.y);
+    await page.waitForFunction(() => window.events.some((e) => e.type === 'turned'));
+    expect(await page.evaluate(() => window.book.page)).toBe(3);
+  });
+});
+
+test('browser: axe-core finds no serious or critical violation with the text layer and the passage button showing', async ({ page }) => {
+  await openBook(page, { startPage: 1 });
+  await selectLine(page, 2, 0);
+  await expect(page.locator('[data-passage-link]')).toBeVisible();
+  const { violations } = await new AxeBuilder({ page }).include('#container').analyze();
+  const serious = violations.filter((v) => v.impact === 'serious' || v.impact === 'critical')
+    .map((v) => `${v.impact} ${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
+  expect(serious).toEqual([]);
 });
 
 /** Selects line `n` of page `index` by dragging over it (viewport points from its span). */

@@ -89,8 +89,6 @@ export function makeTextLayer(createTextLayer, book, before) {
     pdf: book.pdfDocument(),
     canvas: book.canvas,
     before,
-    turnArea: book.settings.turnArea,
-    direction: book.settings.direction,
     onPassage: (passage) => {
       sharePassage(passage).then((detail) => { if (!book.destroyed()) book.emit('passagelink', detail); });
     },

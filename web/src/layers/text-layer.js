@@ -3,9 +3,6 @@
 // reader reads the page in order; a press on text selects and never turns (the spans sit above the
 // canvas, whose listeners never see it), and a selection offers "Copy link to this passage".
 // Loaded (a dynamic import) only for PDF books with the `textLayer` option on.
-import { freeEdge } from '../engine/direction.js';
-import { turnGrips } from '../input/turn-area.js';
-
 /** The passage button's text (the viewer's labels may replace it later). */
 export const PASSAGE_LINK_LABEL = 'Copy link to this passage';
 const PASSAGE_MAX_CHARS = 300;  // a link carries at most this much of the selection (search finds its start)
@@ -49,10 +46,6 @@ const TEXT_LAYER_CSS = `
 }
 .conecurl-passage-link:focus-visible { outline: var(--conecurl-focus-ring, 3px solid #1a5fd6); outline-offset: 1px; }`;
 
-// What a grip (the turn area over the text) hands to the canvas, as html-pages.js does.
-const FORWARDED = ['pointerdown', 'pointermove', 'pointerup', 'pointercancel', 'click', 'dblclick', 'wheel'];
-const EVENT_CLASS = { click: 'MouseEvent', dblclick: 'MouseEvent', wheel: 'WheelEvent' };
-
 let sharedSheet = null;
 
 // The rules go in a constructed sheet adopted by the book's document or shadow root (works under a
@@ -83,19 +76,20 @@ export function passageText(text) {
 
 /**
  * The text layer: one element `data-text-layer` (and `data-page`) per open page, over its place.
+ * Only the spans take presses: a press on a word selects (the canvas never sees it), a press between
+ * words is the canvas's, where `turnArea` rules (a PDF book's default, 'edges', keeps the page's inside
+ * for selecting). The wheel over a word is handed to the canvas (it zooms there).
  * @param {HTMLElement} root  the book's element; the layer goes in it, over the canvas, before `before`
  * @param {{ pdf: { pdfjs: object, page: (index: number) => Promise<object>, textContent: (index: number) => Promise<object> },
- *           canvas: HTMLCanvasElement, before?: Element|null, turnArea: string, direction: string,
- *           onPassage: (passage: { page: number, text: string }) => void }} book
+ *           canvas: HTMLCanvasElement, before?: Element|null, onPassage: (passage: { page: number, text: string }) => void }} book
  *   onPassage: the passage button was used on a selection of page `page`'s text
  */
-export function createTextLayer(root, { pdf, canvas, before = null, turnArea, direction, onPassage }) {
+export function createTextLayer(root, { pdf, canvas, before = null, onPassage }) {
   const layer = document.createElement('div');
   layer.className = 'conecurl-text-layers';
   layer.style.cssText = 'position:absolute;inset:0;pointer-events:none;overflow:hidden';
   root.insertBefore(layer, before);
   installStyles(root, layer);
-  const grips = document.createElement('div');  // the turn area over the text: presses there are the canvas's
   const button = document.createElement('button');
   button.type = 'button';
   button.className = 'conecurl-passage-link';
@@ -108,14 +102,12 @@ export function createTextLayer(root, { pdf, canvas, before = null, turnArea, di
   let removed = false;
   let passage = null;  // { page, text } the button offers
 
-  const forward = (event) => {
-    event.stopPropagation();
-    if (event.cancelable) event.preventDefault();
-    const Class = globalThis[EVENT_CLASS[event.type] ?? 'PointerEvent'];
-    canvas.dispatchEvent(new Class(event.type, event));
-  };
   // The wheel zooms over text as over the canvas (a press selects, a wheel never did anything else).
-  layer.addEventListener('wheel', forward, { passive: false });
+  layer.addEventListener('wheel', (event) => {
+    event.stopPropagation();
+    event.preventDefault();
+    canvas.dispatchEvent(new WheelEvent(event.type, event));
+  }, { passive: false });
 
   // While a selection is dragged, its page takes every press (pdf.js's `selecting`), so the drag
   // stays on text, never on the canvas under the gaps between words.
@@ -211,7 +203,6 @@ export function createTextLayer(root, { pdf, canvas, before = null, turnArea, di
       const open = new Set(places.map((p) => p.page));
       for (const index of pages.keys()) if (!open.has(index)) pages.delete(index);
       const laid = [];
-      const gripBoxes = [];
       for (const place of places) {
         let entry = pages.get(place.page);
         if (!entry) {
@@ -221,20 +212,8 @@ export function createTextLayer(root, { pdf, canvas, before = null, turnArea, di
         entry.place = place;
         fit(entry);
         laid.push(entry.element);
-        for (const grip of turnGrips(turnArea, place.width, place.height, freeEdge(direction, place.turned))) {
-          gripBoxes.push({ ...grip, x: grip.x + place.x, y: grip.y + place.y });
-        }
       }
-      grips.replaceChildren(...gripBoxes.map(({ x, y, width, height }) => {
-        const grip = document.createElement('div');
-        grip.className = 'conecurl-turn-grip';
-        grip.style.cssText = `position:absolute;left:${x}px;top:${y}px;width:${width}px;height:${height}px;`
-          + 'pointer-events:auto;touch-action:none;-webkit-user-select:none;user-select:none';
-        for (const type of FORWARDED) grip.addEventListener(type, forward, type === 'wheel' ? { passive: false } : undefined);
-        return grip;
-      }));
-      // Page order is reading order; the grips and the button after the text.
-      layer.replaceChildren(...laid, grips, button);
+      layer.replaceChildren(...laid, button);  // page order is reading order; the button after the text
       if (passage && !open.has(passage.page)) hidePassageButton();
       else if (passage) onSelection();  // the selection moved with its page (zoom, pan)
     },
