@@ -7,7 +7,7 @@ import { test, expect } from '@playwright/test';
 import AxeBuilder from '@axe-core/playwright';
 import { existsSync, readFileSync } from 'node:fs';
 import { PDFDocument, StandardFonts, rgb } from 'pdf-lib';
-import { openReady } from './helpers.js';
+import { openReady, withoutWebGL2 } from './helpers.js';
 import { decodePng } from './png.js';
 
 const PAGE_COUNT = 6;
@@ -318,6 +318,28 @@ test('browser: a passage link marks its passage as a search hit over the words (
   const union = over.reduce((a, m) => ({ x0: Math.min(a.x0, m.x), x1: Math.max(a.x1, m.x + m.width) }), { x0: Infinity, x1: -Infinity });
   expect(Math.abs(union.x0 - span.x)).toBeLessThan(4);
   expect(Math.abs(union.x1 - (span.x + span.width))).toBeLessThan(4);
+});
+
+test('browser: without WebGL2 the still-page fallback of a PDF book has its text layer too, over its words', async ({ page }) => {
+  await withoutWebGL2(page);
+  await openReady(page, '/tests/browser/fixtures/pdf-fixture.html');
+  const code = await page.evaluate(async (base64) => {
+    try {
+      await window.Flipbook.create(window.container, { pdf: window.bytesFromBase64(base64), display: 'double', startPage: 1 });
+      return 'no error';
+    } catch (error) {
+      window.book = error.fallback;
+      window.events = [];
+      await window.book.whenIdle();
+      return error.code;
+    }
+  }, pdfBase64);
+  expect(code).toBe('webgl2-unavailable');
+  expect(await page.evaluate(() => window.book.surface.kind)).not.toBe('webgl');
+  await waitForTextLayers(page);
+  expect(await page.evaluate(() => window.book.options.turnArea)).toBe('edges');
+  const box = await spanBox(page, 2, lineText(2, 0));
+  expectInkUnder(await inkBox(page, box, 14), box);
 });
 
 test('browser: a typeset PDF found on the machine gets a text layer whose spans lie over its words', async ({ page }) => {

@@ -162,13 +162,13 @@ export function createTextLayer(root, { pdf, canvas, before = null, onPassage })
     element.className = 'conecurl-text-layer';
     element.dataset.textLayer = '';
     element.dataset.page = String(index);
-    element.setAttribute('lang', document.documentElement.lang || '');
-    const entry = { element, place: null, size: null };
+    const entry = { element, place: null, size: null, textLayer: null };
     entry.ready = Promise.all([pdf.page(index), pdf.textContent(index)]).then(([proxy, text]) => {
       if (removed) return;
       entry.size = { width: text.width, height: text.height };
       const viewport = proxy.getViewport({ scale: Math.max(0.1, place.width / text.width) });
       const textLayer = new pdf.pdfjs.TextLayer({ textContentSource: text.content, container: element, viewport });
+      entry.textLayer = textLayer;
       return textLayer.render().then(() => {
         const end = document.createElement('div');
         end.className = 'endOfContent';
@@ -201,7 +201,11 @@ export function createTextLayer(root, { pdf, canvas, before = null, onPassage })
       if (key === shownKey) return;
       shownKey = key;
       const open = new Set(places.map((p) => p.page));
-      for (const index of pages.keys()) if (!open.has(index)) pages.delete(index);
+      for (const [index, entry] of pages) {
+        if (open.has(index)) continue;
+        entry.textLayer?.cancel();  // a layer still being laid out for a page no longer open
+        pages.delete(index);
+      }
       const laid = [];
       for (const place of places) {
         let entry = pages.get(place.page);
@@ -233,6 +237,9 @@ export function createTextLayer(root, { pdf, canvas, before = null, onPassage })
     covers(index) { return pages.has(index); },
     remove() {
       removed = true;
+      for (const entry of pages.values()) entry.textLayer?.cancel();
+      pages.clear();
+      pdf.pdfjs.TextLayer.cleanup?.();  // pdf.js's measuring canvases go, unless another layer is being laid out
       document.removeEventListener('selectionchange', onSelection);
       document.removeEventListener('pointerup', stopSelecting);
       document.removeEventListener('pointercancel', stopSelecting);
