@@ -49,6 +49,7 @@ async function openBook(page, options = {}, { hash = '', base64 = pdfBase64, tex
       pdf: window.bytesFromBase64(base64), display: 'double', duration: 400, lighting: false, shadows: false, gutter: false, on, ...options,
     });
     await window.book.whenIdle();
+    window.idleAt = performance.now();  // the first spread's pages are drawn
   }, { base64, options });
   if (textLayers) await waitForTextLayers(page);
 }
@@ -102,6 +103,9 @@ function expectInkUnder(ink, box, slack = 3) {
 
 test('browser: a PDF book lays one data-text-layer per open flat page, its spans over the rendered words, read once in page order', async ({ page }) => {
   await openBook(page, { startPage: 1 });
+  const laid = await page.evaluate(() => performance.now() - window.idleAt);
+  const spans = await page.locator('[data-text-layer] span').count();
+  console.log(`text layer: ${spans} spans over 2 open pages, there at most ${laid.toFixed(0)} ms after the first spread was drawn`);
   const layers = await page.evaluate(() => [...document.querySelectorAll('[data-text-layer]')].map((l) => ({
     page: Number(l.dataset.page), hidden: l.closest('[aria-hidden="true"]') !== null, text: l.textContent,
   })));
@@ -298,6 +302,9 @@ test('browser: a passage link round-trips: select, the button by keyboard, the l
   const { hash } = new URL(detail.url);
   await openBook(other, { hash: true }, { hash });
   expect(await other.evaluate(() => window.book.openPages)).toContain(2);
+  // Followed on a book already open (a link within the document), it turns there.
+  await other.evaluate((text) => { location.hash = `#page=5&text=${encodeURIComponent(text)}`; }, lineText(4, 0));
+  await other.waitForFunction(() => window.book.openPages.includes(4) && !window.book.animating);
   await other.close();
 });
 
