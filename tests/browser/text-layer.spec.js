@@ -137,6 +137,8 @@ test('browser: a mouse drag over a line of a flat PDF page selects that line and
   await page.mouse.move(box.x + 1, y);
   await page.mouse.down();
   for (let i = 1; i <= 10; i++) await page.mouse.move(box.x + 1 + (box.width - 2) * (i / 10), y);
+  // While the button is held the passage button stays away (it would lie under the dragging pointer).
+  expect(await page.evaluate(() => [window.getSelection().isCollapsed, document.querySelector('[data-passage-link]').hidden])).toEqual([false, true]);
   await page.mouse.up();
   const after = await page.evaluate(() => ({
     selected: window.getSelection().toString(), page: window.book.page, animating: window.book.animating,

@@ -111,10 +111,20 @@ export function createTextLayer(root, { pdf, canvas, before = null, onPassage })
 
   // While a selection is dragged, its page takes every press (pdf.js's `selecting`), so the drag
   // stays on text, never on the canvas under the gaps between words.
-  const stopSelecting = () => { for (const { element } of pages.values()) element.classList.remove('selecting'); };
+  // The passage button waits for the press to end (under a dragging pointer it would catch the drag).
+  let dragging = false;
+  const stopSelecting = () => {
+    for (const { element } of pages.values()) element.classList.remove('selecting');
+    if (!dragging) return;
+    dragging = false;
+    onSelection();
+  };
   const onDown = (event) => {
     const element = event.target.closest?.('[data-text-layer]');
-    if (element && layer.contains(element)) element.classList.add('selecting');
+    if (!element || !layer.contains(element)) return;
+    element.classList.add('selecting');
+    dragging = true;
+    hidePassageButton();
   };
   layer.addEventListener('pointerdown', onDown);
   document.addEventListener('pointerup', stopSelecting);
@@ -125,7 +135,8 @@ export function createTextLayer(root, { pdf, canvas, before = null, onPassage })
     return element && layer.contains(element) ? Number(element.dataset.page) : null;
   };
   // A selection in the layer offers the passage button near its end; any other hides it.
-  const onSelection = () => {
+  function onSelection() {
+    if (dragging) return;
     const selection = document.getSelection();
     const page = selection && !selection.isCollapsed ? pageOfNode(selection.anchorNode) : null;
     const text = page === null ? '' : passageText(selection.toString());
@@ -145,7 +156,7 @@ export function createTextLayer(root, { pdf, canvas, before = null, onPassage })
     const top = below + height <= box.height ? below : Math.max(0, last.top - box.top - height - 6);
     button.style.left = `${left}px`;
     button.style.top = `${top}px`;
-  };
+  }
   document.addEventListener('selectionchange', onSelection);
   // A press on the button keeps the selection (and the focus where it is); a click or Enter uses it.
   button.addEventListener('pointerdown', (event) => event.preventDefault());
@@ -225,8 +236,9 @@ export function createTextLayer(root, { pdf, canvas, before = null, onPassage })
     hide() {
       if (shownKey === '') return;
       shownKey = '';
-      hidePassageButton();
+      dragging = false;
       stopSelecting();
+      hidePassageButton();
       layer.replaceChildren();
     },
     /** The layers of the open pages, in page order. */
