@@ -6,7 +6,9 @@ import path from 'node:path';
 import zlib from 'node:zlib';
 import { build } from 'vite';
 
-export const LIBRARIES = ['conecurl', 'page-flip', 'turnjs'];
+// The contenders: conecurl, its two peers, and the two floors (issue 24: the smallest WebGL and 2D-canvas
+// books, scripts/bench/libraries/floor-*.js), whose adapters are the libraries themselves.
+export const LIBRARIES = ['conecurl', 'page-flip', 'turnjs', 'floor-webgl', 'floor-2d'];
 
 const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
 
@@ -15,6 +17,8 @@ const LIBRARY_EXPORTS = {
   conecurl: `export { Flipbook } from ${JSON.stringify(path.join(root, 'web/src/book/flipbook.js'))};`,
   'page-flip': "export { PageFlip } from 'page-flip';",
   turnjs: "import $ from 'jquery'; import 'turn.js'; export default $;",
+  'floor-webgl': `export { mount } from ${JSON.stringify(path.join(root, 'scripts/bench/libraries/floor-webgl.js'))};`,
+  'floor-2d': `export { mount } from ${JSON.stringify(path.join(root, 'scripts/bench/libraries/floor-2d.js'))};`,
 };
 
 function libraryOnlyPlugin() {

@@ -15,10 +15,11 @@ const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
  * @param {string} o.url          harness URL with the query for this library and configuration
  * @param {{width: number, height: number}} o.viewport
  * @param {number} o.turns        turns to make
+ * @param {number} o.askedTurnMs  the turn duration the page was asked for (returned with the result)
  * @param {number} o.turnTimeoutMs
  * @param {number} o.idleMs       how long idle CPU is sampled
  */
-export async function measureOnce({ url, viewport, turns, turnTimeoutMs, idleMs }) {
+export async function measureOnce({ url, viewport, turns, askedTurnMs, turnTimeoutMs, idleMs }) {
   const browser = await chromium.launch(chromiumLaunchOptions());
   const errors = [];
   try {
@@ -84,6 +85,7 @@ export async function measureOnce({ url, viewport, turns, turnTimeoutMs, idleMs 
       settleMs,
       turns: turnTimes.map((t) => ({ start: t.start - stamps[0], end: t.end - stamps[0] })),
       turnSeconds: wallTurns,
+      askedTurnMs,
       intervals,
       frames,
       perFrame: {

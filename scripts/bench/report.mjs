@@ -1,9 +1,17 @@
-// Turns the raw runs of `npm run bench` into the summary (medians with ranges, conecurl/peer ratios
-// from the same repetition, the issue's targets), a Markdown table and an SVG chart of frame intervals.
+// Turns the raw runs of `npm run bench` into the summary (medians with ranges, ratios of conecurl to every
+// other contender from the same repetition, the targets against the floor and the peers), a Markdown
+// table and an SVG chart of frame intervals.
 import { summarize } from './metrics.mjs';
 
-export const LIBRARY_NAMES = { conecurl: 'conecurl', 'page-flip': 'page-flip 2.0.7', turnjs: 'turn.js 1.0.5 + jQuery 1.12.0' };
+export const LIBRARY_NAMES = {
+  conecurl: 'conecurl', 'page-flip': 'page-flip 2.0.7', turnjs: 'turn.js 1.0.5 + jQuery 1.12.0',
+  'floor-webgl': 'WebGL floor (scripts/bench/libraries/floor-webgl.js)', 'floor-2d': '2D-canvas floor (scripts/bench/libraries/floor-2d.js)',
+};
+// Column heads of the per-configuration tables.
+const SHORT_NAMES = { conecurl: 'conecurl', 'page-flip': 'page-flip', turnjs: 'turn.js', 'floor-webgl': 'WebGL floor', 'floor-2d': '2D floor' };
 const PEERS = ['page-flip', 'turnjs'];
+// What conecurl is compared with: the peers, and the floors (the smallest books that turn a page).
+const OTHERS = Object.keys(LIBRARY_NAMES).filter((lib) => lib !== 'conecurl');
 const MB = 1024 * 1024;
 
 const maxTextures = (r) => Math.max(...(r.turnStats || []).map((s) => s.pageTextures ?? NaN), r.stats.pageTextures ?? NaN);
@@ -18,7 +26,10 @@ export const METRICS = [
   ['maxOverMedian', 'max / median frame interval', 'x', 2, (r) => summarize(r.intervals).max / summarize(r.intervals).median],
   ['framesOver20', 'frames over 20 ms', '', 0, (r) => r.intervals.filter((i) => i > 20).length],
   ['frames', 'frames during the turns', '', 0, (r) => r.frames],
+  ['turnOverAsked', 'turn duration in the page / asked duration, mean over the turns', 'x', 3,
+    (r) => r.turns.reduce((sum, t) => sum + t.end - t.start, 0) / r.turns.length / r.askedTurnMs],
   ['mainThreadMsPerFrame', 'main-thread busy per frame (TaskDuration, wall time of tasks)', 'ms', 2, (r) => r.perFrame.mainThreadMs],
+  ['mainThreadMsTurns', 'main-thread busy over the turns (TaskDuration)', 'ms', 0, (r) => r.perFrame.mainThreadMs * r.frames],
   ['rendererCpuMsPerFrame', 'renderer process CPU per frame', 'ms', 2, (r) => r.perFrame.rendererCpuMs],
   ['gpuCpuMsPerFrame', 'GPU process CPU per frame', 'ms', 1, (r) => r.perFrame.gpuCpuMs],
   ['idleCpuPercent', 'idle CPU, renderer + GPU (% of a core)', '', 1, (r) => r.idle.totalCpuPercent],
@@ -30,9 +41,63 @@ export const METRICS = [
   ['pageTextures', 'page textures resident after the turns (conecurl)', '', 0, (r) => r.stats.pageTextures ?? NaN],
   ['pageTexturesMax', 'page textures resident, most after any turn (conecurl)', '', 0, (r) => maxTextures(r)],
 ];
-// Ratios conecurl / peer are shown for these (the others are counts or conecurl-only).
-const RATIO_METRICS = ['firstFrameMs', 'turnSeconds', 'frameMedianMs', 'frameP95Ms', 'frameMaxMs', 'mainThreadMsPerFrame',
-  'rendererCpuMsPerFrame', 'gpuCpuMsPerFrame', 'idleCpuPercent', 'jsHeapMB', 'rendererPssMB', 'gpuPssMB'];
+// Ratios conecurl / other contender are shown for these (the others are conecurl-only or ratios already).
+const RATIO_METRICS = ['firstFrameMs', 'turnSeconds', 'frameMedianMs', 'frameP95Ms', 'frameMaxMs', 'frames', 'mainThreadMsPerFrame',
+  'mainThreadMsTurns', 'rendererCpuMsPerFrame', 'gpuCpuMsPerFrame', 'idleCpuPercent', 'jsHeapMB', 'rendererPssMB', 'gpuPssMB'];
+
+/**
+ * The targets of issue 24, against the floor: the one place they are written. Each compares a figure of
+ * conecurl, per configuration (median over the repetitions), with `against`: a contender (the ratio
+ * conecurl / it within each repetition), 'asked' (the figure is already over the asked duration), or
+ * 'KB' (load bytes up front, gzip -9, all configurations). `most`: the figure must be at most `limit`;
+ * `least`: at least.
+ */
+export const FLOOR_TARGETS = [
+  { id: 'floor-gpu', figure: 'GPU-process CPU per turning frame', metric: 'gpuCpuMsPerFrame', unit: 'ms', against: 'floor-webgl', bound: 'most', limit: 1.3 },
+  { id: 'floor-frames', figure: 'frames drawn during the turns', metric: 'frames', unit: '', against: 'floor-webgl', bound: 'least', limit: 0.8 },
+  { id: 'floor-main', figure: 'main-thread busy time over the turns', metric: 'mainThreadMsTurns', unit: 'ms', against: 'floor-webgl', bound: 'most', limit: 1.1 },
+  { id: 'turn-asked', figure: 'turn duration (in the page, mean over the turns)', metric: 'turnOverAsked', unit: '', against: 'asked', bound: 'most', limit: 1.05 },
+  { id: 'load', figure: 'load up front for a book of images, JS + wasm, gzip -9', metric: 'totalGzip', unit: 'KB', against: 'KB', bound: 'most', limit: 30 },
+];
+
+/** How a floor target's limit reads: "<= 1.3x the WebGL floor", ">= 0.8x ...", "<= 30 KB". */
+export function floorLimitText({ against, bound, limit }) {
+  const sign = bound === 'most' ? '<=' : '>=';
+  if (against === 'KB') return `${sign} ${limit} KB`;
+  if (against === 'asked') return `${sign} ${limit}x the asked duration`;
+  return `${sign} ${limit}x the ${SHORT_NAMES[against]}'s`;
+}
+
+/**
+ * FLOOR_TARGETS measured: [{ id, name, limit, values: [{ config, value, detail }], holds }] where
+ * `value` is the ratio (or KB), `detail` the figures it comes from, and `holds` true, false, or null
+ * when nothing was measured (the contender it compares with was not in the run).
+ */
+function evaluateFloorTargets(configs, summary, ratios, loadBytes) {
+  return FLOOR_TARGETS.map((target) => {
+    const { metric, against, unit } = target;
+    const decimals = METRICS.find(([key]) => key === metric)?.[3] ?? 1;
+    const figure = (lib, c) => fmt(summary[c.id][lib]?.[metric]?.median, decimals);
+    let values;
+    if (against === 'KB') {
+      const bytes = loadBytes?.conecurl;
+      values = [{ config: 'all', value: bytes ? bytes.totalGzip / 1024 : NaN,
+        detail: bytes ? `JS ${(bytes.jsGzip / 1024).toFixed(1)} KB + wasm ${(bytes.wasmGzip / 1024).toFixed(1)} KB` : '' }];
+    } else if (against === 'asked') {
+      values = configs.map((c) => ({ config: c.id, value: summary[c.id].conecurl[metric]?.median ?? NaN, detail: '' }));
+    } else {
+      values = configs.map((c) => ({
+        config: c.id,
+        value: ratios[c.id][metric]?.[against]?.median ?? NaN,
+        detail: `${figure('conecurl', c)} vs ${figure(against, c)}${unit ? ` ${unit}` : ''}`,
+      }));
+    }
+    const measured = values.filter((v) => Number.isFinite(v.value));
+    const within = (v) => (target.bound === 'most' ? v <= target.limit : v >= target.limit);
+    const holds = measured.length === 0 ? null : measured.length === values.length && measured.every((v) => within(v.value));
+    return { id: target.id, name: target.figure, limit: floorLimitText(target), values, holds };
+  });
+}
 
 const range = (values) => {
   const finite = values.filter(Number.isFinite);
@@ -57,19 +122,22 @@ export function summarizeRuns(runs, configs, loadBytes) {
     const reps = [...new Set(ok.map((r) => r.rep))];
     for (const [key, , , , get] of METRICS.filter(([key]) => RATIO_METRICS.includes(key))) {
       const perPeer = { bestPeer: [] };
-      for (const peer of PEERS) perPeer[peer] = [];
+      for (const other of OTHERS) perPeer[other] = [];
       for (const rep of reps) {
         const value = (lib) => { const run = ok.find((r) => r.rep === rep && r.lib === lib); return run ? get(run.result) : NaN; };
         const mine = value('conecurl');
+        for (const other of OTHERS) perPeer[other].push(mine / value(other));
         const peerValues = PEERS.map(value);
-        PEERS.forEach((peer, i) => perPeer[peer].push(mine / peerValues[i]));
         const finitePeers = peerValues.filter(Number.isFinite);
         perPeer.bestPeer.push(finitePeers.length ? mine / Math.min(...finitePeers) : NaN);
       }
       ratios[config.id][key] = Object.fromEntries(Object.entries(perPeer).map(([k, v]) => [k, range(v)]));
     }
   }
-  return { summary, ratios, targets: evaluateTargets(runs, configs, summary, ratios, loadBytes) };
+  return {
+    summary, ratios, targets: evaluateTargets(runs, configs, summary, ratios, loadBytes),
+    floorTargets: evaluateFloorTargets(configs, summary, ratios, loadBytes),
+  };
 }
 
 function evaluateTargets(runs, configs, summary, ratios, loadBytes) {
@@ -122,9 +190,21 @@ function evaluateTargets(runs, configs, summary, ratios, loadBytes) {
 
 const fmt = (value, decimals) => (Number.isFinite(value) ? value.toFixed(decimals) : '–');
 const cell = (r, decimals) => (r ? (r.n > 1 && r.min !== r.max ? `${fmt(r.median, decimals)} (${fmt(r.min, decimals)}–${fmt(r.max, decimals)})` : fmt(r.median, decimals)) : '–');
+const verdict = (holds) => (holds === null ? 'not measured' : holds ? 'holds' : '**does not hold**');
 
-/** The Markdown report: setting, targets, then one table per configuration. */
-export function markdown({ meta, loadBytes, summary, ratios, targets, configs }) {
+/** The floor targets as a Markdown table: each with the measured value and whether it holds. */
+export function floorTargetTable(floorTargets) {
+  const lines = ['| target | limit | measured (conecurl vs the floor) | verdict |', '|---|---|---|---|'];
+  for (const t of floorTargets) {
+    const unit = t.id === 'load' ? ' KB' : 'x';
+    const measured = t.values.map((v) => `${v.config}: ${fmt(v.value, 2)}${unit}${v.detail ? ` (${v.detail})` : ''}`).join('; ');
+    lines.push(`| ${t.name} | ${t.limit} | ${measured} | ${verdict(t.holds)} |`);
+  }
+  return lines;
+}
+
+/** The Markdown report: setting, targets (against the floor, then the peers), then one table per configuration. */
+export function markdown({ meta, loadBytes, summary, ratios, targets, floorTargets = [], configs }) {
   const lines = [];
   lines.push(`# conecurl benchmark`);
   lines.push('');
@@ -135,9 +215,17 @@ export function markdown({ meta, loadBytes, summary, ratios, targets, configs })
     + `end ${meta.loadavgEnd.map((v) => v.toFixed(2)).join(' / ')} — the machine is shared, so absolute times vary from run to run; `
     + 'ratios come from the same repetition.');
   lines.push('');
-  lines.push('Cells: median over repetitions (range). Ratios: conecurl / peer in the same repetition, median (range).');
+  lines.push('Cells: median over repetitions (range). Ratios: conecurl / other contender in the same repetition, median (range).');
   lines.push('');
-  lines.push('## Targets');
+  lines.push('## Targets against the floor');
+  lines.push('');
+  lines.push('The floors are the smallest books that turn a page on this platform, measured in the same run: the WebGL floor '
+    + '(a viewport-sized canvas, the open pages as textures, three textured quads per frame, the leaf rotated about the spine) '
+    + 'and the same book on a 2D canvas. Ratios are conecurl / WebGL floor within a repetition, median over the repetitions.');
+  lines.push('');
+  lines.push(...floorTargetTable(floorTargets));
+  lines.push('');
+  lines.push('## Targets against the peers');
   lines.push('');
   lines.push('| target | limit | measured | holds |');
   lines.push('|---|---|---|---|');
@@ -161,14 +249,15 @@ export function markdown({ meta, loadBytes, summary, ratios, targets, configs })
     lines.push('');
     lines.push(`## ${config.label}`);
     lines.push('');
-    lines.push(`| metric | conecurl | page-flip | turn.js | conecurl / page-flip | conecurl / turn.js |`);
-    lines.push('|---|---|---|---|---|---|');
+    const libs = Object.keys(LIBRARY_NAMES);
+    lines.push(`| metric | ${libs.map((lib) => SHORT_NAMES[lib]).join(' | ')} | ${OTHERS.map((lib) => `conecurl / ${SHORT_NAMES[lib]}`).join(' | ')} |`);
+    lines.push(`|---|${libs.map(() => '---').join('|')}|${OTHERS.map(() => '---').join('|')}|`);
     for (const [key, label, unit, decimals] of METRICS) {
       const s = summary[config.id];
       const r = ratios[config.id][key];
       const name = unit && unit !== 'x' ? `${label} (${unit})` : label;
-      lines.push(`| ${name} | ${cell(s.conecurl[key], decimals)} | ${cell(s['page-flip'][key], decimals)} | ${cell(s.turnjs[key], decimals)} | `
-        + `${r ? cell(r['page-flip'], 2) : ''} | ${r ? cell(r.turnjs, 2) : ''} |`);
+      lines.push(`| ${name} | ${libs.map((lib) => cell(s[lib][key], decimals)).join(' | ')} | `
+        + `${OTHERS.map((lib) => (r ? cell(r[lib], 2) : '')).join(' | ')} |`);
     }
     const failed = Object.entries(summary[config.id]).filter(([, s]) => s.failed).map(([lib, s]) => `${lib}: ${s.failed}`);
     if (failed.length) lines.push(`\nFailed runs (see the JSON for the errors): ${failed.join(', ')}`);
@@ -180,12 +269,13 @@ export function markdown({ meta, loadBytes, summary, ratios, targets, configs })
 // The short version docs/benchmark.md shows: one row per configuration and library, then the targets.
 const README_COLUMNS = [
   ['firstFrameMs', 'first frame ms', 0], ['turnSeconds', 's / turn', 2], ['frameMedianMs', 'frame median ms', 0],
-  ['frameP95Ms', 'p95 ms', 0], ['maxOverMedian', 'max / median', 1], ['mainThreadMsPerFrame', 'main ms / frame', 1],
+  ['frameP95Ms', 'p95 ms', 0], ['maxOverMedian', 'max / median', 1], ['frames', 'frames', 0], ['mainThreadMsPerFrame', 'main ms / frame', 1],
+  ['mainThreadMsTurns', 'main ms over the turns', 0],
   ['gpuCpuMsPerFrame', 'GPU ms / frame', 0], ['idleCpuPercent', 'idle CPU %', 1], ['jsHeapMB', 'JS heap MB', 1],
   ['rendererPssMB', 'renderer MB', 0],
 ];
 
-export function readmeTables({ meta, loadBytes, summary, targets, configs }) {
+export function readmeTables({ meta, loadBytes, summary, targets, floorTargets = [], configs }) {
   const lines = [];
   lines.push(`Run of ${meta.date.slice(0, 10)}: ${meta.reps} repetitions, ${meta.turns} turns of ${meta.turnDurationMs} ms, ${meta.cpus} CPUs, `
     + `load average ${meta.loadavgStart[0].toFixed(1)} at the start and ${meta.loadavgEnd[0].toFixed(1)} at the end, ${Math.round(meta.wallSeconds / 60)} min. `
@@ -202,6 +292,12 @@ export function readmeTables({ meta, loadBytes, summary, targets, configs }) {
   lines.push('');
   lines.push(`Load bytes, gzip -9: ${Object.entries(loadBytes).map(([lib, b]) => `${lib} ${(b.totalGzip / 1024).toFixed(1)} KB`).join(', ')}.`);
   lines.push('');
+  lines.push('Targets against the WebGL floor (the smallest WebGL book that turns a page, in the same run):');
+  lines.push('');
+  lines.push(...floorTargetTable(floorTargets));
+  lines.push('');
+  lines.push('Targets against the peers:');
+  lines.push('');
   lines.push('| target | limit | measured | holds |');
   lines.push('|---|---|---|---|');
   for (const t of targets) {
@@ -211,7 +307,7 @@ export function readmeTables({ meta, loadBytes, summary, targets, configs }) {
   return lines.join('\n');
 }
 
-const COLORS = { conecurl: '#d6336c', 'page-flip': '#1c7ed6', turnjs: '#37b24d' };
+const COLORS = { conecurl: '#d6336c', 'page-flip': '#1c7ed6', turnjs: '#37b24d', 'floor-webgl': '#495057', 'floor-2d': '#f08c00' };
 
 /** An SVG of the rAF frame intervals over the turns, one panel per configuration, log-scale ms (median repetition). */
 export function frameChart(runs, configs) {
@@ -274,7 +370,7 @@ export function frameChart(runs, configs) {
     }
   });
   let lx = 12;
-  for (const [lib, name] of Object.entries(LIBRARY_NAMES)) {
+  for (const [lib, name] of Object.entries({ ...LIBRARY_NAMES, 'floor-webgl': SHORT_NAMES['floor-webgl'], 'floor-2d': SHORT_NAMES['floor-2d'] })) {
     parts.push(`<rect x="${lx}" y="${height - 20}" width="14" height="4" fill="${COLORS[lib]}"/><text x="${lx + 20}" y="${height - 14}">${name}</text>`);
     lx += 40 + name.length * 7;
   }

@@ -1,7 +1,7 @@
-// `npm run bench`: conecurl against page-flip and turn.js in one run, in headless Chromium on this
-// machine. Generates the page images, bundles the libraries, measures every library x configuration
+// `npm run bench`: conecurl against page-flip, turn.js and the two floors (the smallest WebGL and 2D-canvas
+// books) in one run, in headless Chromium on this machine. Generates the page images, bundles the libraries, measures every library x configuration
 // x repetition in a fresh browser (order alternated), then writes JSON, Markdown and an SVG chart.
-// Usage: node scripts/bench/run.mjs [--reps 3] [--configs double-20,single-1000] [--libs conecurl,turnjs]
+// Usage: node scripts/bench/run.mjs [--reps 3] [--configs double-20,single-1000] [--libs conecurl,floor-webgl]
 //        [--duration 600] [--turns 10] [--port 8095] [--out bench-results] [--publish]
 import { spawn } from 'node:child_process';
 import fs from 'node:fs';
@@ -139,7 +139,9 @@ async function main() {
       const t0 = Date.now();
       const run = { rep, config: config.id, lib, loadavg: os.loadavg()[0] };
       try {
-        run.result = await measureOnce({ url, viewport: config.viewport, turns: options.turns, turnTimeoutMs: 30000, idleMs: options.idleMs });
+        run.result = await measureOnce({
+          url, viewport: config.viewport, turns: options.turns, askedTurnMs: options.duration, turnTimeoutMs: 30000, idleMs: options.idleMs,
+        });
         const f = summarize(run.result.intervals);
         console.log(`[${index + 1}/${plan.length}] rep ${rep} ${config.id} ${lib}: first frame ${run.result.firstFrameMs.toFixed(0)} ms, `
           + `frame median ${f.median.toFixed(0)} ms, max ${f.max.toFixed(0)} ms, main ${run.result.perFrame.mainThreadMs.toFixed(1)} ms/frame, `
@@ -168,9 +170,9 @@ async function main() {
     idleMs: options.idleMs,
     wallSeconds: (Date.now() - started) / 1000,
   };
-  const { summary, ratios, targets } = summarizeRuns(runs, configs, loadBytes);
-  const report = { meta, configs, loadBytes, targets, summary, ratios, runs };
-  const md = markdown({ meta, loadBytes, summary, ratios, targets, configs });
+  const { summary, ratios, targets, floorTargets } = summarizeRuns(runs, configs, loadBytes);
+  const report = { meta, configs, loadBytes, floorTargets, targets, summary, ratios, runs };
+  const md = markdown({ meta, loadBytes, summary, ratios, targets, floorTargets, configs });
   fs.mkdirSync(out, { recursive: true });
   fs.writeFileSync(path.join(out, 'latest.json'), `${JSON.stringify(report, null, 1)}\n`);
   fs.writeFileSync(path.join(out, 'latest.md'), md);
@@ -179,7 +181,7 @@ async function main() {
     const docs = path.join(root, 'docs/bench');
     fs.mkdirSync(docs, { recursive: true });
     for (const file of ['latest.json', 'latest.md', 'frame-intervals.svg']) fs.copyFileSync(path.join(out, file), path.join(docs, file));
-    publishToBenchDoc(readmeTables({ meta, loadBytes, summary, targets, configs }));
+    publishToBenchDoc(readmeTables({ meta, loadBytes, summary, targets, floorTargets, configs }));
   }
   console.log(`\n${md}`);
   console.log(`bench: wrote ${path.relative(root, out)}/latest.{json,md} and frame-intervals.svg${options.publish ? `, copied to docs/bench/ and ${BENCH_DOC}` : ''}`

@@ -1,10 +1,11 @@
 // Node tests of the benchmark's arithmetic and page images (not of any speed): order statistics,
-// ratios taken within one repetition, the target verdicts, and that the generated PNGs are valid.
+// ratios taken within one repetition, the target verdicts (against the peers and against the floor),
+// that the report shows the floor targets, and that the generated PNGs are valid.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import zlib from 'node:zlib';
 import { summarize } from '../../scripts/bench/metrics.mjs';
-import { summarizeRuns } from '../../scripts/bench/report.mjs';
+import { FLOOR_TARGETS, floorLimitText, markdown, readmeTables, summarizeRuns } from '../../scripts/bench/report.mjs';
 import { drawPage, encodePalettePng, PAGE_HEIGHT, PAGE_WIDTH } from '../../scripts/bench/page-images.mjs';
 
 test('node: bench summarize gives the median of an even count and the nearest-rank p95', () => {
@@ -18,13 +19,14 @@ test('node: bench summarize gives the median of an even count and the nearest-ra
 });
 
 // A run result with just what the report reads; `scale` multiplies every figure.
-function fakeResult({ frameMs, mainMs, gpuMs, idle = 0.5, first = 1000, textures }) {
+function fakeResult({ frameMs, mainMs, gpuMs, idle = 0.5, first = 1000, textures, frames = 3, turnMs = 1000, askedTurnMs = 1000 }) {
   return {
     firstFrameMs: first,
-    turnSeconds: 1,
-    turns: [{ start: 0, end: 1000 }],
-    intervals: [frameMs, frameMs, frameMs],
-    frames: 3,
+    turnSeconds: turnMs / 1000,
+    askedTurnMs,
+    turns: [{ start: 0, end: turnMs }],
+    intervals: Array.from({ length: frames }, () => frameMs),
+    frames,
     perFrame: { mainThreadMs: mainMs, scriptMs: 0, rendererCpuMs: mainMs, gpuCpuMs: gpuMs },
     idle: { totalCpuPercent: idle, mainThreadPercent: 0 },
     memory: { jsHeapBytes: 1 << 20, rendererPssBytes: 1 << 20, gpuPssBytes: 1 << 20 },
@@ -117,4 +119,118 @@ test('node: bench page images are valid palette PNGs with the page number in ink
   assert.ok(inkInNumber > 2000, `the page number is drawn (${inkInNumber} ink pixels)`);
   assert.notDeepEqual(drawPage(1), drawPage(2), 'pages differ');
   assert.deepEqual(drawPage(7), drawPage(7), 'pages are the same on every run');
+});
+
+// A small run with conecurl, the two floors and the peers in two configurations, one repetition:
+// double-20 meets every floor target, single-20 misses the GPU and frames targets.
+function floorFixture({ withFloor = true } = {}) {
+  const configs = [
+    { id: 'double-20', display: 'double', pages: 20, label: 'Two-page spread, 1600x1100, 20 pages' },
+    { id: 'single-20', display: 'single', pages: 20, label: 'Single page, 800x1100, 20 pages' },
+  ];
+  const figures = {
+    'double-20': {
+      conecurl: { gpuMs: 120, frames: 45, mainMs: 4, turnMs: 620 },
+      'floor-webgl': { gpuMs: 100, frames: 50, mainMs: 4, turnMs: 610 },
+      'floor-2d': { gpuMs: 40, frames: 30, mainMs: 8, turnMs: 640 },
+      'page-flip': { gpuMs: 150, frames: 40, mainMs: 4, turnMs: 660 },
+      turnjs: { gpuMs: 160, frames: 38, mainMs: 8, turnMs: 630 },
+    },
+    'single-20': {
+      conecurl: { gpuMs: 60, frames: 30, mainMs: 6, turnMs: 690 },
+      'floor-webgl': { gpuMs: 40, frames: 60, mainMs: 2, turnMs: 610 },
+      'floor-2d': { gpuMs: 20, frames: 40, mainMs: 4, turnMs: 610 },
+      'page-flip': { gpuMs: 60, frames: 50, mainMs: 2, turnMs: 480 },
+      turnjs: { gpuMs: 70, frames: 45, mainMs: 4, turnMs: 620 },
+    },
+  };
+  const runs = [];
+  for (const [config, libs] of Object.entries(figures)) {
+    for (const [lib, f] of Object.entries(libs)) {
+      if (!withFloor && lib === 'floor-webgl') continue;
+      runs.push({ rep: 1, config, lib, result: fakeResult({ frameMs: 600 / f.frames, askedTurnMs: 600, ...f }) });
+    }
+  }
+  const loadBytes = { conecurl: { js: 0, wasm: 0, totalGzip: 40 * 1024, jsGzip: 25 * 1024, wasmGzip: 15 * 1024 } };
+  const meta = {
+    date: '2026-11-25T17:00:00Z', chromium: 'Chromium 0', cpus: 2, reps: 1, turns: 1, turnDurationMs: 600, idleMs: 2000,
+    wallSeconds: 60, loadavgStart: [1, 1, 1], loadavgEnd: [1, 1, 1],
+  };
+  return { configs, runs, loadBytes, meta };
+}
+
+test('node: bench floor targets are the issue\'s five, each a ratio to the WebGL floor, the asked duration or KB', () => {
+  assert.deepEqual(FLOOR_TARGETS.map((t) => [t.id, floorLimitText(t)]), [
+    ['floor-gpu', "<= 1.3x the WebGL floor's"],
+    ['floor-frames', ">= 0.8x the WebGL floor's"],
+    ['floor-main', "<= 1.1x the WebGL floor's"],
+    ['turn-asked', '<= 1.05x the asked duration'],
+    ['load', '<= 30 KB'],
+  ]);
+});
+
+test('node: bench floor targets measure conecurl against the WebGL floor per configuration and say which hold', () => {
+  const { configs, runs, loadBytes } = floorFixture();
+  const { floorTargets, ratios } = summarizeRuns(runs, configs, loadBytes);
+  const byId = Object.fromEntries(floorTargets.map((t) => [t.id, t]));
+  const values = (id) => byId[id].values.map((v) => [v.config, Number(v.value.toFixed(4))]);
+  assert.deepEqual(values('floor-gpu'), [['double-20', 1.2], ['single-20', 1.5]]);
+  assert.equal(byId['floor-gpu'].holds, false, 'single-20 is 1.5x the floor');
+  assert.deepEqual(values('floor-frames'), [['double-20', 0.9], ['single-20', 0.5]]);
+  assert.equal(byId['floor-frames'].holds, false);
+  // Over the turns, not per frame: 4 ms x 45 frames against 4 ms x 50, and 6 x 30 against 2 x 60.
+  assert.deepEqual(values('floor-main'), [['double-20', 0.9], ['single-20', 1.5]]);
+  assert.equal(byId['floor-main'].holds, false);
+  assert.deepEqual(values('turn-asked'), [['double-20', 1.0333], ['single-20', 1.15]]);
+  assert.equal(byId['turn-asked'].holds, false);
+  assert.deepEqual(values('load'), [['all', 40]]);
+  assert.equal(byId.load.holds, false);
+  // The same ratios sit beside the peers' in the tables.
+  assert.equal(ratios['double-20'].gpuCpuMsPerFrame['floor-webgl'].median, 1.2);
+  assert.equal(ratios['double-20'].gpuCpuMsPerFrame['floor-2d'].median, 3);
+  assert.equal(ratios['double-20'].gpuCpuMsPerFrame['page-flip'].median, 0.8);
+
+  // Only the double spread measured: every target but the load then holds.
+  const double = summarizeRuns(runs.filter((r) => r.config === 'double-20'), [configs[0]], loadBytes).floorTargets;
+  assert.deepEqual(double.map((t) => [t.id, t.holds]),
+    [['floor-gpu', true], ['floor-frames', true], ['floor-main', true], ['turn-asked', true], ['load', false]]);
+});
+
+test('node: bench report and published tables show every floor target with its limit, measured value and verdict', () => {
+  const { configs, runs, loadBytes, meta } = floorFixture();
+  const { summary, ratios, targets, floorTargets } = summarizeRuns(runs.filter((r) => r.config === 'double-20'), [configs[0]], loadBytes);
+  const md = markdown({ meta, loadBytes, summary, ratios, targets, floorTargets, configs: [configs[0]] });
+  const published = readmeTables({ meta, loadBytes, summary, targets, floorTargets, configs: [configs[0]] });
+  const expected = {
+    'floor-gpu': ['double-20: 1.20x (120.0 vs 100.0 ms)', 'holds'],
+    'floor-frames': ['double-20: 0.90x (45 vs 50)', 'holds'],
+    'floor-main': ['double-20: 0.90x (180 vs 200 ms)', 'holds'],
+    'turn-asked': ['double-20: 1.03x', 'holds'],
+    load: ['all: 40.00 KB (JS 25.0 KB + wasm 15.0 KB)', '**does not hold**'],
+  };
+  for (const text of [md, published]) {
+    for (const target of FLOOR_TARGETS) {
+      const row = text.split('\n').find((line) => line.startsWith(`| ${target.figure} |`));
+      assert.ok(row, `a row for ${target.id}`);
+      const [measured, verdict] = expected[target.id];
+      assert.equal(row, `| ${target.figure} | ${floorLimitText(target)} | ${measured} | ${verdict} |`);
+    }
+  }
+  assert.match(published, /^\| double-20 \| floor-webgl \| /m, 'the published table has a row for each floor');
+  assert.match(published, /^\| double-20 \| floor-2d \| /m);
+  // The per-configuration table has a column per contender and conecurl's ratio to each.
+  const header = md.split('\n').find((line) => line.startsWith('| metric |'));
+  assert.equal(header, '| metric | conecurl | page-flip | turn.js | WebGL floor | 2D floor | conecurl / page-flip | conecurl / turn.js '
+    + '| conecurl / WebGL floor | conecurl / 2D floor |');
+  const gpuRow = md.split('\n').find((line) => line.startsWith('| GPU process CPU per frame'));
+  assert.equal(gpuRow, '| GPU process CPU per frame (ms) | 120.0 | 150.0 | 160.0 | 100.0 | 40.0 | 0.80 | 0.75 | 1.20 | 3.00 |');
+});
+
+test('node: bench floor targets say "not measured" when the WebGL floor was not in the run', () => {
+  const { configs, runs, loadBytes, meta } = floorFixture({ withFloor: false });
+  const { summary, ratios, targets, floorTargets } = summarizeRuns(runs, configs, loadBytes);
+  assert.deepEqual(floorTargets.map((t) => t.holds), [null, null, null, false, false]);
+  const md = markdown({ meta, loadBytes, summary, ratios, targets, floorTargets, configs });
+  const gpuRow = md.split('\n').find((line) => line.startsWith('| GPU-process CPU per turning frame |'));
+  assert.match(gpuRow, /\| not measured \|$/);
 });
