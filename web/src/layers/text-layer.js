@@ -49,7 +49,7 @@ const TEXT_LAYER_CSS = `
 let sharedSheet = null;
 
 // The rules go in a constructed sheet adopted by the book's document or shadow root (works under a
-// strict CSP), else a <style> in the layer.
+// strict CSP), else a <style> before the layer (returned, to go with it).
 function installStyles(root, layer) {
   const scope = root.getRootNode();
   if (typeof CSSStyleSheet === 'function' && 'replaceSync' in CSSStyleSheet.prototype && scope && 'adoptedStyleSheets' in scope) {
@@ -58,11 +58,12 @@ function installStyles(root, layer) {
       sharedSheet.replaceSync(TEXT_LAYER_CSS);
     }
     if (!scope.adoptedStyleSheets.includes(sharedSheet)) scope.adoptedStyleSheets = [...scope.adoptedStyleSheets, sharedSheet];
-    return;
+    return null;
   }
   const style = document.createElement('style');
   style.textContent = TEXT_LAYER_CSS;
-  layer.append(style);
+  layer.before(style);
+  return style;
 }
 
 /** A selection's text as a passage link carries it: white space folded, at most PASSAGE_MAX_CHARS. */
@@ -89,7 +90,7 @@ export function createTextLayer(root, { pdf, canvas, before = null, onPassage })
   layer.className = 'conecurl-text-layers';
   layer.style.cssText = 'position:absolute;inset:0;pointer-events:none;overflow:hidden';
   root.insertBefore(layer, before);
-  installStyles(root, layer);
+  const style = installStyles(root, layer);
   const button = document.createElement('button');
   button.type = 'button';
   button.className = 'conecurl-passage-link';
@@ -97,7 +98,7 @@ export function createTextLayer(root, { pdf, canvas, before = null, onPassage })
   button.textContent = PASSAGE_LINK_LABEL;
   button.hidden = true;
 
-  const pages = new Map();  // page index -> { element, ready: Promise, place }
+  const pages = new Map();  // page index -> { element, place, size (the page in PDF units), textLayer }
   let shownKey = '';
   let removed = false;
   let passage = null;  // { page, text } the button offers
@@ -174,7 +175,7 @@ export function createTextLayer(root, { pdf, canvas, before = null, onPassage })
     element.dataset.textLayer = '';
     element.dataset.page = String(index);
     const entry = { element, place: null, size: null, textLayer: null };
-    entry.ready = Promise.all([pdf.page(index), pdf.textContent(index)]).then(([proxy, text]) => {
+    Promise.all([pdf.page(index), pdf.textContent(index)]).then(([proxy, text]) => {
       if (removed) return;
       entry.size = { width: text.width, height: text.height };
       const viewport = proxy.getViewport({ scale: Math.max(0.1, place.width / text.width) });
@@ -228,7 +229,11 @@ export function createTextLayer(root, { pdf, canvas, before = null, onPassage })
         fit(entry);
         laid.push(entry.element);
       }
-      layer.replaceChildren(...laid, button);  // page order is reading order; the button after the text
+      // Page order is reading order; the button after the text (left in place if it is: it may have focus).
+      const children = [...laid, button];
+      if (children.some((child, i) => layer.children[i] !== child) || layer.children.length !== children.length) {
+        layer.replaceChildren(...children);
+      }
       if (passage && !open.has(passage.page)) hidePassageButton();
       else if (passage) onSelection();  // the selection moved with its page (zoom, pan)
     },
@@ -241,12 +246,6 @@ export function createTextLayer(root, { pdf, canvas, before = null, onPassage })
       hidePassageButton();
       layer.replaceChildren();
     },
-    /** The layers of the open pages, in page order. */
-    get elements() { return [...layer.querySelectorAll('[data-text-layer]')]; },
-    /** Resolves once the open pages' text is laid out. */
-    whenReady() { return Promise.all([...pages.values()].map((entry) => entry.ready)); },
-    /** Whether the layer shows page `index`'s text (for the alt text: a page read once, not twice). */
-    covers(index) { return pages.has(index); },
     remove() {
       removed = true;
       for (const entry of pages.values()) entry.textLayer?.cancel();
@@ -256,6 +255,7 @@ export function createTextLayer(root, { pdf, canvas, before = null, onPassage })
       document.removeEventListener('pointerup', stopSelecting);
       document.removeEventListener('pointercancel', stopSelecting);
       layer.remove();
+      style?.remove();
     },
   };
 }
