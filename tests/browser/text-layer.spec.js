@@ -310,6 +310,24 @@ test('browser: a passage link round-trips: select, the button by keyboard, the l
   await other.close();
 });
 
+test('browser: where the Clipboard API refuses, the passage link is copied through a hidden textarea, and the selection stays', async ({ page, context }) => {
+  await context.grantPermissions(['clipboard-read', 'clipboard-write']);
+  await openBook(page, { startPage: 1 });
+  await page.evaluate(() => {
+    window.refused = 0;
+    navigator.clipboard.writeText = () => { window.refused++; return Promise.reject(new DOMException('refused', 'NotAllowedError')); };
+  });
+  await selectLine(page, 1, 2);
+  await page.locator('[data-passage-link]').click();
+  await page.waitForFunction(() => window.events.some((e) => e.type === 'passagelink'));
+  const detail = await page.evaluate(() => window.events.find((e) => e.type === 'passagelink').detail);
+  expect(await page.evaluate(() => window.refused)).toBe(1);
+  expect(detail.copied).toBe(true);
+  expect(await page.evaluate(() => navigator.clipboard.readText())).toBe(detail.url);
+  expect(await page.evaluate(() => window.getSelection().toString())).toContain('alpha2 bravo3');
+  expect(await page.evaluate(() => document.querySelectorAll('textarea').length)).toBe(0);
+});
+
 test('browser: a passage link marks its passage as a search hit over the words (needs search() and showHit())', async ({ page }) => {
   const text = lineText(4, 2);
   await openBook(page, { hash: true }, { hash: `#page=5&text=${encodeURIComponent(text)}` });
