@@ -1,6 +1,6 @@
 // Runs inside the benchmark page: loads one library's bundle, mounts the book with the generated
 // pages, and exposes window.bench for the runner (first frame, turns with rAF sampling, stats).
-// Query: ?lib=conecurl|page-flip|turnjs|floor-webgl|floor-2d&pages=N&display=single|double&duration=ms&bundles=URL&images=URL
+// Query: ?lib=conecurl|page-flip|turnjs|floor-webgl|floor-2d|conecurl-baseline&pages=N&display=single|double&duration=ms&bundles=URL&images=URL
 // [&options=JSON]
 const params = new URLSearchParams(location.search);
 const required = (name) => {

@@ -78,6 +78,11 @@ export async function measureOnce({ url, viewport, turns, askedTurnMs, turnTimeo
     const rendererPss = pssBytes(rendererPid);
     const gpuPss = gpuPids.reduce((sum, pid) => sum + (pssBytes(pid) || 0), 0);
     const stats = await page.evaluate(() => window.bench.stats());
+    // The wasm files the page fetched (URL, decoded bytes): the runner checks conecurl and a baseline each
+    // loaded its own.
+    const wasm = await page.evaluate(() => performance.getEntriesByType('resource')
+      .filter((entry) => new URL(entry.name).pathname.endsWith('.wasm'))
+      .map((entry) => ({ url: entry.name, bytes: entry.decodedBodySize })));
 
     return {
       readyMs,
@@ -106,6 +111,7 @@ export async function measureOnce({ url, viewport, turns, askedTurnMs, turnTimeo
       memory: { jsHeapBytes, rendererPssBytes: rendererPss, gpuPssBytes: gpuPss },
       stats,
       turnStats,
+      wasm,
       errors,
     };
   } finally {

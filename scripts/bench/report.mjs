@@ -1,6 +1,6 @@
 // Turns the raw runs of `npm run bench` into the summary (medians with ranges, ratios of conecurl to every
-// other contender from the same repetition, the targets against the floor and the peers), a Markdown
-// table and an SVG chart of frame intervals.
+// other contender from the same repetition, the targets against the floor and the peers, before and after
+// when a baseline checkout was measured too), a Markdown table and an SVG chart of frame intervals.
 import { summarize } from './metrics.mjs';
 
 export const LIBRARY_NAMES = {
@@ -10,8 +10,13 @@ export const LIBRARY_NAMES = {
 // Column heads of the per-configuration tables.
 const SHORT_NAMES = { conecurl: 'conecurl', 'page-flip': 'page-flip', turnjs: 'turn.js', 'floor-webgl': 'WebGL floor', 'floor-2d': '2D floor' };
 const PEERS = ['page-flip', 'turnjs'];
-// What conecurl is compared with: the peers, and the floors (the smallest books that turn a page).
-const OTHERS = Object.keys(LIBRARY_NAMES).filter((lib) => lib !== 'conecurl');
+// The baseline contender (`--baseline <dir>`): conecurl as another checkout has it, an older commit. It is
+// a contender only in runs that measured it; its names carry its commit (meta.baseline).
+export const BASELINE = 'conecurl-baseline';
+const baselineCommit = (meta) => meta?.baseline?.commit ?? '?';
+const longName = (lib, meta) => LIBRARY_NAMES[lib] ?? meta?.baseline?.label ?? `conecurl (before, ${baselineCommit(meta)})`;
+const shortName = (lib, meta) => SHORT_NAMES[lib] ?? `before (${baselineCommit(meta)})`;
+const ratioHead = (lib) => (lib === BASELINE ? 'conecurl / before' : `conecurl / ${SHORT_NAMES[lib]}`);
 const MB = 1024 * 1024;
 
 const maxTextures = (r) => Math.max(...(r.turnStats || []).map((s) => s.pageTextures ?? NaN), r.stats.pageTextures ?? NaN);
@@ -44,6 +49,21 @@ export const METRICS = [
 // Ratios conecurl / other contender are shown for these (the others are conecurl-only or ratios already).
 const RATIO_METRICS = ['firstFrameMs', 'turnSeconds', 'frameMedianMs', 'frameP95Ms', 'frameMaxMs', 'frames', 'mainThreadMsPerFrame',
   'mainThreadMsTurns', 'rendererCpuMsPerFrame', 'gpuCpuMsPerFrame', 'idleCpuPercent', 'jsHeapMB', 'rendererPssMB', 'gpuPssMB'];
+// After / before is shown for every figure both have (the conecurl-only ones included), against the baseline.
+const BASELINE_RATIO_METRICS = METRICS.map(([key]) => key).filter((key) => key !== 'maxOverMedian');
+
+/**
+ * The figures of issue 24 shown before and after (conecurl now / the baseline checkout): per
+ * configuration, or `metric: 'totalGzip'` for the load up front (KB, gzip -9, all configurations).
+ */
+export const BEFORE_AFTER = [
+  { metric: 'gpuCpuMsPerFrame', figure: 'GPU-process CPU per frame', unit: 'ms', decimals: 1 },
+  { metric: 'frames', figure: 'frames during the turns', unit: '', decimals: 0 },
+  { metric: 'frameMedianMs', figure: 'frame interval, median', unit: 'ms', decimals: 1 },
+  { metric: 'mainThreadMsTurns', figure: 'main-thread busy over the turns', unit: 'ms', decimals: 0 },
+  { metric: 'turnOverAsked', figure: 'turn duration / asked duration', unit: 'x', decimals: 3 },
+  { metric: 'totalGzip', figure: 'load up front, JS + wasm, gzip -9', unit: 'KB', decimals: 1 },
+];
 
 /**
  * The targets of issue 24, against the floor: the one place they are written. Each compares a figure of
@@ -110,23 +130,30 @@ const range = (values) => {
 export function summarizeRuns(runs, configs, loadBytes) {
   const summary = {};
   const ratios = {};
+  const withBaseline = runs.some((r) => r.lib === BASELINE);
+  const contenders = [...Object.keys(LIBRARY_NAMES), ...(withBaseline ? [BASELINE] : [])];
+  const others = contenders.filter((lib) => lib !== 'conecurl');
   for (const config of configs) {
     summary[config.id] = {};
     ratios[config.id] = {};
     const ok = runs.filter((r) => r.config === config.id && r.result);
-    for (const lib of Object.keys(LIBRARY_NAMES)) {
+    for (const lib of contenders) {
       const mine = ok.filter((r) => r.lib === lib);
       summary[config.id][lib] = Object.fromEntries(METRICS.map(([key, , , , get]) => [key, range(mine.map((r) => get(r.result)))]));
       summary[config.id][lib].failed = runs.filter((r) => r.config === config.id && r.lib === lib && r.error).length;
     }
     const reps = [...new Set(ok.map((r) => r.rep))];
-    for (const [key, , , , get] of METRICS.filter(([key]) => RATIO_METRICS.includes(key))) {
-      const perPeer = { bestPeer: [] };
-      for (const other of OTHERS) perPeer[other] = [];
+    const ratioMetrics = withBaseline ? BASELINE_RATIO_METRICS : RATIO_METRICS;
+    for (const [key, , , , get] of METRICS.filter(([key]) => ratioMetrics.includes(key))) {
+      // The baseline is the only contender for the conecurl-only figures.
+      const against = RATIO_METRICS.includes(key) ? others : [BASELINE];
+      const perPeer = RATIO_METRICS.includes(key) ? { bestPeer: [] } : {};
+      for (const other of against) perPeer[other] = [];
       for (const rep of reps) {
         const value = (lib) => { const run = ok.find((r) => r.rep === rep && r.lib === lib); return run ? get(run.result) : NaN; };
         const mine = value('conecurl');
-        for (const other of OTHERS) perPeer[other].push(mine / value(other));
+        for (const other of against) perPeer[other].push(mine / value(other));
+        if (!perPeer.bestPeer) continue;
         const peerValues = PEERS.map(value);
         const finitePeers = peerValues.filter(Number.isFinite);
         perPeer.bestPeer.push(finitePeers.length ? mine / Math.min(...finitePeers) : NaN);
@@ -137,7 +164,45 @@ export function summarizeRuns(runs, configs, loadBytes) {
   return {
     summary, ratios, targets: evaluateTargets(runs, configs, summary, ratios, loadBytes),
     floorTargets: evaluateFloorTargets(configs, summary, ratios, loadBytes),
+    beforeAfter: withBaseline ? evaluateBeforeAfter(configs, summary, ratios, loadBytes) : null,
   };
+}
+
+/**
+ * BEFORE_AFTER measured: [{ metric, figure, unit, decimals, values: [{ config, before, after, ratio }] }],
+ * medians over the repetitions; `ratio` after / before, the median of the ratios within a repetition
+ * (for the load: of the two sizes).
+ */
+function evaluateBeforeAfter(configs, summary, ratios, loadBytes) {
+  return BEFORE_AFTER.map((figure) => {
+    let values;
+    if (figure.metric === 'totalGzip') {
+      const before = (loadBytes?.[BASELINE]?.totalGzip ?? NaN) / 1024;
+      const after = (loadBytes?.conecurl?.totalGzip ?? NaN) / 1024;
+      values = [{ config: 'all', before, after, ratio: after / before }];
+    } else {
+      values = configs.map((c) => ({
+        config: c.id,
+        before: summary[c.id][BASELINE][figure.metric]?.median ?? NaN,
+        after: summary[c.id].conecurl[figure.metric]?.median ?? NaN,
+        ratio: ratios[c.id][figure.metric]?.[BASELINE]?.median ?? NaN,
+      }));
+    }
+    return { ...figure, values };
+  });
+}
+
+/** The before-and-after figures as a Markdown table: one row per figure and configuration. */
+export function beforeAfterTable(beforeAfter, meta) {
+  const after = meta?.commit ? ` (${meta.commit})` : '';
+  const lines = [`| figure | configuration | before (${baselineCommit(meta)}) | after${after} | after / before |`, '|---|---|---|---|---|'];
+  for (const f of beforeAfter) {
+    const unit = f.unit && f.unit !== 'x' ? ` ${f.unit}` : '';
+    for (const v of f.values) {
+      lines.push(`| ${f.figure} | ${v.config} | ${fmt(v.before, f.decimals)}${unit} | ${fmt(v.after, f.decimals)}${unit} | ${fmt(v.ratio, 2)}x |`);
+    }
+  }
+  return lines;
 }
 
 function evaluateTargets(runs, configs, summary, ratios, loadBytes) {
@@ -204,7 +269,7 @@ export function floorTargetTable(floorTargets) {
 }
 
 /** The Markdown report: setting, targets (against the floor, then the peers), then one table per configuration. */
-export function markdown({ meta, loadBytes, summary, ratios, targets, floorTargets = [], configs }) {
+export function markdown({ meta, loadBytes, summary, ratios, targets, floorTargets = [], beforeAfter = null, configs }) {
   const lines = [];
   lines.push(`# conecurl benchmark`);
   lines.push('');
@@ -225,6 +290,16 @@ export function markdown({ meta, loadBytes, summary, ratios, targets, floorTarge
   lines.push('');
   lines.push(...floorTargetTable(floorTargets));
   lines.push('');
+  if (beforeAfter) {
+    lines.push('## Before and after');
+    lines.push('');
+    lines.push(`conecurl in this tree (after) against ${longName(BASELINE, meta)} from ${meta?.baseline?.dir ?? 'a baseline checkout'}, `
+      + 'measured in the same run with the same workload. Medians over the repetitions; after / before is taken within a repetition '
+      + '(lower is better, but for frames).');
+    lines.push('');
+    lines.push(...beforeAfterTable(beforeAfter, meta));
+    lines.push('');
+  }
   lines.push('## Targets against the peers');
   lines.push('');
   lines.push('| target | limit | measured | holds |');
@@ -243,21 +318,22 @@ export function markdown({ meta, loadBytes, summary, ratios, targets, floorTarge
   for (const [lib, b] of Object.entries(loadBytes)) {
     const kb = (v) => `${(v / 1024).toFixed(1)} KB`;
     const lazy = b.lazy?.files.length ? `${kb(b.lazy.jsGzip)} (${b.lazy.files.map((f) => f.replace(/-[\w-]{8}\.js$/, '.js')).join(', ')})` : '–';
-    lines.push(`| ${LIBRARY_NAMES[lib]} | ${kb(b.js)} | ${kb(b.jsGzip)} | ${b.wasm ? kb(b.wasm) : '–'} | ${b.wasm ? kb(b.wasmGzip) : '–'} | **${kb(b.totalGzip)}** | ${lazy} |`);
+    lines.push(`| ${longName(lib, meta)} | ${kb(b.js)} | ${kb(b.jsGzip)} | ${b.wasm ? kb(b.wasm) : '–'} | ${b.wasm ? kb(b.wasmGzip) : '–'} | **${kb(b.totalGzip)}** | ${lazy} |`);
   }
   for (const config of configs) {
     lines.push('');
     lines.push(`## ${config.label}`);
     lines.push('');
-    const libs = Object.keys(LIBRARY_NAMES);
-    lines.push(`| metric | ${libs.map((lib) => SHORT_NAMES[lib]).join(' | ')} | ${OTHERS.map((lib) => `conecurl / ${SHORT_NAMES[lib]}`).join(' | ')} |`);
-    lines.push(`|---|${libs.map(() => '---').join('|')}|${OTHERS.map(() => '---').join('|')}|`);
+    const libs = Object.keys(summary[config.id]);
+    const others = libs.filter((lib) => lib !== 'conecurl');
+    lines.push(`| metric | ${libs.map((lib) => shortName(lib, meta)).join(' | ')} | ${others.map(ratioHead).join(' | ')} |`);
+    lines.push(`|---|${libs.map(() => '---').join('|')}|${others.map(() => '---').join('|')}|`);
     for (const [key, label, unit, decimals] of METRICS) {
       const s = summary[config.id];
       const r = ratios[config.id][key];
       const name = unit && unit !== 'x' ? `${label} (${unit})` : label;
       lines.push(`| ${name} | ${libs.map((lib) => cell(s[lib][key], decimals)).join(' | ')} | `
-        + `${OTHERS.map((lib) => (r ? cell(r[lib], 2) : '')).join(' | ')} |`);
+        + `${others.map((lib) => (r ? cell(r[lib], 2) : '')).join(' | ')} |`);
     }
     const failed = Object.entries(summary[config.id]).filter(([, s]) => s.failed).map(([lib, s]) => `${lib}: ${s.failed}`);
     if (failed.length) lines.push(`\nFailed runs (see the JSON for the errors): ${failed.join(', ')}`);
@@ -275,7 +351,7 @@ const README_COLUMNS = [
   ['rendererPssMB', 'renderer MB', 0],
 ];
 
-export function readmeTables({ meta, loadBytes, summary, targets, floorTargets = [], configs }) {
+export function readmeTables({ meta, loadBytes, summary, targets, floorTargets = [], beforeAfter = null, configs }) {
   const lines = [];
   lines.push(`Run of ${meta.date.slice(0, 10)}: ${meta.reps} repetitions, ${meta.turns} turns of ${meta.turnDurationMs} ms, ${meta.cpus} CPUs, `
     + `load average ${meta.loadavgStart[0].toFixed(1)} at the start and ${meta.loadavgEnd[0].toFixed(1)} at the end, ${Math.round(meta.wallSeconds / 60)} min. `
@@ -284,14 +360,21 @@ export function readmeTables({ meta, loadBytes, summary, targets, floorTargets =
   lines.push(`| configuration | library | ${README_COLUMNS.map(([, label]) => label).join(' | ')} |`);
   lines.push(`|---|---|${README_COLUMNS.map(() => '---').join('|')}|`);
   for (const config of configs) {
-    for (const lib of Object.keys(LIBRARY_NAMES)) {
+    for (const lib of Object.keys(summary[config.id])) {
       const s = summary[config.id][lib];
-      lines.push(`| ${config.id} | ${lib} | ${README_COLUMNS.map(([key, , d]) => fmt(s[key]?.median, d)).join(' | ')} |`);
+      lines.push(`| ${config.id} | ${lib === BASELINE ? `conecurl before (${baselineCommit(meta)})` : lib} | ${README_COLUMNS.map(([key, , d]) => fmt(s[key]?.median, d)).join(' | ')} |`);
     }
   }
   lines.push('');
-  lines.push(`Load bytes, gzip -9: ${Object.entries(loadBytes).map(([lib, b]) => `${lib} ${(b.totalGzip / 1024).toFixed(1)} KB`).join(', ')}.`);
+  lines.push(`Load bytes, gzip -9: ${Object.entries(loadBytes).map(([lib, b]) => `${lib === BASELINE ? `conecurl before (${baselineCommit(meta)})` : lib} `
+    + `${(b.totalGzip / 1024).toFixed(1)} KB`).join(', ')}.`);
   lines.push('');
+  if (beforeAfter) {
+    lines.push(`Before and after: conecurl against ${longName(BASELINE, meta)}, in the same run:`);
+    lines.push('');
+    lines.push(...beforeAfterTable(beforeAfter, meta));
+    lines.push('');
+  }
   lines.push('Targets against the WebGL floor (the smallest WebGL book that turns a page, in the same run):');
   lines.push('');
   lines.push(...floorTargetTable(floorTargets));
@@ -307,10 +390,11 @@ export function readmeTables({ meta, loadBytes, summary, targets, floorTargets =
   return lines.join('\n');
 }
 
-const COLORS = { conecurl: '#d6336c', 'page-flip': '#1c7ed6', turnjs: '#37b24d', 'floor-webgl': '#495057', 'floor-2d': '#f08c00' };
+const COLORS = { conecurl: '#d6336c', 'page-flip': '#1c7ed6', turnjs: '#37b24d', 'floor-webgl': '#495057', 'floor-2d': '#f08c00', [BASELINE]: '#ae3ec9' };
 
 /** An SVG of the rAF frame intervals over the turns, one panel per configuration, log-scale ms (median repetition). */
 export function frameChart(runs, configs) {
+  const contenders = [...Object.keys(LIBRARY_NAMES), ...(runs.some((r) => r.lib === BASELINE) ? [BASELINE] : [])];
   const panelW = 520;
   const panelH = 230;
   const margin = { left: 52, right: 12, top: 28, bottom: 34 };
@@ -339,7 +423,7 @@ export function frameChart(runs, configs) {
     const ox = x0 + margin.left;
     const oy = y0 + margin.top;
     // The repetition whose median frame interval is the median, per library.
-    const chosen = Object.keys(LIBRARY_NAMES).map((lib) => {
+    const chosen = contenders.map((lib) => {
       const mine = runs.filter((r) => r.config === config.id && r.lib === lib && r.result)
         .sort((a, b) => summarize(a.result.intervals).median - summarize(b.result.intervals).median);
       return mine.length ? { lib, run: mine[Math.floor((mine.length - 1) / 2)] } : null;
@@ -370,7 +454,9 @@ export function frameChart(runs, configs) {
     }
   });
   let lx = 12;
-  for (const [lib, name] of Object.entries({ ...LIBRARY_NAMES, 'floor-webgl': SHORT_NAMES['floor-webgl'], 'floor-2d': SHORT_NAMES['floor-2d'] })) {
+  const legend = { ...LIBRARY_NAMES, 'floor-webgl': SHORT_NAMES['floor-webgl'], 'floor-2d': SHORT_NAMES['floor-2d'] };
+  if (contenders.includes(BASELINE)) legend[BASELINE] = 'conecurl before';
+  for (const [lib, name] of Object.entries(legend)) {
     parts.push(`<rect x="${lx}" y="${height - 20}" width="14" height="4" fill="${COLORS[lib]}"/><text x="${lx + 20}" y="${height - 14}">${name}</text>`);
     lx += 40 + name.length * 7;
   }

@@ -1,15 +1,17 @@
 // `npm run bench`: conecurl against page-flip, turn.js and the two floors (the smallest WebGL and 2D-canvas
 // books) in one run, in headless Chromium on this machine. Generates the page images, bundles the libraries, measures every library x configuration
 // x repetition in a fresh browser (order alternated), then writes JSON, Markdown and an SVG chart.
+// With --baseline <dir> (another checkout of conecurl, e.g. a git worktree of an older commit with its dist/
+// built), that tree's conecurl is measured too, in the same run, and the report shows before and after.
 // Usage: node scripts/bench/run.mjs [--reps 3] [--configs double-20,single-1000] [--libs conecurl,floor-webgl]
-//        [--duration 600] [--turns 10] [--port 8095] [--out bench-results] [--publish]
+//        [--duration 600] [--turns 10] [--port 8095] [--out bench-results] [--baseline ../conecurl-before] [--publish]
 import { spawn } from 'node:child_process';
 import fs from 'node:fs';
 import http from 'node:http';
 import os from 'node:os';
 import path from 'node:path';
 import { chromium } from '@playwright/test';
-import { bundleLibraries, LIBRARIES } from './bundle.mjs';
+import { BASELINE, bundleBaseline, bundleLibraries, checkoutCommit, LIBRARIES } from './bundle.mjs';
 import { measureOnce } from './measure.mjs';
 import { chromiumLaunchOptions } from '../chromium.mjs';
 import { summarize } from './metrics.mjs';
@@ -27,7 +29,7 @@ const CONFIGS = [
 function parseArgs(argv) {
   const options = {
     reps: 3, configs: CONFIGS.map((c) => c.id), libs: [...LIBRARIES], duration: 600, turns: 10, idleMs: 2000,
-    port: Number(process.env.CONECURL_BENCH_PORT) || 8095, out: 'bench-results', publish: false,
+    port: Number(process.env.CONECURL_BENCH_PORT) || 8095, out: 'bench-results', publish: false, baseline: null,
   };
   for (let i = 0; i < argv.length; i++) {
     const name = argv[i];
@@ -46,6 +48,7 @@ function parseArgs(argv) {
     else if (name === '--port') options.port = count(value(), 1);
     else if (name === '--out') options.out = value();
     else if (name === '--publish') options.publish = true;
+    else if (name === '--baseline') options.baseline = path.resolve(value());
     else if (name === '--configs' || name === '--libs') {
       const list = value().split(',');
       const known = name === '--configs' ? CONFIGS.map((c) => c.id) : LIBRARIES;
@@ -99,6 +102,20 @@ function publishToBenchDoc(tables) {
   fs.writeFileSync(file, `${text.slice(0, start + LATEST_START.length)}\n${linked}\n${text.slice(end)}`);
 }
 
+// The wasm a contender fetched (from the page's resource timing) must be the one in its own bundle folder:
+// conecurl and the baseline both ship a conecurl-engine.wasm. Returns an error message, or null.
+function wrongWasm(result, lib, bundlesDir, base) {
+  const fetched = result.wasm || [];
+  const expected = fs.readdirSync(bundlesDir).filter((file) => file.endsWith('.wasm'));
+  if (expected.length !== 1) return `${lib}: ${bundlesDir} holds ${expected.length} wasm files, not one`;
+  const url = `${base}/${path.relative(root, path.join(bundlesDir, expected[0])).split(path.sep).join('/')}`;
+  const size = fs.statSync(path.join(bundlesDir, expected[0])).size;
+  if (fetched.length !== 1 || fetched[0].url !== url || fetched[0].bytes !== size) {
+    return `${lib} fetched ${JSON.stringify(fetched)}, expected its own ${url} of ${size} bytes`;
+  }
+  return null;
+}
+
 async function main() {
   const options = parseArgs(process.argv.slice(2));
   const out = path.resolve(root, options.out);
@@ -113,6 +130,17 @@ async function main() {
   const images = writePageImages(path.join(out, 'pages'), maxPages);
   console.log(`bench: ${maxPages} page images ready (${images.written} written)`);
   const loadBytes = await bundleLibraries(path.join(out, 'bundles'));
+  const bundleDirs = Object.fromEntries(LIBRARIES.map((lib) => [lib, path.join(out, 'bundles')]));
+  const contenders = [...options.libs];
+  let baseline = null;
+  if (options.baseline) {
+    const built = await bundleBaseline(options.baseline, path.join(out, 'bundles'));
+    baseline = { dir: built.dir, commit: built.commit, label: `conecurl (before, ${built.commit})` };
+    loadBytes[BASELINE] = built.loadBytes;
+    bundleDirs[BASELINE] = built.bundles;
+    contenders.push(BASELINE);
+    console.log(`bench: baseline ${built.dir} at ${built.commit} bundled into ${path.relative(root, built.bundles)}/`);
+  }
   console.log('bench: libraries bundled');
   const server = await startServer(options.port);
   const chromiumName = await chromiumVersion();
@@ -122,30 +150,35 @@ async function main() {
   const plan = [];
   for (let rep = 0; rep < options.reps; rep++) {
     configs.forEach((config, c) => {
-      const order = (rep + c) % 2 === 0 ? options.libs : [...options.libs].reverse();
+      const order = (rep + c) % 2 === 0 ? contenders : [...contenders].reverse();
       order.forEach((lib) => plan.push({ rep: rep + 1, config, lib }));
     });
   }
-  console.log(`bench: ${plan.length} measurements (${options.reps} repetitions x ${configs.length} configurations x ${options.libs.length} libraries)`);
+  console.log(`bench: ${plan.length} measurements (${options.reps} repetitions x ${configs.length} configurations x ${contenders.length} libraries)`);
 
   const runs = [];
   try {
     for (const [index, { rep, config, lib }] of plan.entries()) {
       const query = new URLSearchParams({
         lib, pages: String(config.pages), display: config.display, duration: String(options.duration),
-        bundles: relative(path.join(out, 'bundles')), images: relative(path.join(out, 'pages')),
+        bundles: relative(bundleDirs[lib]), images: relative(path.join(out, 'pages')),
       });
       const url = `${base}/scripts/bench/harness.html?${query}`;
       const t0 = Date.now();
       const run = { rep, config: config.id, lib, loadavg: os.loadavg()[0] };
       try {
-        run.result = await measureOnce({
+        const result = await measureOnce({
           url, viewport: config.viewport, turns: options.turns, askedTurnMs: options.duration, turnTimeoutMs: 30000, idleMs: options.idleMs,
         });
+        const wrong = (lib === 'conecurl' || lib === BASELINE) ? wrongWasm(result, lib, bundleDirs[lib], base) : null;
+        if (wrong) throw new Error(wrong);
+        run.result = result;
         const f = summarize(run.result.intervals);
         console.log(`[${index + 1}/${plan.length}] rep ${rep} ${config.id} ${lib}: first frame ${run.result.firstFrameMs.toFixed(0)} ms, `
           + `frame median ${f.median.toFixed(0)} ms, max ${f.max.toFixed(0)} ms, main ${run.result.perFrame.mainThreadMs.toFixed(1)} ms/frame, `
-          + `GPU ${run.result.perFrame.gpuCpuMs.toFixed(0)} ms/frame, idle ${run.result.idle.totalCpuPercent.toFixed(1)}% (${((Date.now() - t0) / 1000).toFixed(0)} s)`);
+          + `GPU ${run.result.perFrame.gpuCpuMs.toFixed(0)} ms/frame, idle ${run.result.idle.totalCpuPercent.toFixed(1)}%`
+          + `${run.result.wasm.length ? `, wasm ${run.result.wasm.map((w) => `${w.url.slice(base.length)} ${w.bytes} B`).join(', ')}` : ''}`
+          + ` (${((Date.now() - t0) / 1000).toFixed(0)} s)`);
       } catch (error) {
         run.error = String(error && error.message ? error.message : error).split('\n')[0];
         console.log(`[${index + 1}/${plan.length}] rep ${rep} ${config.id} ${lib}: FAILED ${run.error}`);
@@ -169,10 +202,11 @@ async function main() {
     turnDurationMs: options.duration,
     idleMs: options.idleMs,
     wallSeconds: (Date.now() - started) / 1000,
+    ...(baseline ? { baseline, commit: checkoutCommit(root) } : {}),
   };
-  const { summary, ratios, targets, floorTargets } = summarizeRuns(runs, configs, loadBytes);
-  const report = { meta, configs, loadBytes, floorTargets, targets, summary, ratios, runs };
-  const md = markdown({ meta, loadBytes, summary, ratios, targets, floorTargets, configs });
+  const { summary, ratios, targets, floorTargets, beforeAfter } = summarizeRuns(runs, configs, loadBytes);
+  const report = { meta, configs, loadBytes, floorTargets, targets, ...(beforeAfter ? { beforeAfter } : {}), summary, ratios, runs };
+  const md = markdown({ meta, loadBytes, summary, ratios, targets, floorTargets, beforeAfter, configs });
   fs.mkdirSync(out, { recursive: true });
   fs.writeFileSync(path.join(out, 'latest.json'), `${JSON.stringify(report, null, 1)}\n`);
   fs.writeFileSync(path.join(out, 'latest.md'), md);
@@ -181,7 +215,7 @@ async function main() {
     const docs = path.join(root, 'docs/bench');
     fs.mkdirSync(docs, { recursive: true });
     for (const file of ['latest.json', 'latest.md', 'frame-intervals.svg']) fs.copyFileSync(path.join(out, file), path.join(docs, file));
-    publishToBenchDoc(readmeTables({ meta, loadBytes, summary, targets, floorTargets, configs }));
+    publishToBenchDoc(readmeTables({ meta, loadBytes, summary, targets, floorTargets, beforeAfter, configs }));
   }
   console.log(`\n${md}`);
   console.log(`bench: wrote ${path.relative(root, out)}/latest.{json,md} and frame-intervals.svg${options.publish ? `, copied to docs/bench/ and ${BENCH_DOC}` : ''}`

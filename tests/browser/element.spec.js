@@ -321,6 +321,7 @@ test('browser: turn-area, label and fallback are attributes too; every option pr
       lighting: false, shadows: false, gutter: false, thickness: 0.01, loadWindow: 2, hash: false, autoplay, sound: false,
       muted: true, rememberPage: 'element-spec', wasmUrl: '/dist/x.wasm', antialias: 'auto', turnArea: 'corners',
       label: 'Atlas of clouds', fallback: false, pdf: new Uint8Array([37, 80, 68, 70]), pdfWorkerSrc: '/no/worker.mjs',
+      outline: [{ title: 'Clouds', page: 1 }], download: '/files/atlas.pdf',
       textLayer: false,
     };
     const unsampled = PROPERTY_OPTIONS.filter((option) => option !== 'display' && !(option in values));

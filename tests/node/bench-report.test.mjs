@@ -1,11 +1,12 @@
 // Node tests of the benchmark's arithmetic and page images (not of any speed): order statistics,
 // ratios taken within one repetition, the target verdicts (against the peers and against the floor),
-// that the report shows the floor targets, and that the generated PNGs are valid.
+// that the report shows the floor targets and, with a baseline checkout, before and after, and that the
+// generated PNGs are valid.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import zlib from 'node:zlib';
 import { summarize } from '../../scripts/bench/metrics.mjs';
-import { FLOOR_TARGETS, floorLimitText, markdown, readmeTables, summarizeRuns } from '../../scripts/bench/report.mjs';
+import { BEFORE_AFTER, FLOOR_TARGETS, floorLimitText, markdown, readmeTables, summarizeRuns } from '../../scripts/bench/report.mjs';
 import { drawPage, encodePalettePng, PAGE_HEIGHT, PAGE_WIDTH } from '../../scripts/bench/page-images.mjs';
 
 test('node: bench summarize gives the median of an even count and the nearest-rank p95', () => {
@@ -233,4 +234,93 @@ test('node: bench floor targets say "not measured" when the WebGL floor was not 
   const md = markdown({ meta, loadBytes, summary, ratios, targets, floorTargets, configs });
   const gpuRow = md.split('\n').find((line) => line.startsWith('| GPU-process CPU per turning frame |'));
   assert.match(gpuRow, /\| not measured \|$/);
+});
+
+// conecurl against a baseline checkout (`--baseline`), two repetitions of double-20, with the WebGL floor:
+// repetition 1 is slow for both, repetition 2 fast, so after / before within a repetition differs from
+// the ratio of the medians.
+function baselineFixture() {
+  const { meta } = floorFixture();
+  const config = { id: 'double-20', display: 'double', pages: 20, label: 'Two-page spread, 1600x1100, 20 pages' };
+  const figures = [
+    { rep: 1, lib: 'conecurl', gpuMs: 120, frames: 40, mainMs: 5, turnMs: 660, frameMs: 15 },
+    { rep: 1, lib: 'conecurl-baseline', gpuMs: 100, frames: 50, mainMs: 4, turnMs: 600, frameMs: 12 },
+    { rep: 1, lib: 'floor-webgl', gpuMs: 90, frames: 55, mainMs: 3, turnMs: 600, frameMs: 11 },
+    { rep: 2, lib: 'conecurl', gpuMs: 60, frames: 50, mainMs: 2, turnMs: 600, frameMs: 12 },
+    { rep: 2, lib: 'conecurl-baseline', gpuMs: 60, frames: 40, mainMs: 2, turnMs: 630, frameMs: 15 },
+    { rep: 2, lib: 'floor-webgl', gpuMs: 50, frames: 60, mainMs: 1, turnMs: 600, frameMs: 10 },
+  ];
+  const runs = figures.map(({ rep, lib, ...f }) => ({
+    rep, config: 'double-20', lib, result: fakeResult({ askedTurnMs: 600, textures: lib.startsWith('conecurl') ? 10 : undefined, ...f }),
+  }));
+  const loadBytes = {
+    conecurl: { js: 0, wasm: 0, totalGzip: 40 * 1024, jsGzip: 25 * 1024, wasmGzip: 15 * 1024, lazy: { files: [] } },
+    'conecurl-baseline': { js: 0, wasm: 0, totalGzip: 50 * 1024, jsGzip: 30 * 1024, wasmGzip: 20 * 1024, lazy: { files: [] } },
+  };
+  return {
+    configs: [config], runs, loadBytes,
+    meta: { ...meta, reps: 2, commit: 'abc1234', baseline: { dir: '/tmp/before', commit: 'ed27d46', label: 'conecurl (before, ed27d46)' } },
+  };
+}
+
+test('node: bench with a baseline gives before, after and after / before within a repetition for the issue 24 figures', () => {
+  const { configs, runs, loadBytes } = baselineFixture();
+  const { beforeAfter, ratios, summary } = summarizeRuns(runs, configs, loadBytes);
+  assert.deepEqual(BEFORE_AFTER.map((f) => f.metric),
+    ['gpuCpuMsPerFrame', 'frames', 'frameMedianMs', 'mainThreadMsTurns', 'turnOverAsked', 'totalGzip']);
+  const rows = Object.fromEntries(beforeAfter.map((f) => [f.metric,
+    f.values.map((v) => [v.config, ...[v.before, v.after, v.ratio].map((x) => Number(x.toFixed(4)))])]));
+  assert.deepEqual(rows, {
+    // Medians 90 vs 80; ratios 120/100 and 60/60 within the repetitions, median 1.1 (not 90/80 = 1.125).
+    gpuCpuMsPerFrame: [['double-20', 80, 90, 1.1]],
+    frames: [['double-20', 45, 45, 1.025]],  // 40/50 and 50/40
+    frameMedianMs: [['double-20', 13.5, 13.5, 1.025]],  // 15/12 and 12/15
+    mainThreadMsTurns: [['double-20', 140, 150, 1.125]],  // 5x40 / 4x50 = 1 and 2x50 / 2x40 = 1.25
+    turnOverAsked: [['double-20', 1.025, 1.05, 1.0262]],  // 660/600 and 600/630
+    totalGzip: [['all', 50, 40, 0.8]],
+  });
+  // Ratios to the baseline sit beside the others', for the conecurl-only figures too.
+  assert.equal(ratios['double-20'].gpuCpuMsPerFrame['conecurl-baseline'].median, 1.1);
+  assert.equal(ratios['double-20'].pageTextures['conecurl-baseline'].median, 1);
+  assert.deepEqual(Object.keys(summary['double-20']), ['conecurl', 'page-flip', 'turnjs', 'floor-webgl', 'floor-2d', 'conecurl-baseline']);
+});
+
+test('node: bench report and published tables show a baseline\'s column, its ratios and the before-and-after table', () => {
+  const { configs, runs, loadBytes, meta } = baselineFixture();
+  const { summary, ratios, targets, floorTargets, beforeAfter } = summarizeRuns(runs, configs, loadBytes);
+  const md = markdown({ meta, loadBytes, summary, ratios, targets, floorTargets, beforeAfter, configs });
+  const published = readmeTables({ meta, loadBytes, summary, targets, floorTargets, beforeAfter, configs });
+  const table = [
+    '| figure | configuration | before (ed27d46) | after (abc1234) | after / before |',
+    '|---|---|---|---|---|',
+    '| GPU-process CPU per frame | double-20 | 80.0 ms | 90.0 ms | 1.10x |',
+    '| frames during the turns | double-20 | 45 | 45 | 1.02x |',
+    '| frame interval, median | double-20 | 13.5 ms | 13.5 ms | 1.02x |',
+    '| main-thread busy over the turns | double-20 | 140 ms | 150 ms | 1.13x |',
+    '| turn duration / asked duration | double-20 | 1.025 | 1.050 | 1.03x |',
+    '| load up front, JS + wasm, gzip -9 | all | 50.0 KB | 40.0 KB | 0.80x |',
+  ].join('\n');
+  assert.ok(md.includes(`## Before and after\n\nconecurl in this tree (after) against conecurl (before, ed27d46) from /tmp/before`));
+  assert.ok(md.includes(table), md);
+  assert.ok(published.includes(table), published);
+  const lines = md.split('\n');
+  assert.equal(lines.find((line) => line.startsWith('| metric |')),
+    '| metric | conecurl | page-flip | turn.js | WebGL floor | 2D floor | before (ed27d46) | conecurl / page-flip | conecurl / turn.js '
+    + '| conecurl / WebGL floor | conecurl / 2D floor | conecurl / before |');
+  assert.equal(lines.find((line) => line.startsWith('| GPU process CPU per frame')),
+    '| GPU process CPU per frame (ms) | 90.0 (60.0–120.0) | – | – | 70.0 (50.0–90.0) | – | 80.0 (60.0–100.0) | – | – '
+    + '| 1.27 (1.20–1.33) | – | 1.10 (1.00–1.20) |');
+  assert.ok(lines.includes('| conecurl (before, ed27d46) | 0.0 KB | 30.0 KB | – | – | **50.0 KB** | – |'), 'a load-bytes row for the baseline');
+  assert.match(published, /^\| double-20 \| conecurl before \(ed27d46\) \| /m);
+  assert.match(published, /conecurl before \(ed27d46\) 50\.0 KB/);
+});
+
+test('node: bench without a baseline has no before-and-after table and no baseline column', () => {
+  const { configs, runs, loadBytes, meta } = floorFixture();
+  const result = summarizeRuns(runs, configs, loadBytes);
+  assert.equal(result.beforeAfter, null);
+  assert.deepEqual(Object.keys(result.summary['double-20']), ['conecurl', 'page-flip', 'turnjs', 'floor-webgl', 'floor-2d']);
+  const md = markdown({ meta, loadBytes, ...result, configs });
+  assert.doesNotMatch(md, /Before and after|before \(/);
+  assert.doesNotMatch(readmeTables({ meta, loadBytes, ...result, configs }), /Before and after|before \(/);
 });

@@ -39,8 +39,10 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     muted: 'true or false',
     rememberPage: 'a non-empty string (the key it is kept under)',
     antialias: "'auto', true or false",
+    on: 'an object of listeners by event name (ready, progress, pageerror, turnstart, turned, turncancel, resize, zoom, sharpened, link, pageschange, error, searchchange, fullscreenchange, download, print, passagelink)',
+    outline: 'an array of { title, page, children? }',
+    download: 'a URL string',
     textLayer: 'true or false',
-    on: 'an object of listeners by event name (ready, progress, pageerror, turnstart, turned, turncancel, resize, zoom, sharpened, link, pageschange, error, passagelink)',
   };
   const bad = {
     display: [NaN, 'triple', 2, null, ['double']],
@@ -65,6 +67,8 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     rememberPage: ['', '  ', 3, null, true],
     antialias: ['AUTO', 'on', 1, null, NaN],
     on: [null, [], () => {}, { turnd: () => {} }, { turned: 'log' }, { ready: null }],
+    outline: [null, {}, 'toc', 3],
+    download: ['', '  ', 3, null, true],
     textLayer: ['true', 1, null],
   };
   assert.deepEqual(Object.keys(bad).sort(), Object.keys(allowed).sort());
@@ -72,7 +76,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     for (const value of values) refuses({ pages, [option]: value }, `option '${option}' must be ${allowed[option]}, got ${describeValue(value)}`);
   }
   // Every option but `pages` has a default, so the table above covers them all.
-  assert.deepEqual(Object.keys(DEFAULTS).sort(), Object.keys(allowed).filter((k) => k !== 'wasmUrl' && k !== 'on' && k !== 'rememberPage').sort());
+  assert.deepEqual(Object.keys(DEFAULTS).sort(), Object.keys(allowed).filter((k) => !['wasmUrl', 'on', 'rememberPage', 'outline', 'download'].includes(k)).sort());
 });
 
 test('node: pages must be a non-empty array of page sources; each entry is checked by index, src, alt, hard and key', () => {
@@ -111,7 +115,7 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses(null, 'options must be an object, got null');
   refuses('pages', 'options must be an object, got "pages"');
   refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, direction, startPage, duration, schedule, center, hardCovers, "
-    + 'lighting, shadows, gutter, thickness, loadWindow, wasmUrl, label, fallback, hash, autoplay, sound, muted, rememberPage, antialias, turnArea, on, textLayer)');
+    + 'lighting, shadows, gutter, thickness, loadWindow, wasmUrl, label, fallback, hash, autoplay, sound, muted, rememberPage, antialias, turnArea, on, outline, download, textLayer)');
   refuses({ pages, antialias: 'yes' }, "option 'antialias' must be 'auto', true or false, got \"yes\"");
   refuses({ pages, startPage: 3 }, "option 'startPage' must be below the page count 3, got 3");
   // A value whose own toString throws or is huge is described, not called.

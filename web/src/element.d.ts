@@ -21,6 +21,7 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
  * ("true"/"false"), thickness ("true"/"false"/a number), autoplay ("true"/"false"/the milliseconds
  * between turns), antialias ("auto"/"true"/"false"), turn-area ("page"/"edges"/"corners"/"none"),
  * label (the book's name for screen readers), load-window, remember-page, wasm-url, pdf, pdf-worker-src,
+ * outline (the table of contents as JSON; the property also keeps the array), download (a URL),
  * text-layer ("true"/"false": a PDF's selectable text).
  * lighting, shadows, gutter, thickness, display, sound and muted apply to the running book; a change of
  * any other builds a new book at the page shown.
@@ -78,6 +79,11 @@ export class ConeFlipbookElement extends HTMLElement {
   fallback: FlipbookOptions['fallback'];
   wasmUrl: FlipbookOptions['wasmUrl'];
   pdfWorkerSrc: FlipbookOptions['pdfWorkerSrc'];
+  /** The table of contents: an array is kept as given; a string is its JSON (the outline attribute). */
+  get outline(): FlipbookOptions['outline'];
+  set outline(value: FlipbookOptions['outline'] | string | null);
+  /** The URL download() and the Download button fetch (the download attribute). */
+  download: FlipbookOptions['download'];
   /** A PDF book's selectable text over its flat pages (the text-layer attribute); default true. */
   textLayer: FlipbookOptions['textLayer'];
   /**

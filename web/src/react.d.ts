@@ -19,6 +19,13 @@ export interface FlipbookEventProps {
   onLink?: (event: FlipbookEventMap['link']) => void;
   /** The pages prop changed and the book applied it (inserted, removed or replaced pages, no new book). */
   onPagesChange?: (event: FlipbookEventMap['pageschange']) => void;
+  /** Search results changed, a hit was shown, or the search was cleared. */
+  onSearchChange?: (event: FlipbookEventMap['searchchange']) => void;
+  onFullscreenChange?: (event: FlipbookEventMap['fullscreenchange']) => void;
+  /** download() is about to download; preventDefault() stops it. */
+  onDownload?: (event: FlipbookEventMap['download']) => void;
+  /** print() is about to print; preventDefault() stops it. */
+  onPrint?: (event: FlipbookEventMap['print']) => void;
   /** A reader copied a link to a passage they selected (a PDF book's text layer). */
   onPassageLink?: (event: FlipbookEventMap['passagelink']) => void;
   /** The book could not be built, or a prop was refused (a TypeError naming it); without it, the console hears. */

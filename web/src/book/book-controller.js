@@ -9,7 +9,8 @@ import { BookEvents } from './book-events.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { BookTurns } from './book-turns.js';
 import {
-  attachBookInput, followSurface, makeHtmlPages, makeLinkLayer, makeLivePages, makePageStore, makeTextLayer, makeZoom,
+  attachBookInput, followSurface, makeDocumentApi, makeHtmlPages, makeLinkLayer, makeLivePages, makePageStore,
+  makeTextLayer, makeZoom,
   startCompanions, watchBookSize,
 } from './book-wiring.js';
 import { MAX_ZOOM, displayFor, openPages } from '../engine/layout.js';
@@ -35,6 +36,7 @@ export class BookController extends EventTarget {
     this._shell = createShell(container, { label: settings.label, direction: settings.direction });
     this._canvas = this._shell.canvas;
     this._port = this._makePort();  // what the parts below may ask of the book (book-wiring.js)
+    this._doc = makeDocumentApi(this, this._port);  // outline, search, thumbnails, fullscreen, download, print
     this._zoom = makeZoom(this._port);
     this._store = makePageStore(this._port);
     this._turns = new BookTurns(this._port);
@@ -153,6 +155,26 @@ export class BookController extends EventTarget {
   /** Puts `page` in the place of page `index`; resolves once applied. */
   async replacePage(index, page) { return this._live().replace(index, page); }
 
+  // ---- the document API (book-wiring.js makeDocumentApi: each part a module loaded on first use) ----
+  /** The table of contents: [{ title, page, children }] (page from 0), from the `outline` option or a PDF's bookmarks. */
+  async outline() { this._alive(); return this._doc.outline(); }
+  /** The hits of `text` (case and diacritics folded): [{ page, snippet, rects }]; `signal` aborts it. */
+  async search(text, options) { this._alive(); return this._doc.search(text, options); }
+  /** Turns to a hit of search() and marks it. */
+  async showHit(hit) { this._alive(); return this._doc.showHit(hit); }
+  /** Ends the search: its marks go. */
+  clearSearch() { this._doc.clearSearch(); }
+  /** Page `index` drawn about `width` (x `height`) pixels, from its source: a canvas. */
+  async pageThumbnail(index, size) { this._alive(); return this._doc.thumbnail(index, size); }
+  /** The book's container is fullscreen. */
+  get fullscreen() { return (this._container.getRootNode().fullscreenElement ?? null) === this._container; }
+  /** Enters, leaves (force) or toggles fullscreen; resolves with whether it is fullscreen. */
+  async toggleFullscreen(force) { this._alive(); return this._doc.toggleFullscreen(force); }
+  /** Downloads the `download` URL or the PDF, unless a `download` listener prevents it; resolves whether it did. */
+  async download() { this._alive(); return this._doc.download(); }
+  /** Prints the pages, unless a `print` listener prevents it; resolves whether it did. */
+  async print() { this._alive(); return this._doc.print(); }
+
   _live() {
     this._alive();
     return (this._livePages ??= makeLivePages(this._port));
@@ -167,6 +189,7 @@ export class BookController extends EventTarget {
     this._destroyed = true;
     this._events.drop();
     this._store.close();
+    this._doc.stop();
     this._pdf?.destroy();
     this._pdf = null;
     for (const layer of this._layers) layer.remove();
@@ -211,6 +234,7 @@ export class BookController extends EventTarget {
     this._stopCompanions = companions.stop;
     await this.whenIdle();
     this._emit('ready', { page: this.page });
+    this._doc.indexInBackground();  // a PDF's text, for search, in idle time from now on
   }
 
   // The HTML pages' layer, under the links.
@@ -253,6 +277,9 @@ export class BookController extends EventTarget {
       flushEvents: () => this._events.flush(),
       pdf: () => Boolean(this._pdf),
       pdfDocument: () => this._pdf,
+      container: this._container,
+      addLayer: (layer) => this._layers.push(layer),
+      decorate: (index, image) => this._doc.decorate(index, image),
     };
   }
 

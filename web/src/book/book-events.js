@@ -21,6 +21,11 @@ export const EVENT_DETAILS = {
   link: ['page', 'href', 'toPage?'],
   pageschange: ['change', 'at', 'count', 'pageCount', 'page'],
   error: ['error'],
+  // docapi (issue 23): the document API's events (download and print are cancelable).
+  searchchange: ['query', 'hits', 'current'],
+  fullscreenchange: ['fullscreen'],
+  download: ['url'],
+  print: ['pages'],
   // textlayer (issue 23)
   passagelink: ['page', 'text', 'url', 'copied'],
 };

@@ -43,6 +43,9 @@ import { attachInput } from '../input/book-input.js';
  * @property {() => void} flushEvents  events held while create() runs go out now
  * @property {() => boolean} pdf  the book's pages are a PDF's
  * @property {() => object|null} pdfDocument  the open PDF (pdf-pages.js openPdf: page(), textContent(), pdfjs), or null
+ * @property {HTMLElement} container  the element the book was made in (fullscreen takes it)
+ * @property {(layer: object) => void} addLayer  an overlay layer made later (search hits), laid and removed with the others
+ * @property {(index: number, image: object) => object} decorate  the image the surface gets for a page (search marks drawn in)
  */
 
 /** @param {BookPort} book */
@@ -65,6 +68,7 @@ export function makePageStore(book) {
     emit: book.emit,
     // A source may have learned its page's text and links while making it (a PDF page). Not while a
     // leaf moves or is lifted by a hover hint: the landing, or the hint's end, shows them again.
+    decorate: book.decorate,  // search marks drawn into the page's image (book-search.js)
     onOpenPageLoaded: (index) => {
       if (!book.surface().animating && book.openPages().includes(index)) book.showOpenPages();
     },
@@ -108,7 +112,7 @@ export function makeHtmlPages(HtmlPages, book) {
     // A video's new frame drawn into the page's image: upload it again, if the page is still kept.
     // (The snapshot already has the page's texture size: no cover to work out, no layout read a frame.)
     redrawn: (index, canvas) => {
-      if (book.store().holds(index, canvas)) book.surface().setPageImage(index, canvas);
+      if (book.store().holds(index, canvas)) book.surface().setPageImage(index, book.store().presented(index, canvas));
     },
   });
 }
@@ -212,6 +216,72 @@ export function startCompanions(controller, book) {
       stopFollowingPage();
       stopAutoplay?.();
       sound.stop();
+    },
+  };
+}
+
+/**
+ * The document API (issue 23): outline(), search() and its marks, pageThumbnail(), fullscreen,
+ * download() and print(), each module imported on first use; a PDF's text is indexed in the background
+ * once the book is open (indexInBackground). `controller` is the book, for its events.
+ * @param {BookPort} book
+ */
+export function makeDocumentApi(controller, book) {
+  let search = null;
+  let searchLoading = null;
+  let textIndex = null;
+  let thumbnails = null;
+  let stopFollowingFullscreen = null;
+  let stopped = false;
+  const documentModule = () => import('./book-document.js');
+  const pdfIndex = async () => {
+    const pdf = book.pdfDocument();
+    if (!pdf) return null;
+    const { PdfTextIndex } = await import('../pages/text-index.js');
+    return (textIndex ??= new PdfTextIndex(pdf, book.pageCount()));
+  };
+  const searcher = () => (searchLoading ??= import('./book-search.js').then(({ BookSearch }) => {
+    book.alive();
+    return (search = new BookSearch(book, pdfIndex));
+  }));
+  const drawer = async () => {
+    const { PageThumbnails } = await import('./page-thumbnails.js');
+    return (thumbnails ??= new PageThumbnails(book));
+  };
+  controller.addEventListener('pageschange', () => search?.pagesChanged());  // hits' page numbers no longer hold
+  return {
+    outline: async () => (await import('./book-outline.js')).bookOutline(book),
+    search: async (text, options) => (await searcher()).search(text, options),
+    showHit: async (hit) => (await searcher()).showHit(hit),
+    clearSearch: () => search?.clear(),
+    decorate: (index, image) => (search ? search.decorate(index, image) : image),
+    thumbnail: async (index, size) => (await drawer()).draw(index, size),
+    toggleFullscreen: async (force) => {
+      const { followFullscreen, toggleFullscreen } = await documentModule();
+      book.alive();
+      stopFollowingFullscreen ??= followFullscreen(book.container, (fullscreen) => {
+        book.emit('fullscreenchange', { fullscreen });
+        book.refitSoon();  // the size watch lays the book out at its new size; sharp images once it rests
+      });
+      return toggleFullscreen(book.container, force);
+    },
+    download: async () => {
+      book.alive();
+      return (await documentModule()).downloadDocument(controller, book.root, book.settings, book.pdfDocument());
+    },
+    print: async () => {
+      book.alive();
+      const draw = (index, size) => drawer().then((t) => t.draw(index, size));
+      return (await documentModule()).printDocument(controller, book.pageCount(), draw);
+    },
+    /** After the book opened: a PDF's text read page by page in idle time, for the first search. */
+    indexInBackground: () => {
+      if (book.pdfDocument()) pdfIndex().then((index) => { if (!stopped) index?.startBackground(); }).catch(() => {});
+    },
+    stop: () => {
+      stopped = true;
+      textIndex?.stop();
+      stopFollowingFullscreen?.();
     },
   };
 }

@@ -146,6 +146,41 @@ export interface FlipbookOptions {
    * Default true (PDF books only; with it, `turnArea` defaults to 'edges').
    */
   textLayer?: boolean;
+  // docapi (issue 23)
+  /**
+   * The table of contents of an image or HTML book, as outline() gives it (pages from 0); on a PDF
+   * book it takes the place of the PDF's bookmarks. A bad entry is a TypeError naming it.
+   */
+  outline?: OutlineEntry[];
+  /** The URL download() (and the toolbar's Download button) downloads; a PDF book defaults to its PDF. */
+  download?: string;
+}
+
+/** An entry of a book's table of contents: outline() and the `outline` option. */
+export interface OutlineEntry {
+  title: string;
+  /** The page it opens, from 0. */
+  page: number;
+  /** Entries under it (always an array from outline(); optional in the option). */
+  children?: OutlineEntry[];
+}
+
+/** A place where search() found its text. */
+export interface SearchHit {
+  /** The page, from 0. */
+  page: number;
+  /** About 40 characters around the hit, with an ellipsis where the page's text was cut. */
+  snippet: string;
+  /** The hit's rectangles, one per line it spans: [x, y, width, height] as fractions of its page, from the top-left. */
+  rects: Array<[number, number, number, number]>;
+}
+
+/** What `searchchange` tells: the query, its hits in page order, and the hit shown now. */
+export interface SearchChangeDetail {
+  /** The text searched for; '' once cleared. */
+  query: string;
+  hits: SearchHit[];
+  current: SearchHit | null;
 }
 
 /** Where a page stands: not wanted yet ('idle'), loading, loaded, or failed (with why, as `pageerror` said). */
@@ -218,6 +253,15 @@ export interface FlipbookEventMap {
    * before create() rejects with the same error. Subclasses (such as <cone-flipbook>) hear it.
    */
   error: CustomEvent<{ error: FlipbookCreateError }>;
+  // docapi (issue 23)
+  /** search() found its hits, showHit() showed one, or clearSearch() ended it (query '', no hits). */
+  searchchange: CustomEvent<SearchChangeDetail>;
+  /** The book's container entered or left fullscreen (toggleFullscreen(), or the browser's Escape). */
+  fullscreenchange: CustomEvent<{ fullscreen: boolean }>;
+  /** download() is about to download `url`; cancelable: preventDefault() stops it (download() resolves false). */
+  download: CustomEvent<{ url: string }>;
+  /** print() is about to print `pages`; cancelable: preventDefault() stops it (print() resolves false). */
+  print: CustomEvent<{ pages: number[] }>;
   /**
    * A reader used "Copy link to this passage" on text selected on `page` (a PDF book's text layer):
    * `url` is this document's address with #page=N&text=... (N from 1), which opens a book with
@@ -276,7 +320,7 @@ export class BookController extends EventTarget {
   /** Pages loaded or failed so far, the page count, and loads running now (what `progress` said last). */
   readonly progress: { loaded: number; total: number; pending: number };
   /** The options in effect, defaults filled in (a frozen copy). */
-  readonly options: Readonly<Required<Omit<FlipbookOptions, 'pdf' | 'pdfWorkerSrc' | 'wasmUrl' | 'rememberPage' | 'on'>>> & FlipbookOptions;
+  readonly options: Readonly<Required<Omit<FlipbookOptions, 'pdf' | 'pdfWorkerSrc' | 'wasmUrl' | 'rememberPage' | 'on' | 'outline' | 'download'>>> & FlipbookOptions;
   /**
    * What draws the book, for tools and tests (reading pixels, counting frames): a BookView (WebGL2) or
    * a CanvasSurface (still pages); null after destroy(). Drive the book through its own members.
@@ -342,6 +386,36 @@ export class BookController extends EventTarget {
    * object or wasm object is left, the WebGL context is released, page loads are aborted. Turns in
    * flight resolve false; later calls reject (or throw) an Error. Idempotent.
    */
+  // docapi (issue 23): the document API
+  /** The table of contents: the `outline` option, else a PDF's bookmarks (destinations resolved), else []. */
+  outline(): Promise<OutlineEntry[]>;
+  /**
+   * Every place `text` occurs, case and diacritics folded (é = E), in page order: a PDF's text (read
+   * once, in the background after the book opens) and HTML pages' text. Rejects with an AbortError when
+   * `signal` aborts, a TypeError for a text that is not a string. Fires `searchchange`.
+   */
+  search(text: string, options?: { signal?: AbortSignal }): Promise<SearchHit[]>;
+  /**
+   * Turns to the hit's page (riffling when far) and marks it as the current hit; the other hits on the
+   * open pages are marked too. Resolves once the page lies open. Fires `searchchange`.
+   */
+  showHit(hit: SearchHit): Promise<void>;
+  /** Ends the search: every mark goes; `searchchange` with query '' and no hits. */
+  clearSearch(): void;
+  /**
+   * Page `index` drawn `width` pixels wide (and `height` high, else in its own shape), from its source
+   * (pdf.js for a PDF page), never touching the book's textures; three at a time. Rejects with an Error
+   * for a page that cannot be drawn, a RangeError/TypeError for bad arguments.
+   */
+  pageThumbnail(index: number, size: { width: number; height?: number }): Promise<HTMLCanvasElement>;
+  /** The book's container is the fullscreen element. */
+  readonly fullscreen: boolean;
+  /** Enters (true), leaves (false) or toggles fullscreen on the book's container; resolves with `fullscreen`. */
+  toggleFullscreen(force?: boolean): Promise<boolean>;
+  /** Downloads the `download` URL or the PDF unless a `download` listener prevents it; resolves whether it did (false with nothing to download). */
+  download(): Promise<boolean>;
+  /** Prints every page (drawn to images in a hidden frame) unless a `print` listener prevents it; resolves whether it did. */
+  print(): Promise<boolean>;
   destroy(): void;
   addEventListener<K extends keyof FlipbookEventMap>(type: K, listener: (event: FlipbookEventMap[K]) => void,
     options?: boolean | AddEventListenerOptions): void;

@@ -39,6 +39,9 @@ const OPTION_CHECKS = {
   turnArea: (v) => TURN_AREAS.includes(v) || TURN_AREAS.map((a) => `'${a}'`).join(', ').replace(/, ([^,]*)$/, ' or $1'),
   on: (v) => (isPlainEntry(v) && Object.entries(v).every(([type, f]) => BOOK_EVENTS.includes(type) && typeof f === 'function'))
     || `an object of listeners by event name (${BOOK_EVENTS.join(', ')})`,
+  // docapi (issue 23): the document API's options; each outline entry is checked by checkOutline().
+  outline: (v) => Array.isArray(v) || 'an array of { title, page, children? }',
+  download: (v) => (typeof v === 'string' && v.trim() !== '') || 'a URL string',
   // textlayer (issue 23): a PDF book's selectable text over its flat pages.
   textLayer: BOOLEAN,
 };
@@ -167,6 +170,7 @@ export function validateOptions(options, { pdf = false } = {}) {
   if (!('pages' in options)) throw new TypeError("conecurl: option 'pages' is missing (a non-empty array of page sources)");
   // An index loop, not forEach: a hole in a sparse array is a missing page, not one to skip.
   for (let index = 0; index < options.pages.length; index++) checkPage(options.pages[index], `pages[${index}]`, options.pages.length);
+  if (options.outline !== undefined) checkOutline(options.outline, 'outline', options.pages.length);
   if (options.startPage !== undefined && options.startPage >= options.pages.length) {
     throw new TypeError(`conecurl: option 'startPage' must be below the page count ${options.pages.length}, got ${options.startPage}`);
   }
@@ -174,7 +178,32 @@ export function validateOptions(options, { pdf = false } = {}) {
   // on their content is theirs.
   const hasHtml = Array.from(options.pages, (page) => isHtmlPage(page) || (isPlainEntry(page) && page.html !== undefined)).some(Boolean);
   const hasText = pdf && (options.textLayer ?? DEFAULTS.textLayer);
-  return { ...DEFAULTS, turnArea: hasHtml || hasText ? 'edges' : 'page', ...options };
+  const settings = { ...DEFAULTS, turnArea: hasHtml || hasText ? 'edges' : 'page', ...options };
+  if (settings.outline) settings.outline = copyOutline(settings.outline);  // the book's own: later changes to the caller's do not reach it
+  return settings;
+}
+
+const copyOutline = (entries) => entries.map(({ title, page, children }) => ({ title, page, children: copyOutline(children ?? []) }));
+
+// The `outline` option's entries, each { title: non-empty string, page: index in the book, children?: entries }.
+function checkOutline(entries, where, pageCount) {
+  entries.forEach((entry, i) => {
+    const name = `${where}[${i}]`;
+    if (!isPlainEntry(entry)) throw new TypeError(`conecurl: option '${name}' must be { title, page, children? }, got ${describeValue(entry)}`);
+    const extra = Object.keys(entry).find((key) => !['title', 'page', 'children'].includes(key));
+    if (extra) throw new TypeError(`conecurl: option '${name}' has an unknown key '${extra}' (allowed: title, page, children)`);
+    if (typeof entry.title !== 'string' || entry.title.trim() === '') {
+      throw new TypeError(`conecurl: option '${name}.title' must be a non-empty string, got ${describeValue(entry.title)}`);
+    }
+    if (!Number.isInteger(entry.page) || entry.page < 0 || entry.page >= pageCount) {
+      throw new TypeError(`conecurl: option '${name}.page' must be a page index from 0 to ${pageCount - 1}, got ${describeValue(entry.page)}`);
+    }
+    if (entry.children === undefined) return;
+    if (!Array.isArray(entry.children)) {
+      throw new TypeError(`conecurl: option '${name}.children' must be an array of { title, page, children? }, got ${describeValue(entry.children)}`);
+    }
+    checkOutline(entry.children, `${name}.children`, pageCount);
+  });
 }
 
 const oneLinkForm = (l) => ({ rect: l.rect, href: l.href ?? '#', toPage: l.page, title: l.title });

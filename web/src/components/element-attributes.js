@@ -42,6 +42,15 @@ function parseList(raw, attribute) {
   return urls;
 }
 
+// docapi (issue 23): the outline as JSON text.
+function parseOutline(raw, attribute) {
+  try {
+    return JSON.parse(raw);
+  } catch {
+    throw attributeError(attribute, 'JSON: an array of { "title", "page", "children"? }', raw);
+  }
+}
+
 // attribute -> [Flipbook option, parser]; the parsers check syntax, Flipbook.create the values.
 export const ATTRIBUTES = {
   pages: ['pages', parseList],
@@ -69,6 +78,9 @@ export const ATTRIBUTES = {
   fallback: ['fallback', parseBoolean],
   pdf: ['pdf', parseText],
   'pdf-worker-src': ['pdfWorkerSrc', parseText],
+  // docapi (issue 23)
+  outline: ['outline', parseOutline],
+  download: ['download', parseText],
   // textlayer (issue 23)
   'text-layer': ['textLayer', parseBoolean],
 };
@@ -104,6 +116,7 @@ export const KEPT_VALUES = {
   pdf: { keeps: (value) => value instanceof ArrayBuffer || value instanceof Uint8Array, strings: true,
     allowed: 'a URL string, an ArrayBuffer or a Uint8Array' },
   autoplay: { keeps: plainObject, allowed: 'true, false, { interval, loop } or the milliseconds between turns' },
+  outline: { keeps: Array.isArray, strings: true, allowed: 'an array of { title, page, children? } or its JSON text' },
 };
 
 /** Whether a property value for `option` is kept as given rather than written to the attribute. */

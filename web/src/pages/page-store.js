@@ -15,7 +15,10 @@ export class PageStore {
    * @param {Array<object>} entries  the book's page entries (options.js pageEntries)
    * @param {{ loadWindow: number, direction: string }} settings
    * @param {{ surface: () => object, openPages: () => number[], emit: (type: string, detail: object) => void,
-   *           onOpenPageLoaded: (index: number) => void }} hooks
+   *           onOpenPageLoaded: (index: number) => void,
+   *           decorate?: (index: number, image: object) => object }} hooks
+   *   decorate: the image handed to the surface for a page (its search marks drawn in: marked-page.js),
+   *   or the page's own image; the store keeps the clean one
    */
   constructor(entries, settings, hooks) {
     this.entries = entries;
@@ -123,7 +126,7 @@ export class PageStore {
         this._reload(index, cover, entry.src, sharp);  // the source holds more than was decoded: decode it again
       } else if (ratio > REFIT_RATIO || ratio < 1 / REFIT_RATIO) {
         if (image.dropped) this._reload(index, cover, entry.src, sharp);  // ours, closed after upload: decode again
-        else surface.setPageImage(index, image, { cover });
+        else surface.setPageImage(index, this.presented(index, image), { cover });
       }
       // Zoomed in past what the source holds: a sharper source, where the page has one.
       const sharper = typeof entry.src === 'function' ? entry.src : entry.zoomSrc;  // a function is told `cover`
@@ -157,6 +160,26 @@ export class PageStore {
     }
     this._cache.setState(index, 'idle');  // a load under way finds its entry gone and is dropped
     this.update();
+  }
+
+  /** What the surface is handed for page `index` whose image is `image`: the image with its marks, if any. */
+  presented(index, image) {
+    return this._hooks.decorate?.(index, image) ?? image;
+  }
+
+  /**
+   * Page `index`'s marks changed (search hits): its image is handed to the surface again, marked or
+   * clean, at the size it has now; one closed after upload is loaded again. Resolves when done.
+   */
+  remark(index) {
+    if (this._closed || this._cache.stateOf(index) !== 'loaded') return Promise.resolve();
+    const image = this._images.get(index);
+    const surface = this._hooks.surface();
+    if (image && !image.dropped) {
+      surface.setPageImage(index, this.presented(index, image), { cover: surface.pageImageSize(index) ?? this.cover() });
+      return Promise.resolve();
+    }
+    return this._reload(index, this.cover(), this.entries[index].src, false, { force: true });
   }
 
   /** The book is destroyed: loads stop, owned images are closed, waiters released. */
@@ -202,7 +225,7 @@ export class PageStore {
         if (index >= 0 && this._cache.stateOf(index) === 'loading') this._cache.setState(index, 'idle');
         return;
       }
-      await this._hooks.surface().queuePageImage(index, image, { cover: this.cover() });  // mid-turn: one a frame
+      await this._hooks.surface().queuePageImage(index, this.presented(index, image), { cover: this.cover() });  // mid-turn: one a frame
       if (this._closed) return;
       index = this._indexOf(entry, index);  // the surface renumbered its texture along with the page
       if (index < 0) {
@@ -262,7 +285,7 @@ export class PageStore {
       }
       const surface = this._hooks.surface();
       const previous = this._images.get(index);
-      surface.setPageImage(index, image, { cover });
+      surface.setPageImage(index, this.presented(index, image), { cover });
       this._keep(index, image);
       if (source === entry.src) this._keepNatural(index, natural);
       if (previous !== image) this._closeIfOwned(previous);

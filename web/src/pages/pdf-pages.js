@@ -58,6 +58,8 @@ export async function openPdf(source, { workerSrc } = {}) {
     /** pdf.js itself (for its TextLayer and the like) and the open document. */
     pdfjs,
     doc,
+    /** The PDF's URL when it was given one (null for bytes): what download() fetches. */
+    url: typeof source === 'string' ? source : null,
     /** Page `index` (from 0) as pdf.js's PDFPageProxy. */
     page: (index) => doc.getPage(index + 1),
     /**

@@ -1,0 +1,126 @@
+// What a reader does with the whole document: fullscreen (the Fullscreen API on the book's container,
+// so a toolbar in it goes along), download (the `download` option's URL, else the PDF) and print (the
+// pages rendered to images in a hidden frame). download and print first fire a cancelable event, so a
+// host can do it its own way. Loaded by the first call of any of them.
+
+/** Whether `container` is the fullscreen element of its document (or shadow root). */
+export function isFullscreen(container) {
+  return (container.getRootNode().fullscreenElement ?? null) === container;
+}
+
+/**
+ * Follows `container` in and out of fullscreen (by toggleFullscreen() or the browser: Escape), and
+ * tells `changed(fullscreen)` each time. Returns the stop.
+ */
+export function followFullscreen(container, changed) {
+  const doc = container.ownerDocument;
+  let was = isFullscreen(container);
+  const onChange = () => {
+    const now = isFullscreen(container);
+    if (now !== was) {
+      was = now;
+      changed(now);
+    }
+  };
+  doc.addEventListener('fullscreenchange', onChange);
+  return () => doc.removeEventListener('fullscreenchange', onChange);
+}
+
+/** Enters (force true), leaves (false) or toggles fullscreen; resolves with whether the container is fullscreen. */
+export async function toggleFullscreen(container, force) {
+  if (force !== undefined && typeof force !== 'boolean') {
+    throw new TypeError(`conecurl: toggleFullscreen() takes true, false or nothing; got ${String(force)}`);
+  }
+  const want = force ?? !isFullscreen(container);
+  if (want && !isFullscreen(container)) {
+    if (typeof container.requestFullscreen !== 'function') throw new Error('conecurl: this browser has no Fullscreen API');
+    await container.requestFullscreen();
+  } else if (!want && isFullscreen(container)) {
+    await container.ownerDocument.exitFullscreen();
+  }
+  return isFullscreen(container);
+}
+
+/**
+ * The URL download() fetches: the `download` option, else a PDF book's URL, else its bytes as a Blob
+ * URL (`made`: revoke it when done); null when the book has nothing to download.
+ */
+async function downloadUrl(settings, pdf) {
+  if (settings.download) return { url: settings.download, made: false };
+  if (!pdf) return null;
+  if (pdf.url) return { url: pdf.url, made: false };
+  const bytes = await pdf.doc.getData();
+  return { url: URL.createObjectURL(new Blob([bytes], { type: 'application/pdf' })), made: true };
+}
+
+/**
+ * Fires the cancelable `download` event ({ url }) on `target`; unless a listener prevented it, the
+ * browser downloads the URL through an <a download>. Resolves false when prevented or nothing to download.
+ */
+export async function downloadDocument(target, root, settings, pdf) {
+  const found = await downloadUrl(settings, pdf);
+  if (!found) return false;
+  const proceed = target.dispatchEvent(new CustomEvent('download', { detail: { url: found.url }, cancelable: true }));
+  if (proceed) {
+    const a = document.createElement('a');
+    a.href = found.url;
+    a.download = fileName(found.url);
+    a.style.display = 'none';
+    root.append(a);
+    a.click();
+    a.remove();
+  }
+  if (found.made) setTimeout(() => URL.revokeObjectURL(found.url), proceed ? 60000 : 0);  // the download has the bytes by then
+  return proceed;
+}
+
+function fileName(url) {
+  if (url.startsWith('blob:')) return 'document.pdf';
+  try {
+    return decodeURIComponent(new URL(url, document.baseURI).pathname.split('/').pop()) || 'document.pdf';
+  } catch {
+    return 'document.pdf';
+  }
+}
+
+const PRINT_WIDTH = 1600;  // pixels across a printed page: about 190 dpi on A4
+
+/**
+ * Fires the cancelable `print` event ({ pages }) on `target`; unless prevented, draws every page
+ * (`draw(index, { width })`: the thumbnails' drawing, from the page sources or pdf.js) into a hidden
+ * frame, one page a sheet, and prints it. Resolves false when prevented.
+ */
+export async function printDocument(target, pageCount, draw) {
+  const pages = Array.from({ length: pageCount }, (_, i) => i);
+  if (!target.dispatchEvent(new CustomEvent('print', { detail: { pages: pages.slice() }, cancelable: true }))) return false;
+  document.querySelector('iframe[data-conecurl-print]')?.remove();  // a frame from an earlier print
+  const frame = document.createElement('iframe');
+  frame.dataset.conecurlPrint = '';
+  frame.setAttribute('aria-hidden', 'true');
+  frame.tabIndex = -1;
+  frame.style.cssText = 'position:fixed;right:0;bottom:0;width:0;height:0;border:0;visibility:hidden';
+  document.body.append(frame);
+  const doc = frame.contentDocument;  // about:blank: an empty document of this origin
+  const style = doc.createElement('style');
+  style.textContent = '@page { margin: 0 } html, body { margin: 0 } img { display: block; width: 100%; height: auto; break-after: page }';
+  doc.head.append(style);
+  const urls = [];
+  for (const index of pages) {
+    const canvas = await draw(index, { width: PRINT_WIDTH });
+    const blob = await new Promise((resolve) => canvas.toBlob(resolve, 'image/png'));
+    const url = URL.createObjectURL(blob);
+    urls.push(url);
+    const img = doc.createElement('img');
+    img.alt = `Page ${index + 1}`;
+    img.src = url;
+    doc.body.append(img);
+    await img.decode();
+  }
+  const done = () => {
+    for (const url of urls) URL.revokeObjectURL(url);
+    frame.remove();
+  };
+  frame.contentWindow.addEventListener('afterprint', done, { once: true });
+  frame.contentWindow.print();
+  return true;
+}
