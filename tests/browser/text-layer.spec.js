@@ -269,6 +269,22 @@ test('browser: axe-core finds no serious or critical violation with the text lay
   expect(serious).toEqual([]);
 });
 
+/** Waits for the book's current search hit and checks it lies over the span of `text` on page `index`. */
+async function expectHitOver(page, index, text) {
+  await page.waitForFunction(() => document.querySelector('[data-search-hit]'));
+  const span = await spanBox(page, index, text);
+  const marks = await page.evaluate((index) => [...document.querySelectorAll(`[data-search-hit][data-page="${index}"]`)].map((m) => {
+    const { x, y, width, height } = m.getBoundingClientRect();
+    return { x, y, width, height };
+  }), index);
+  const over = marks.filter((m) => m.x < span.x + span.width && span.x < m.x + m.width && m.y < span.y + span.height && span.y < m.y + m.height);
+  expect(over.length, `a data-search-hit over "${text}"`).toBeGreaterThan(0);
+  const x0 = Math.min(...over.map((m) => m.x));
+  const x1 = Math.max(...over.map((m) => m.x + m.width));
+  expect(Math.abs(x0 - span.x)).toBeLessThan(4);
+  expect(Math.abs(x1 - (span.x + span.width))).toBeLessThan(4);
+}
+
 /** Selects line `n` of page `index` by dragging over it (viewport points from its span). */
 async function selectLine(page, index, n) {
   const box = await spanBox(page, index, lineText(index, n));
@@ -279,7 +295,7 @@ async function selectLine(page, index, n) {
   await page.mouse.up();
 }
 
-test('browser: a passage link round-trips: select, the button by keyboard, the link in the clipboard and the event; the link opens the book at that page', async ({ page, context }) => {
+test('browser: a passage link round-trips: select, the button by keyboard, the link in the clipboard and the event; the link opens the book at that page with the passage marked', async ({ page, context }) => {
   await context.grantPermissions(['clipboard-read', 'clipboard-write']);
   await openBook(page, { startPage: 1 });
   await selectLine(page, 2, 3);
@@ -304,6 +320,9 @@ test('browser: a passage link round-trips: select, the button by keyboard, the l
   const { hash } = new URL(detail.url);
   await openBook(other, { hash: true }, { hash });
   expect(await other.evaluate(() => window.book.openPages)).toContain(2);
+  // ... and marks the passage there as a search hit, over its words.
+  await expectHitOver(other, 2, lineText(2, 3));
+  await other.screenshot({ path: test.info().outputPath('passage-marked.png') });
   // Followed on a book already open (a link within the document), it turns there.
   await other.evaluate((text) => { location.hash = `#page=5&text=${encodeURIComponent(text)}`; }, lineText(4, 0));
   await other.waitForFunction(() => window.book.openPages.includes(4) && !window.book.animating);
@@ -328,23 +347,18 @@ test('browser: where the Clipboard API refuses, the passage link is copied throu
   expect(await page.evaluate(() => document.querySelectorAll('textarea').length)).toBe(0);
 });
 
-test('browser: a passage link marks its passage as a search hit over the words (needs search() and showHit())', async ({ page }) => {
+test('browser: a passage link marks its passage as a search hit over its words, on its page (the same words elsewhere are not the hit shown)', async ({ page, context }) => {
   const text = lineText(4, 2);
   await openBook(page, { hash: true }, { hash: `#page=5&text=${encodeURIComponent(text)}` });
-  const hasSearch = await page.evaluate(() => typeof window.book.search === 'function' && typeof window.book.showHit === 'function');
-  test.skip(!hasSearch, 'search() and showHit() are not in this build yet (docapi)');
   expect(await page.evaluate(() => window.book.openPages)).toContain(4);
-  await page.waitForFunction(() => document.querySelector('[data-search-hit]'));
-  const span = await spanBox(page, 4, text);
-  const marks = await page.evaluate(() => [...document.querySelectorAll('[data-search-hit]')].map((m) => {
-    const { x, y, width, height } = m.getBoundingClientRect();
-    return { x, y, width, height };
-  }));
-  const over = marks.filter((m) => m.x < span.x + span.width && span.x < m.x + m.width && m.y < span.y + span.height && span.y < m.y + m.height);
-  expect(over.length).toBeGreaterThan(0);
-  const union = over.reduce((a, m) => ({ x0: Math.min(a.x0, m.x), x1: Math.max(a.x1, m.x + m.width) }), { x0: Infinity, x1: -Infinity });
-  expect(Math.abs(union.x0 - span.x)).toBeLessThan(4);
-  expect(Math.abs(union.x1 - (span.x + span.width))).toBeLessThan(4);
+  await expectHitOver(page, 4, text);
+  // "charlie" is on every page: the hit shown is the one on the link's page (a new document: a goto
+  // that changes only the hash would stay in this one).
+  const other = await context.newPage();
+  await openBook(other, { hash: true }, { hash: '#page=4&text=charlie' });
+  await other.waitForFunction(() => document.querySelector('[data-search-hit][data-current]'));
+  expect(await other.evaluate(() => document.querySelector('[data-search-hit][data-current]').dataset.page)).toBe('3');
+  await other.close();
 });
 
 test('browser: without WebGL2 the still-page fallback of a PDF book has its text layer too, over its words', async ({ page }) => {
