@@ -10,6 +10,7 @@
 
 #include "book.hpp"
 #include "book_camera.hpp"
+#include "edge_marks_bindings.hpp"
 #include "js_values.hpp"
 #include "page_drag.hpp"
 
@@ -300,6 +301,7 @@ EMSCRIPTEN_BINDINGS(conecurl_book) {
         .function("hintHeldTurn", &hintHeld)
         .function("restingRect", &restingRectOf)
         .function("openPagePlaces", &openPagePlacesOf)
+        .function("edgeMarkPlaces", &bindings::edgeMarkPlaces)
         .function("zoomAbout", &zoomAboutPixel)
         .function("panBy", &panByPixels)
         .function("zoom", optional_override([](const Book& b) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "book_renderer.hpp"
+#include "edge_marks_bindings.hpp"
 #include "js_values.hpp"
 
 namespace {
@@ -116,6 +117,7 @@ EMSCRIPTEN_BINDINGS(conecurl_renderer) {
                   }))
         .function("gridErrorPixels", &BookRenderer::gridErrorPixels)
         .function("maxTextureSize", &BookRenderer::maxTextureSize)
+        .function("setEdgeMarks", &bindings::setEdgeMarks)
         .function("recreateGpuObjects", &BookRenderer::recreateGpuObjects);
 #ifdef CONECURL_TEST_BINDINGS
     // The test build only: the vertex shader's output read back, and the grid's points.

@@ -226,10 +226,12 @@ void BookRenderer::destroyGpuObjects() {
     glDeleteFramebuffers(1, &shadowFramebuffer_);
     glDeleteTextures(1, &shadowTexture_);
     for (const auto& [page, texture] : pageTextures_) glDeleteTextures(1, &texture);
+    edgeMarks_.release();
     forgetGpuObjects();
 }
 
 void BookRenderer::forgetGpuObjects() {
+    edgeMarks_.forget();
     pageTextures_.clear();
     gridKey_ = GridKey{};  // the grid buffer is gone too
     leafProgram_ = Program{};
@@ -493,6 +495,7 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
         glClear(GL_COLOR_BUFFER_BIT);  // nothing is depth-tested in a frame of resting pages
     }
     drawStacks(camera);
+    edgeMarks_.draw(book, camera.viewProjection, programInUse_);
     useProgram(leafProgram_);
     if (shadows) {
         bindTexture(2, shadowTexture_);

@@ -18,6 +18,7 @@
 #include "book.hpp"
 #include "book_camera.hpp"
 #include "book_stacks.hpp"
+#include "edge_marks_renderer.hpp"
 #include "leaf_placement.hpp"
 #include "page_grid.hpp"
 
@@ -90,6 +91,8 @@ public:
     // The chosen grid's verified mesh error in pixels at the current canvas (NaN for fixed rows).
     double gridErrorPixels() const { return gridErrorPixels_; }
     int maxTextureSize() const { return maxTextureSize_; }
+    // Tabs and ticks on the page blocks' fore-edge (edge_marks_renderer.hpp), drawn over the stacks.
+    EdgeMarksRenderer& edgeMarks() { return edgeMarks_; }
 
     // After a lost context is restored: recreates every GL object from CPU-side state. Page images
     // are GPU-only and must be set again (the JS layer keeps their sources).
@@ -198,6 +201,7 @@ private:
     int shadowWidth_ = 0;
     int shadowHeight_ = 0;
     PageTextures pageTextures_;
+    EdgeMarksRenderer edgeMarks_;
 };
 
 }  // namespace conecurl

@@ -115,6 +115,8 @@ test('browser: demo shows its PDF example through pdf.js, and the contents links
   const problems = await openReady(page, '/web/demo/');
   await page.selectOption('#source', 'pdf');
   await expect(page.locator('#where')).toHaveText('Page 1 of 12', { timeout: 30_000 });
+  // The PDF book is shown as a document: with the toolbar (controls: true), Download and Print too.
+  await expect(page.getByRole('toolbar', { name: 'Book controls' }).getByRole('button', { name: 'Print' })).toBeVisible();
   await page.click('#next');
   await expect(page.locator('#where')).toHaveText('Pages 2–3 of 12', { timeout: 30_000 });
   const contentsLinks = page.locator('#book .conecurl-links a');

@@ -322,6 +322,9 @@ test('browser: turn-area, label and fallback are attributes too; every option pr
       muted: true, rememberPage: 'element-spec', wasmUrl: '/dist/x.wasm', antialias: 'auto', turnArea: 'corners',
       label: 'Atlas of clouds', fallback: false, pdf: new Uint8Array([37, 80, 68, 70]), pdfWorkerSrc: '/no/worker.mjs',
       outline: [{ title: 'Clouds', page: 1 }], download: '/files/atlas.pdf',
+      edgeMarks: true,
+      // viewer (issue 23): objects kept as given
+      controls: { search: false }, labels: { next: 'Suivant' },
       textLayer: false,
     };
     const unsampled = PROPERTY_OPTIONS.filter((option) => option !== 'display' && !(option in values));

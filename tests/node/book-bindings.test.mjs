@@ -144,3 +144,26 @@ test('node: Book.setPages (wasm) changes the page count and hard pages of a live
     book.delete();
   }
 });
+
+test('node: Book.edgeMarkPlaces (wasm) places each mark on the block its leaf lies in, outside the open pages, and refuses bad marks by name', () => {
+  const book = engine.Book.create({ pageCount: 100 });
+  try {
+    book.jumpTo(20);
+    const marks = [{ page: 4, kind: 'tab' }, { page: 90, kind: 'tab' }, { page: 60, kind: 'tick' }, { page: 500, kind: 'tab' }];
+    const places = book.edgeMarkPlaces(marks, 1200, 800);
+    const [left, right] = book.openPagePlaces(1200, 800);
+    // Ticks first; a page past the book shows nowhere.
+    assert.deepEqual(places.map((p) => [p.mark, p.page, p.kind, p.turned]), [[2, 60, 'tick', false], [0, 4, 'tab', true], [1, 90, 'tab', false]]);
+    for (const place of places) {
+      if (place.turned) assert.ok(place.x + place.width <= left.x + 1e-6);
+      else assert.ok(place.x >= right.x + right.width - 1e-6);
+    }
+    assert.throws(() => book.edgeMarkPlaces([{ page: 1, kind: 'dot' }], 1200, 800),
+      { name: 'TypeError', message: "conecurl: edge marks[0].kind must be 'tab' or 'tick'" });
+    assert.throws(() => book.edgeMarkPlaces([{ page: -1, kind: 'tab' }], 1200, 800),
+      { name: 'TypeError', message: 'conecurl: edge marks[0].page must be a page index (a whole number from 0)' });
+    assert.throws(() => book.edgeMarkPlaces('tabs', 1200, 800), { name: 'TypeError' });
+  } finally {
+    book.delete();
+  }
+});

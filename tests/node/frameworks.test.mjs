@@ -82,6 +82,11 @@ test('node: pages written inline in each render are the same pages; a fixed opti
   assert.ok(!fixedOptionsDiffer({ pages: ['a'], lighting: true }, { pages: ['a'], lighting: false }));
   assert.ok(fixedOptionsDiffer({ pages: ['a'], direction: 'ltr' }, { pages: ['a'], direction: 'rtl' }));
   assert.ok(!fixedOptionsDiffer({ pages: ['a'] }, { pages: ['b'] }));  // pageChanges() applies them live
+  // An object written inline in each render is the same option while its values are.
+  assert.ok(!fixedOptionsDiffer({ controls: { search: false }, labels: { next: 'Suivant' } }, { controls: { search: false }, labels: { next: 'Suivant' } }));
+  assert.ok(fixedOptionsDiffer({ controls: { search: false } }, { controls: { search: true } }));
+  assert.ok(fixedOptionsDiffer({ controls: { search: false } }, { controls: true }));
+  assert.ok(fixedOptionsDiffer({ labels: { next: 'Suivant' } }, { labels: { next: 'Suivant', previous: 'Précédent' } }));
 });
 
 test('node: pageChanges turns one pages prop into the next with the fewest live calls, inserting before removing', () => {

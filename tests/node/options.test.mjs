@@ -42,6 +42,9 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     on: 'an object of listeners by event name (ready, progress, pageerror, turnstart, turned, turncancel, resize, zoom, sharpened, link, pageschange, error, searchchange, fullscreenchange, download, print, passagelink)',
     outline: 'an array of { title, page, children? }',
     download: 'a URL string',
+    // viewer (issue 23)
+    controls: 'true, false or an object of parts to show or hide (previous, next, page, zoom, fullscreen, thumbnails, contents, search, download, print), each true or false',
+    labels: 'an object of texts by key (toolbar, previous, next, page, pageOf, zoomIn, zoomOut, fullscreen, thumbnails, contents, search, download, print, close, thumbnail, noContents, searchField, previousHit, nextHit, hitOf, noHits, searching, hitPage), each a non-empty string',
     textLayer: 'true or false',
   };
   const bad = {
@@ -69,6 +72,8 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     on: [null, [], () => {}, { turnd: () => {} }, { turned: 'log' }, { ready: null }],
     outline: [null, {}, 'toc', 3],
     download: ['', '  ', 3, null, true],
+    controls: ['yes', 1, null, [], { thumbnail: false }, { search: 'no' }],
+    labels: [null, 'Suivant', [], { nextPage: 'Suivant' }, { next: '' }, { next: 3 }],
     textLayer: ['true', 1, null],
   };
   assert.deepEqual(Object.keys(bad).sort(), Object.keys(allowed).sort());
@@ -76,7 +81,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     for (const value of values) refuses({ pages, [option]: value }, `option '${option}' must be ${allowed[option]}, got ${describeValue(value)}`);
   }
   // Every option but `pages` has a default, so the table above covers them all.
-  assert.deepEqual(Object.keys(DEFAULTS).sort(), Object.keys(allowed).filter((k) => !['wasmUrl', 'on', 'rememberPage', 'outline', 'download'].includes(k)).sort());
+  assert.deepEqual(Object.keys(DEFAULTS).sort(), Object.keys(allowed).filter((k) => !['wasmUrl', 'on', 'rememberPage', 'outline', 'download', 'labels'].includes(k)).sort());
 });
 
 test('node: pages must be a non-empty array of page sources; each entry is checked by index, src, alt, hard and key', () => {
@@ -115,7 +120,7 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses(null, 'options must be an object, got null');
   refuses('pages', 'options must be an object, got "pages"');
   refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, direction, startPage, duration, schedule, center, hardCovers, "
-    + 'lighting, shadows, gutter, thickness, loadWindow, wasmUrl, label, fallback, hash, autoplay, sound, muted, rememberPage, antialias, turnArea, on, outline, download, textLayer)');
+    + 'lighting, shadows, gutter, thickness, loadWindow, wasmUrl, label, fallback, hash, autoplay, sound, muted, rememberPage, antialias, turnArea, on, outline, download, edgeMarks, controls, labels, textLayer)');
   refuses({ pages, antialias: 'yes' }, "option 'antialias' must be 'auto', true or false, got \"yes\"");
   refuses({ pages, startPage: 3 }, "option 'startPage' must be below the page count 3, got 3");
   // A value whose own toString throws or is huge is described, not called.
@@ -168,4 +173,11 @@ test('node: schedule is \'paper\' (default) or \'smooth\'', () => {
   assert.equal(validateOptions({ pages: ['a.jpg'], schedule: 'smooth' }).schedule, 'smooth');
   assert.throws(() => validateOptions({ pages: ['a.jpg'], schedule: 'bouncy' }),
     { name: 'TypeError', message: "conecurl: option 'schedule' must be 'paper' or 'smooth', got \"bouncy\"" });
+});
+
+test('node: edgeMarks is true or false, off by default without controls', () => {
+  assert.equal(validateOptions({ pages: ['a.jpg'] }).edgeMarks, false);
+  assert.equal(validateOptions({ pages: ['a.jpg'], edgeMarks: true }).edgeMarks, true);
+  assert.throws(() => validateOptions({ pages: ['a.jpg'], edgeMarks: 'yes' }),
+    { name: 'TypeError', message: "conecurl: option 'edgeMarks' must be true or false, got \"yes\"" });
 });

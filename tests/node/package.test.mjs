@@ -89,7 +89,7 @@ function typecheckConsumer(template, parent) {
   }
 }
 
-test('node: strict TypeScript (bundler and node16 resolution) typechecks a consumer of the packed conecurl and conecurl/element', () => {
+test('node: strict TypeScript (bundler and node16 resolution) typechecks a consumer of the packed conecurl, conecurl/element and conecurl/viewer', () => {
   typecheckConsumer('typescript', os.tmpdir());
 });
 

@@ -15,10 +15,13 @@ import { BOOK_EVENTS, EVENT_DETAILS } from '../../web/src/book/book-events.js';
 import { CREATE_OPTIONS, DEFAULTS, LIVE_OPTIONS } from '../../web/src/book/options.js';
 import { ATTRIBUTES, NO_ATTRIBUTE, PROPERTY_OPTIONS } from '../../web/src/components/element-attributes.js';
 import { EVENT_HANDLERS, OPTION_PROPS, PAGE_PROPS } from '../../web/src/components/framework-props.js';
+import { LABEL_KEYS } from '../../web/src/viewer/viewer-labels.js';
+import { CONTROL_PARTS } from '../../web/src/viewer/viewer-options.js';
+import * as viewerEntry from '../../web/src/viewer.js';
 
 const root = fileURLToPath(new URL('../../', import.meta.url));
 const src = join(root, 'web/src');
-const ENTRY_TYPES = ['index.d.ts', 'element.d.ts', 'react.d.ts', 'vue.d.ts', 'engine.d.ts'].map((file) => join(src, file));
+const ENTRY_TYPES = ['index.d.ts', 'element.d.ts', 'react.d.ts', 'vue.d.ts', 'engine.d.ts', 'viewer.d.ts'].map((file) => join(src, file));
 
 let api;
 let checker;
@@ -73,10 +76,10 @@ test('node: FlipbookOptions (flipbook.d.ts) has exactly the options Flipbook.cre
   assert.deepEqual(names(declared('book/flipbook.d.ts', 'FlipbookOptions')), sorted(CREATE_OPTIONS));
 });
 
-test('node: book.options is typed with a value for exactly the options that always have one (DEFAULTS, pages, turnArea); setOptions takes LIVE_OPTIONS', () => {
+test('node: book.options is typed with a value for exactly the options that always have one (DEFAULTS, pages, turnArea, edgeMarks); setOptions takes LIVE_OPTIONS', () => {
   const controller = declared('book/flipbook.d.ts', 'BookController');
   const always = properties(typeOfMember(controller, 'options')).filter((s) => !optional(s)).map((s) => s.name);
-  assert.deepEqual(sorted(always), sorted([...Object.keys(DEFAULTS), 'pages', 'turnArea']));
+  assert.deepEqual(sorted(always), sorted([...Object.keys(DEFAULTS), 'pages', 'turnArea', 'edgeMarks']));
   const [setOptions] = checker.getSignaturesOfType(typeOfMember(controller, 'setOptions'), SignatureKind.Call);
   assert.deepEqual(names(checker.getParameterType(setOptions, 0)), sorted(LIVE_OPTIONS));
 });
@@ -157,4 +160,13 @@ test('node: loadEngine\'s documentation names only classes the Embind bindings d
     .filter((name) => name !== 'ConeCurlEngine');  // the module's type in load-engine.d.ts
   assert.ok(named.length > 0);
   assert.deepEqual(named.filter((name) => !defined.includes(name)), []);
+});
+
+test('node: the viewer\'s typings hold its tables: ControlParts has the toolbar\'s parts (CONTROL_PARTS), ViewerLabels the label keys, and viewer.d.ts types what viewer.js exports', () => {
+  assert.deepEqual(names(declared('book/flipbook.d.ts', 'ControlParts')), sorted(CONTROL_PARTS));
+  assert.deepEqual(names(declared('book/flipbook.d.ts', 'ViewerLabels')), sorted(LABEL_KEYS));
+  for (const name of Object.keys(viewerEntry)) exported('viewer.d.ts', name);
+  const controls = declared('viewer.d.ts', 'Controls');
+  assert.deepEqual(names(controls), ['element', 'panels', 'remove', 'toolbar']);
+  assert.deepEqual(names(declared('viewer.d.ts', 'AttachControlsOptions')), ['controls', 'labels', 'pdf']);
 });

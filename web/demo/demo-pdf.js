@@ -1,6 +1,7 @@
 // The demo's PDF example: a twelve-page brochure made in the browser with pdf-lib (a dev dependency),
-// with headings, paragraphs, figures, a contents page whose entries link to their pages, and a web link.
-import { PDFDocument, PDFName, PDFString, StandardFonts, rgb } from '/node_modules/pdf-lib/dist/pdf-lib.esm.min.js';
+// with headings, paragraphs, figures, a contents page whose entries link to their pages, a web link, and
+// bookmarks (the viewer's Contents panel shows them).
+import { PDFDocument, PDFHexString, PDFName, PDFNull, PDFString, StandardFonts, rgb } from '/node_modules/pdf-lib/dist/pdf-lib.esm.min.js';
 import { wrapWords } from './book-pages.js';
 
 const SECTIONS = ['Paper and grain', 'Folding the sheet', 'Sewing the book', 'The turning leaf', 'Cones, not cylinders',
@@ -64,5 +65,23 @@ export async function makeDemoPdf() {
   last.drawText('Made with conecurl', { x: 40, y: H - 80, size: 22, font: bold });
   last.drawText('pdf.js: mozilla.github.io/pdf.js', { x: 40, y: H - 120, size: 13, font: serif, color: rgb(0.1, 0.25, 0.6) });
   link(last, [38, H - 126, 260, H - 104], { A: { Type: 'Action', S: 'URI', URI: PDFString.of('https://mozilla.github.io/pdf.js/') } });
+  addBookmarks(pdf, [['Cover', 0], ['Contents', 1], ...SECTIONS.map((title, i) => [title, i + 2]), ['Made with conecurl', pages.length - 1]]
+    .map(([title, index]) => ({ title, page: pages[index] })));
   return pdf.save();
+}
+
+// A flat /Outlines list: each bookmark's title and the page it opens.
+function addBookmarks(pdf, marks) {
+  const { context, catalog } = pdf;
+  const outlines = context.nextRef();
+  const refs = marks.map(() => context.nextRef());
+  marks.forEach(({ title, page }, i) => {
+    const entry = context.obj({ Parent: outlines, Dest: [page.ref, PDFName.of('XYZ'), PDFNull, PDFNull, PDFNull] });
+    entry.set(PDFName.of('Title'), PDFHexString.fromText(title));
+    if (i > 0) entry.set(PDFName.of('Prev'), refs[i - 1]);
+    if (i < marks.length - 1) entry.set(PDFName.of('Next'), refs[i + 1]);
+    context.assign(refs[i], entry);
+  });
+  context.assign(outlines, context.obj({ Type: 'Outlines', First: refs[0], Last: refs[refs.length - 1], Count: marks.length }));
+  catalog.set(PDFName.of('Outlines'), outlines);
 }

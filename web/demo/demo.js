@@ -79,7 +79,7 @@ function buildBook(startPage) {
     if (pdf) pdfBytes ??= await makeDemoPdf();
     const pages = source === 'html' ? magazinePages() : PAGES;
     book = await Flipbook.create($('book'), {
-      ...(pdf ? { pdf: pdfBytes } : { pages }),
+      ...(pdf ? { pdf: pdfBytes, controls: true } : { pages }),  // the PDF as a document: toolbar, thumbnails, search
       startPage: source === 'drawn' ? startPage : 0,
       display: $('display').value,
       direction: $('direction').value,

@@ -21,7 +21,9 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
  * ("true"/"false"), thickness ("true"/"false"/a number), autoplay ("true"/"false"/the milliseconds
  * between turns), antialias ("auto"/"true"/"false"), turn-area ("page"/"edges"/"corners"/"none"),
  * label (the book's name for screen readers), load-window, remember-page, wasm-url, pdf, pdf-worker-src,
- * outline (the table of contents as JSON; the property also keeps the array), download (a URL),
+ * outline (the table of contents as JSON; the property also keeps the array), download (a URL), edge-marks ("true"/"false").
+ * controls (bare or "true": the toolbar; its parts as an object through the property), labels (the
+ * toolbar's texts as a JSON object, or an object through the property),
  * text-layer ("true"/"false": a PDF's selectable text).
  * lighting, shadows, gutter, thickness, display, sound and muted apply to the running book; a change of
  * any other builds a new book at the page shown.
@@ -84,6 +86,14 @@ export class ConeFlipbookElement extends HTMLElement {
   set outline(value: FlipbookOptions['outline'] | string | null);
   /** The URL download() and the Download button fetch (the download attribute). */
   download: FlipbookOptions['download'];
+  /** Tabs and ticks on the book's fore-edge (the edge-marks attribute); default: on with controls. */
+  edgeMarks: FlipbookOptions['edgeMarks'];
+  /** The toolbar: true or false set the attribute; `{ search: false }` is kept as given. */
+  get controls(): FlipbookOptions['controls'];
+  set controls(value: FlipbookOptions['controls'] | null);
+  /** The toolbar's texts: an object is kept as given; a string is written to the attribute (JSON). */
+  get labels(): FlipbookOptions['labels'];
+  set labels(value: FlipbookOptions['labels'] | string | null);
   /** A PDF book's selectable text over its flat pages (the text-layer attribute); default true. */
   textLayer: FlipbookOptions['textLayer'];
   /**

@@ -6,6 +6,7 @@ import {
 } from 'conecurl';
 import { ConeFlipbookElement } from 'conecurl/element';
 import { loadEngine as loadEngineDirectly } from 'conecurl/engine';
+import { attachControls, CONTROL_PARTS, DEFAULT_LABELS, type Controls } from 'conecurl/viewer';
 
 export async function openBook(container: HTMLElement): Promise<number> {
   const options: FlipbookOptions = {
@@ -87,4 +88,17 @@ export async function useEngine(canvas: HTMLCanvasElement): Promise<number> {
   const view = await BookView.create(canvas, { engine, pageCount: 4, display: 'single' });
   view.destroy();
   return engine.curlAt(0.3).theta + same.curlAt(0.1).rho;
+}
+
+// conecurl/viewer: the toolbar on a book you made, its parts and labels typed.
+export async function withControls(container: HTMLElement): Promise<number> {
+  const book = await Flipbook.create(container, { pages: ['a.jpg', 'b.jpg'], controls: { search: false }, labels: { next: 'Suivant' } });
+  const controls: Controls = attachControls(book, { controls: { print: false }, labels: { pageOf: '{n} / {total}' }, pdf: false });
+  const toolbar: HTMLElement = controls.toolbar;
+  controls.remove();
+  // @ts-expect-error: 'share' is no part of the toolbar
+  attachControls(book, { controls: { share: false } });
+  // @ts-expect-error: labels are strings
+  attachControls(book, { labels: { next: 3 } });
+  return toolbar.childElementCount + CONTROL_PARTS.length + DEFAULT_LABELS.next.length;
 }

@@ -8,9 +8,10 @@ import { createShell } from './book-shell.js';
 import { BookEvents } from './book-events.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { BookTurns } from './book-turns.js';
+import { EdgeMarks, edgeMarksOn } from './edge-marks.js';
 import {
-  attachBookInput, followSurface, makeDocumentApi, makeHtmlPages, makeLinkLayer, makeLivePages, makePageStore,
-  makeTextLayer, makeZoom,
+  attachBookInput, attachViewer, followSurface, makeDocumentApi, makeHtmlPages, makeLinkLayer, makeLivePages, makePageStore,
+  loadTextLayer, makeZoom,
   startCompanions, watchBookSize,
 } from './book-wiring.js';
 import { MAX_ZOOM, displayFor, openPages } from '../engine/layout.js';
@@ -186,6 +187,8 @@ export class BookController extends EventTarget {
       this._finalPage = this.page;  // page and display still answer after destroy()
       this._finalDisplay = this.display;
     }
+    this._controls?.remove();  // before the book goes: closing a panel may end a search
+    this._controls = null;
     this._destroyed = true;
     this._events.drop();
     this._store.close();
@@ -214,16 +217,14 @@ export class BookController extends EventTarget {
     // HTML pages live over the canvas while they lie open (html-pages.js, loaded only for books that have them).
     const HtmlPages = this._pages.some((entry) => entry.html) ? (await import('../layers/html-pages.js')).HtmlPages : null;
     if (HtmlPages && !this._destroyed) this._mountHtml(HtmlPages);
-    // A PDF's text, selectable over its flat pages (under the links, which stay clickable).
-    const TextLayer = this._pdf && this._settings.textLayer ? (await import('../layers/text-layer.js')).createTextLayer : null;
-    if (TextLayer && !this._destroyed) {
-      this._text = makeTextLayer(TextLayer, this._port, this._links.element);
-      this._layers.splice(this._layers.indexOf(this._links), 0, this._text);
-    }
+    this._controls = await attachViewer(this, this._port);  // the toolbar first: the book fits the rest of its box
+    this._text = await loadTextLayer(this._port, this._links.element);  // a PDF's selectable text, under the links
+    if (this._text) this._layers.splice(this._layers.indexOf(this._links), 0, this._text);
     const { width, height } = this._shell.root.getBoundingClientRect();
     this._layoutSize = { width, height };
     this._surface = this._makeSurface(displayFor(this._settings.display, this._layoutSize));
     followSurface(this._port);  // the pages a moving leaf shows, images lost with a context
+    if (edgeMarksOn(this._settings)) this._layers.push(new EdgeMarks(this, this._port));  // tabs and ticks on the fore-edge
     this._surface.jumpTo(this._surface.positionOfPage(openingPage(this._settings, this.pageCount)));
     this._input = attachBookInput(this._port);
     this._stopWatchingSize = watchBookSize(this._port, this._layoutSize);

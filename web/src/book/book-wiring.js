@@ -84,11 +84,15 @@ export function makeLinkLayer(book) {
 }
 
 /**
- * A PDF's selectable text (text-layer.js createTextLayer, loaded only for PDF books with `textLayer`),
- * laid in under `before` (the links); its passage button copies a link and says so (`passagelink`).
+ * A PDF's selectable text (text-layer.js, imported only for PDF books with `textLayer`), laid in under
+ * `before` (the links); its passage button copies a link and says so (`passagelink`). Null for other
+ * books, and once destroyed.
  * @param {BookPort} book
  */
-export function makeTextLayer(createTextLayer, book, before) {
+export async function loadTextLayer(book, before) {
+  if (!book.pdf() || !book.settings.textLayer) return null;
+  const { createTextLayer } = await import('../layers/text-layer.js');
+  if (book.destroyed()) return null;
   return createTextLayer(book.root, {
     pdf: book.pdfDocument(),
     canvas: book.canvas,
@@ -284,4 +288,17 @@ export function makeDocumentApi(controller, book) {
       stopFollowingFullscreen?.();
     },
   };
+}
+
+/**
+ * The viewer (the `controls` option): its module loaded only now, attached to `controller` through its
+ * public API as conecurl/viewer's attachControls is; null without `controls` or once destroyed.
+ * @param {BookPort} book
+ */
+export async function attachViewer(controller, book) {
+  const { controls, labels } = book.settings;
+  if (!controls) return null;
+  const { attachControls } = await import('../viewer/attach-controls.js');
+  if (book.destroyed()) return null;
+  return attachControls(controller, { controls, labels, pdf: book.pdf() });
 }

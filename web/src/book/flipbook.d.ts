@@ -154,6 +154,26 @@ export interface FlipbookOptions {
   outline?: OutlineEntry[];
   /** The URL download() (and the toolbar's Download button) downloads; a PDF book defaults to its PDF. */
   download?: string;
+  // edgemarks (issue 23)
+  /**
+   * Marks on the book's edge: the page blocks' fore-edge carries a coloured index tab for each
+   * top-level entry of `outline()` and a tick for each page with a search hit (`searchchange`), drawn
+   * at the leaves they belong to, moving from one block to the other as leaves turn. At rest each tab
+   * and tick has a button over it, named by its title, that riffles there. Needs the WebGL book and
+   * `thickness` (a StaticBook draws no blocks). Default: true when `controls` is on, else false.
+   */
+  edgeMarks?: boolean;
+  // viewer (issue 23)
+  /**
+   * A toolbar below the book (role="toolbar"; the book fits the rest of its box): previous and next
+   * page, a page field ("3 of 12", a number typed and Enter opens it), zoom out and in, the Thumbnails,
+   * Contents and Search panels, Download (a PDF, or the `download` URL), Print (a PDF) and Fullscreen.
+   * true shows them all; an object hides those set false (`{ search: false }`). Its module is loaded
+   * only when this is set (conecurl/viewer's attachControls). Default false.
+   */
+  controls?: boolean | ControlParts;
+  /** The toolbar's and panels' texts by key, for translation (docs/api.md lists the keys and defaults). */
+  labels?: ViewerLabels;
 }
 
 /** An entry of a book's table of contents: outline() and the `outline` option. */
@@ -181,6 +201,59 @@ export interface SearchChangeDetail {
   query: string;
   hits: SearchHit[];
   current: SearchHit | null;
+}
+
+/** The toolbar's parts (the `controls` option): each shown unless false. */
+export interface ControlParts {
+  previous?: boolean;
+  next?: boolean;
+  /** The page field. */
+  page?: boolean;
+  /** Zoom out and zoom in. */
+  zoom?: boolean;
+  fullscreen?: boolean;
+  thumbnails?: boolean;
+  contents?: boolean;
+  search?: boolean;
+  /** Default: shown for a PDF book or a `download` URL. */
+  download?: boolean;
+  /** Default: shown for a PDF book. */
+  print?: boolean;
+}
+
+/** The viewer's texts (the `labels` option); `{n}` and `{total}` are filled in with numbers. */
+export interface ViewerLabels {
+  /** The toolbar's name: 'Book controls'. */
+  toolbar?: string;
+  previous?: string;
+  next?: string;
+  /** The page field's name: 'Page'. */
+  page?: string;
+  /** The page field's text: '{n} of {total}'. */
+  pageOf?: string;
+  zoomIn?: string;
+  zoomOut?: string;
+  fullscreen?: string;
+  thumbnails?: string;
+  contents?: string;
+  search?: string;
+  download?: string;
+  print?: string;
+  /** A panel's close button: 'Close'. */
+  close?: string;
+  /** A thumbnail's name: 'Page {n}'. */
+  thumbnail?: string;
+  noContents?: string;
+  /** The search field's name: 'Search the book'. */
+  searchField?: string;
+  previousHit?: string;
+  nextHit?: string;
+  /** Said by the live region as a hit is shown: '{n} of {total}'. */
+  hitOf?: string;
+  noHits?: string;
+  searching?: string;
+  /** A result's page: 'Page {n}'. */
+  hitPage?: string;
 }
 
 /** Where a page stands: not wanted yet ('idle'), loading, loaded, or failed (with why, as `pageerror` said). */
@@ -320,7 +393,7 @@ export class BookController extends EventTarget {
   /** Pages loaded or failed so far, the page count, and loads running now (what `progress` said last). */
   readonly progress: { loaded: number; total: number; pending: number };
   /** The options in effect, defaults filled in (a frozen copy). */
-  readonly options: Readonly<Required<Omit<FlipbookOptions, 'pdf' | 'pdfWorkerSrc' | 'wasmUrl' | 'rememberPage' | 'on' | 'outline' | 'download'>>> & FlipbookOptions;
+  readonly options: Readonly<Required<Omit<FlipbookOptions, 'pdf' | 'pdfWorkerSrc' | 'wasmUrl' | 'rememberPage' | 'on' | 'outline' | 'download' | 'labels'>>> & FlipbookOptions;
   /**
    * What draws the book, for tools and tests (reading pixels, counting frames): a BookView (WebGL2) or
    * a CanvasSurface (still pages); null after destroy(). Drive the book through its own members.

@@ -4,6 +4,7 @@ import { BOOK_EVENTS } from './book-events.js';
 import { DIRECTIONS } from '../engine/direction.js';
 import { MAX_LEAF_THICKNESS, MAX_PAGES } from '../engine/layout.js';
 import { TURN_AREAS } from '../input/turn-area.js';
+import { checkControls, checkLabels } from '../viewer/viewer-options.js';
 
 const BOOLEAN = (v) => typeof v === 'boolean' || 'true or false';
 export { MAX_PAGES };  // the engine's Book refuses more (cpp/core/book_constants.hpp)
@@ -42,6 +43,11 @@ const OPTION_CHECKS = {
   // docapi (issue 23): the document API's options; each outline entry is checked by checkOutline().
   outline: (v) => Array.isArray(v) || 'an array of { title, page, children? }',
   download: (v) => (typeof v === 'string' && v.trim() !== '') || 'a URL string',
+  // edgemarks (issue 23)
+  edgeMarks: BOOLEAN,
+  // viewer (issue 23): the toolbar and its panels (web/src/viewer/)
+  controls: checkControls,
+  labels: checkLabels,
   // textlayer (issue 23): a PDF book's selectable text over its flat pages.
   textLayer: BOOLEAN,
 };
@@ -55,6 +61,7 @@ export const DEFAULTS = {
   display: 'auto', direction: 'ltr', startPage: 0, duration: 1000, schedule: 'paper', center: true, hardCovers: false,
   lighting: true, shadows: true, gutter: true, thickness: true, loadWindow: 4, label: 'Book', fallback: true, hash: false,
   autoplay: false, sound: false, muted: false, antialias: 'auto',
+  controls: false,
   textLayer: true,
 };
 /** Options a live book takes through setOptions(); the others need a new book. */
@@ -178,7 +185,8 @@ export function validateOptions(options, { pdf = false } = {}) {
   // on their content is theirs.
   const hasHtml = Array.from(options.pages, (page) => isHtmlPage(page) || (isPlainEntry(page) && page.html !== undefined)).some(Boolean);
   const hasText = pdf && (options.textLayer ?? DEFAULTS.textLayer);
-  const settings = { ...DEFAULTS, turnArea: hasHtml || hasText ? 'edges' : 'page', ...options };
+  // edgeMarks: on with the controls unless given.
+  const settings = { ...DEFAULTS, turnArea: hasHtml || hasText ? 'edges' : 'page', edgeMarks: Boolean(options.controls), ...options };
   if (settings.outline) settings.outline = copyOutline(settings.outline);  // the book's own: later changes to the caller's do not reach it
   return settings;
 }

@@ -36,6 +36,14 @@ function parseAutoplay(raw, attribute) {
   if (raw.trim() !== '' && Number.isFinite(interval) && interval > 0) return { interval };
   throw attributeError(attribute, '"true", "false" or the milliseconds between turns', raw);
 }
+// labels='{"next": "Suivant"}': a JSON object (checked as the option is).
+function parseJsonObject(raw, attribute) {
+  try {
+    const value = JSON.parse(raw);
+    if (value !== null && typeof value === 'object' && !Array.isArray(value)) return value;
+  } catch { /* reported below */ }
+  throw attributeError(attribute, 'a JSON object of texts by key', raw);
+}
 function parseList(raw, attribute) {
   const urls = raw.split(/\s+/).filter(Boolean);
   if (urls.length === 0) throw attributeError(attribute, 'image URLs separated by spaces', raw);
@@ -81,6 +89,11 @@ export const ATTRIBUTES = {
   // docapi (issue 23)
   outline: ['outline', parseOutline],
   download: ['download', parseText],
+  // edgemarks (issue 23)
+  'edge-marks': ['edgeMarks', parseBoolean],
+  // viewer (issue 23): a bare `controls` shows the whole toolbar; the parts as an object go through the property.
+  controls: ['controls', parseBoolean],
+  labels: ['labels', parseJsonObject],
   // textlayer (issue 23)
   'text-layer': ['textLayer', parseBoolean],
 };
@@ -117,6 +130,8 @@ export const KEPT_VALUES = {
     allowed: 'a URL string, an ArrayBuffer or a Uint8Array' },
   autoplay: { keeps: plainObject, allowed: 'true, false, { interval, loop } or the milliseconds between turns' },
   outline: { keeps: Array.isArray, strings: true, allowed: 'an array of { title, page, children? } or its JSON text' },
+  controls: { keeps: plainObject, allowed: 'true, false or an object of parts ({ search: false })' },
+  labels: { keeps: plainObject, strings: true, allowed: 'an object of texts by key, or its JSON' },
 };
 
 /** Whether a property value for `option` is kept as given rather than written to the attribute. */

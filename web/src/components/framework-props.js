@@ -42,9 +42,18 @@ export function samePages(a, b) {
   return a.every((page, i) => samePage(page, b[i]));
 }
 
+// Two option values are the same when they are the same value, or plain objects of the same values
+// (`controls={{ search: false }}`, `labels`, an autoplay object written inline are not a new book).
+function sameOption(a, b) {
+  if (Object.is(a, b)) return true;
+  if (!plainObject(a) || !plainObject(b)) return false;
+  const keys = Object.keys(a);
+  return keys.length === Object.keys(b).length && keys.every((key) => Object.is(a[key], b[key]));
+}
+
 /** Whether the options that need a new book differ between two sets of props (`pages` changes live). */
 export function fixedOptionsDiffer(a, b) {
-  return FIXED_PROPS.some((name) => !Object.is(a[name], b[name]));
+  return FIXED_PROPS.some((name) => !sameOption(a[name], b[name]));
 }
 
 /**

@@ -111,6 +111,12 @@ export interface Book {
    * blank back) and its rectangle in drawing-buffer pixels, zoom included.
    */
   openPagePlaces(width: number, height: number): Array<{ page: number; turned: boolean; x: number; y: number; width: number; height: number }>;
+  /**
+   * Where the marks on the page blocks' fore-edge that show lie (marks on leaves at rest in a drawn
+   * block), ticks first, in drawing-buffer pixels: `mark` is the index into `marks`.
+   */
+  edgeMarkPlaces(marks: ReadonlyArray<{ page: number; kind: 'tab' | 'tick' }>, width: number, height: number):
+    Array<{ mark: number; page: number; kind: 'tab' | 'tick'; turned: boolean; x: number; y: number; width: number; height: number }>;
   delete(): void;
 }
 
@@ -194,6 +200,8 @@ export interface BookRenderer {
   maxTextureSize(): number;
   /** After a context restore: rebuild every GL object (page images must be set again). */
   recreateGpuObjects(): void;
+  /** Marks drawn on the page blocks' fore-edge from the next frame on: index tabs and search ticks at their pages' leaves; [] none. */
+  setEdgeMarks(marks: ReadonlyArray<{ page: number; kind: 'tab' | 'tick' }>): void;
   delete(): void;
 }
 

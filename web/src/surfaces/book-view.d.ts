@@ -45,6 +45,17 @@ export class BookView {
   contextLease: object | null;
   /** The leaves lying open at the settled position, as the engine's camera places them (CSS px, zoom included). */
   openPagePlaces(): Array<{ page: number; turned: boolean; x: number; y: number; width: number; height: number }>;
+  /**
+   * Marks on the page blocks' fore-edge, drawn by the engine at the leaves of their pages (with
+   * `thickness` on): index tabs in slots down the edge, in page order, and ticks (thin lines across
+   * the block). Replaces the marks before; [] removes them.
+   */
+  setEdgeMarks(marks: ReadonlyArray<{ page: number; kind: 'tab' | 'tick' }>): void;
+  /**
+   * Where the marks that show lie, in CSS pixels from the canvas's top-left, ticks first (marks on
+   * leaves in flight, or on the turned side in single display, are left out).
+   */
+  edgeMarkPlaces(): Array<{ mark: number; page: number; kind: 'tab' | 'tick'; turned: boolean; x: number; y: number; width: number; height: number }>;
   readonly animating: boolean;
   /** Frames drawn so far: the book draws only while something moves or changes. */
   readonly framesDrawn: number;

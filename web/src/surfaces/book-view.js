@@ -142,6 +142,32 @@ export class BookView {
   }
 
   /**
+   * Marks on the page blocks' fore-edge, drawn by the engine at the leaves of their pages: `tab`s (index
+   * tabs in slots down the edge, in page order) and `tick`s (a thin line on the block). Replaces the
+   * marks before; [] removes them. A TypeError names a bad mark.
+   * @param {Array<{ page: number, kind: 'tab' | 'tick' }>} marks
+   */
+  setEdgeMarks(marks) {
+    const list = Array.isArray(marks) ? marks.map((mark) => ({ page: mark?.page, kind: mark?.kind })) : marks;
+    this.renderer.setEdgeMarks(list);  // checks each mark
+    this._edgeMarks = list;
+    this.requestRender();
+  }
+
+  /**
+   * Where the marks given to setEdgeMarks() lie now that show (on leaves at rest in a drawn block), in
+   * CSS pixels from the canvas's top-left, ticks first: { mark (its index), page, kind, turned, x, y,
+   * width, height }, the engine's camera as openPagePlaces() uses it.
+   */
+  edgeMarkPlaces() {
+    if (!this._edgeMarks?.length) return [];
+    const { width, height } = this.fitCanvas();
+    const toCss = this._size.cssPerPixel(width);
+    return this.book.edgeMarkPlaces(this._edgeMarks, width, height).map(({ x, y, width: w, height: h, ...mark }) => (
+      { ...mark, x: x * toCss, y: y * toCss, width: w * toCss, height: h * toCss }));
+  }
+
+  /**
    * The drawing-buffer pixel under a viewport point, and the buffer's size: the engine's camera (drag
    * solve, zoom) works in these, the DOM in CSS pixels.
    */

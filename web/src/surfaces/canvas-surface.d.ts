@@ -14,4 +14,8 @@ export class CanvasSurface {
   /** The size a page image is kept at for drawing, as a texture's would be; null without one. */
   pageImageSize(page: number): { width: number; height: number } | null;
   restingRect(): { x: number; y: number; width: number; height: number };
+  /** Ignored: still pages draw no page blocks, so no marks on their edge (the `edgeMarks` option is the WebGL book's). */
+  setEdgeMarks(marks: ReadonlyArray<{ page: number; kind: 'tab' | 'tick' }>): void;
+  /** Always []. */
+  edgeMarkPlaces(): never[];
 }

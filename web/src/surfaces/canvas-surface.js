@@ -75,6 +75,10 @@ export class CanvasSurface {
     return layout.zoomRect(layout.restingRect(size, this._book, this._position), this._zoom, size.width, size.height);
   }
 
+  /** Still pages draw no page blocks, so no marks on their edge: edge marks are a WebGL surface's (book-view.js). */
+  setEdgeMarks() {}
+  edgeMarkPlaces() { return []; }
+
   openPagePlaces() {
     const size = this._cssSize();
     return layout.openPagePlaces(this._position, this._book, size, this._zoom);

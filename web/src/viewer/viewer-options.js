@@ -1,0 +1,32 @@
+// The viewer's two options, `controls` and `labels`, checked as options.js checks the others (a
+// message saying what is allowed), and the parts of the toolbar a `controls` value shows.
+import { LABEL_KEYS } from './viewer-labels.js';
+
+/** The toolbar's parts, in their order on it; `controls: { thumbnails: false }` hides one. */
+export const CONTROL_PARTS = ['previous', 'next', 'page', 'zoom', 'fullscreen', 'thumbnails', 'contents', 'search', 'download', 'print'];
+
+const plain = (value) => value !== null && typeof value === 'object' && Object.getPrototypeOf(value) === Object.prototype;
+
+/** true, or what the `controls` option allows. */
+export function checkControls(value) {
+  return typeof value === 'boolean'
+    || (plain(value) && Object.entries(value).every(([key, on]) => CONTROL_PARTS.includes(key) && typeof on === 'boolean'))
+    || `true, false or an object of parts to show or hide (${CONTROL_PARTS.join(', ')}), each true or false`;
+}
+
+/** true, or what the `labels` option allows. */
+export function checkLabels(value) {
+  return (plain(value) && Object.entries(value).every(([key, text]) => LABEL_KEYS.includes(key) && typeof text === 'string' && text !== ''))
+    || `an object of texts by key (${LABEL_KEYS.join(', ')}), each a non-empty string`;
+}
+
+/**
+ * The parts shown for a `controls` value: every part is on unless set false, except Download (on
+ * for a PDF or a `download` URL) and Print (on for a PDF), which `{ download: true }` or `{ print: true }` shows anyway.
+ * @param {boolean|object} controls @param {{ pdf: boolean, downloadUrl: boolean }} book
+ */
+export function shownParts(controls, { pdf, downloadUrl }) {
+  const given = plain(controls) ? controls : {};
+  const automatic = { download: pdf || downloadUrl, print: pdf };
+  return Object.fromEntries(CONTROL_PARTS.map((part) => [part, given[part] ?? automatic[part] ?? true]));
+}
