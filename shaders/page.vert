@@ -6,7 +6,7 @@
 
 uniform vec3 uCurl;            // theta, apexY, rho (sanitized in C++)
 uniform vec4 uCurlTrig;        // sin theta, cos theta, sin rho, cos rho: the same for every vertex, so from C++
-uniform vec2 uLeaf;            // x: 1 for a resting leaf, flat (theta 90 deg): no cone to evaluate; y: page.frag's
+uniform vec2 uLeaf;            // x: 1 for a resting leaf, flat (theta 90 deg): no cone to evaluate; y: unused
 uniform float uNormalStep;     // finite-difference step, ~1e-3 of the page height
 uniform mat4 uPageToWorld;     // rigid placement of the leaf (may mirror)
 uniform mat4 uViewProjection;

@@ -42,7 +42,10 @@ std::vector<EdgeMark> marksOf(const val& marks) {
 
 }  // namespace
 
-void setEdgeMarks(BookRenderer& renderer, val marks) { renderer.edgeMarks().setMarks(marksOf(marks)); }
+void setEdgeMarks(BookRenderer& renderer, val marks) {
+    renderer.edgeMarks().setMarks(marksOf(marks));
+    renderer.invalidateRestingSpread();  // the marks rest with the page blocks, in the kept spread
+}
 
 val edgeMarkPlaces(const Book& book, val marks, double width, double height) {
     if (!(width >= 1.0 && height >= 1.0 && width < 1e5 && height < 1e5)) {

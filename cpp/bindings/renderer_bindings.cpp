@@ -109,6 +109,7 @@ EMSCRIPTEN_BINDINGS(conecurl_renderer) {
         .function("residentPageImages", &BookRenderer::residentPageImages)
         .function("draw", select_overload<void(const Book&)>(&BookRenderer::draw))
         .function("framesDrawn", &BookRenderer::framesDrawn)
+        .function("restingSpreadDraws", &BookRenderer::restingSpreadDraws)
         .function("readPixels", &readPixels)
         .function("gridColumns", optional_override([](BookRenderer& r) { return r.grid().columns; }))
         .function("gridRows", optional_override([](BookRenderer& r) { return r.grid().rows; }))

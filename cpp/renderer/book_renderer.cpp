@@ -1,6 +1,8 @@
 // WebGL2 drawing of a book frame. Per frame only uniforms change, and only those whose value did;
 // constant uniforms and samplers are set once after linking. The page grid is a static buffer
-// rebuilt only when the canvas size calls for a different resolution.
+// rebuilt only when the canvas size calls for a different resolution. What rests while leaves move
+// is drawn once into a cached texture (draw(): the resting spread), so a turning frame shades only
+// the moving leaves and the shadow they cast.
 #include "book_renderer.hpp"
 
 #include <emscripten/em_js.h>
@@ -90,7 +92,8 @@ void BookRenderer::locate(Program& program) {
     static constexpr const char* kNames[kUniformCount] = {
         "uCurl", "uCurlTrig", "uNormalStep", "uPageToWorld", "uViewProjection", "uLightDirection",
         "uFacingTexture", "uAwayTexture", "uFacingUv", "uAwayUv", "uPageSize", "uEye", "uLighting", "uGutter",
-        "uLeaf", "uShadowMask", "uShadowTexel", "uViewportInverse", "uPaper", "uShadowStrength", "uPageWidth"};
+        "uLeaf", "uShadowMask", "uShadowTexel", "uViewportInverse", "uPaper", "uShadowStrength", "uPageWidth",
+        "uFlatLight", "uCache"};
     for (int u = 0; u < kUniformCount; ++u) program.location[u] = glGetUniformLocation(program.id, kNames[u]);
     program.known.fill(false);
 }
@@ -119,8 +122,16 @@ void BookRenderer::setUniform(Program& program, Uniform u, const float* values, 
     }
 }
 
-void BookRenderer::bindTexture(int unit, GLuint texture) {
-    // Leaves `unit` active, so texture calls that follow (uploads, parameters) act on `texture`.
+void BookRenderer::setBlendEquation(GLenum equation) {
+    if (blendEquation_ == equation) return;
+    glBlendEquation(equation);
+    blendEquation_ = equation;
+}
+
+void BookRenderer::bindTexture(int unit, GLuint texture, bool toEdit) {
+    // For drawing, a texture already bound to its unit costs no call. To edit (`toEdit`), `unit` is
+    // left active, so texture calls that follow (uploads, parameters) act on `texture`.
+    if (!toEdit && boundTextures_[unit] == texture) return;
     if (activeUnit_ != unit) {
         glActiveTexture(GL_TEXTURE0 + unit);
         activeUnit_ = unit;
@@ -143,7 +154,7 @@ void BookRenderer::createGpuObjects() {
     const std::string vertex = std::string(shaders::cone_curl_glsl) + shaders::page_vert;
     ProgramSource leaf;
     leaf.vertex = kShaderPrelude + vertex;
-    leaf.fragment = std::string(kShaderPrelude) + shaders::page_frag;
+    leaf.fragment = std::string(kShaderPrelude) + shaders::paper_light_glsl + shaders::page_frag;
     // The drawing program itself is captured, so the readback test checks the very shader that draws.
     leaf.transformFeedbackVaryings = {"vWorldPosition", "vNormal"};
     leafProgram_.id = buildProgram(leaf, error_);
@@ -158,18 +169,40 @@ void BookRenderer::createGpuObjects() {
     stack.fragment = std::string(kShaderPrelude) + shaders::stack_frag;
     stackProgram_.id = buildProgram(stack, error_);
     if (!stackProgram_.id) return;
-    locate(leafProgram_);
-    locate(shadowProgram_);
-    locate(stackProgram_);
+    const std::string flatVertex = std::string(kShaderPrelude) + shaders::cone_curl_glsl + shaders::flat_page_vert;
+    ProgramSource flat;
+    flat.vertex = flatVertex;
+    flat.fragment = std::string(kShaderPrelude) + shaders::paper_light_glsl + shaders::flat_page_frag;
+    flatProgram_.id = buildProgram(flat, error_);
+    if (!flatProgram_.id) return;
+    ProgramSource receive;
+    receive.vertex = flatVertex;
+    receive.fragment = std::string(kShaderPrelude) + shaders::shadow_receive_frag;
+    receiveProgram_.id = buildProgram(receive, error_);
+    if (!receiveProgram_.id) return;
+    ProgramSource composite;
+    composite.vertex = std::string(kShaderPrelude) + shaders::composite_vert;
+    composite.fragment = std::string(kShaderPrelude) + shaders::composite_frag;
+    compositeProgram_.id = buildProgram(composite, error_);
+    if (!compositeProgram_.id) return;
+    for (Program* program : {&leafProgram_, &shadowProgram_, &stackProgram_, &flatProgram_, &receiveProgram_, &compositeProgram_}) {
+        locate(*program);
+    }
     // What never changes is set once, here: samplers, the light, the paper colour, the shadow's strength.
     const float light[3] = {kLightDirection.x, kLightDirection.y, kLightDirection.z};
     const float paper[3] = {kPaper[0] / 255.0f, kPaper[1] / 255.0f, kPaper[2] / 255.0f};
     glUseProgram(leafProgram_.id);
     glUniform1i(leafProgram_.location[uFacingTexture], 0);
     glUniform1i(leafProgram_.location[uAwayTexture], 1);
-    glUniform1i(leafProgram_.location[uShadowMask], 2);
     setUniform(leafProgram_, uLightDirection, light, 3);
     setUniform(leafProgram_, uPaper, paper, 3);
+    glUseProgram(flatProgram_.id);
+    glUniform1i(flatProgram_.location[uFacingTexture], 0);
+    setUniform(flatProgram_, uPaper, paper, 3);
+    glUseProgram(receiveProgram_.id);
+    glUniform1i(receiveProgram_.location[uShadowMask], 2);
+    glUseProgram(compositeProgram_.id);
+    glUniform1i(compositeProgram_.location[uCache], 3);
     glUseProgram(stackProgram_.id);
     setUniform(stackProgram_, uLightDirection, light, 3);
     setUniform(stackProgram_, uPaper, paper, 3);
@@ -177,11 +210,17 @@ void BookRenderer::createGpuObjects() {
     setUniform(shadowProgram_, uLightDirection, light, 3);
     setUniform(shadowProgram_, uShadowStrength, kShadowStrength);
     programInUse_ = shadowProgram_.id;
-    // Both passes clear to transparent, and the only blending is the shadow mask's darkest-wins.
+    // Every pass clears to transparent. Blending: the shadow mask's darkest-wins (GL_MAX, which ignores
+    // the factors) and the shadow received on the resting pages, which multiplies their colour by the
+    // output and keeps their alpha (GL_FUNC_ADD with these factors).
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glBlendEquation(GL_MAX);
-    glPolygonOffset(1.0f, 4.0f);  // resting pages drawn after the leaves in flight lose depth ties to them
+    glBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ZERO, GL_ONE);
+    blendEquation_ = 0;
+    setBlendEquation(GL_MAX);
     glDisable(GL_CULL_FACE);  // one mesh, two sides
+    // The canvas's samples: a multisampled drawing buffer cannot be blitted into, so the cache is drawn.
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glGetIntegerv(GL_SAMPLES, &canvasSamples_);
 
     glGenVertexArrays(1, &vertexArray_);
     glGenBuffers(1, &vertexBuffer_);
@@ -204,19 +243,28 @@ void BookRenderer::createGpuObjects() {
     glGenTextures(1, &paperTexture_);
     boundTextures_.fill(0);
     activeUnit_ = -1;
-    bindTexture(0, paperTexture_);
+    bindTexture(0, paperTexture_, true);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, kPaper);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
 
     glGenFramebuffers(1, &shadowFramebuffer_);
     glGenTextures(1, &shadowTexture_);
     shadowWidth_ = shadowHeight_ = 0;
+    glGenFramebuffers(1, &cacheFramebuffer_);
+    glGenTextures(1, &cacheTexture_);
+    cacheWidth_ = cacheHeight_ = 0;
+    invalidateRestingSpread();
 }
 
 void BookRenderer::destroyGpuObjects() {
     glDeleteProgram(leafProgram_.id);
     glDeleteProgram(shadowProgram_.id);
     glDeleteProgram(stackProgram_.id);
+    glDeleteProgram(flatProgram_.id);
+    glDeleteProgram(receiveProgram_.id);
+    glDeleteProgram(compositeProgram_.id);
+    glDeleteFramebuffers(1, &cacheFramebuffer_);
+    glDeleteTextures(1, &cacheTexture_);
     glDeleteBuffers(1, &stackBuffer_);
     glDeleteVertexArrays(1, &vertexArray_);
     glDeleteBuffers(1, &vertexBuffer_);
@@ -237,6 +285,14 @@ void BookRenderer::forgetGpuObjects() {
     leafProgram_ = Program{};
     shadowProgram_ = Program{};
     stackProgram_ = Program{};
+    flatProgram_ = Program{};
+    receiveProgram_ = Program{};
+    compositeProgram_ = Program{};
+    cacheFramebuffer_ = cacheTexture_ = 0;
+    cacheWidth_ = cacheHeight_ = 0;
+    invalidateRestingSpread();
+    cachedTextures_.fill(0);
+    blendEquation_ = 0;
     stackBuffer_ = 0;
     stackVertexCount_ = 0;
     stackKey_ = StackKey{};
@@ -304,7 +360,7 @@ std::string BookRenderer::setPageImage(int page, int width, int height, JsHandle
     auto found = findTexture(page);
     GLuint texture = found == pageTextures_.end() ? 0 : found->second;
     if (!texture) glGenTextures(1, &texture);
-    bindTexture(0, texture);
+    bindTexture(0, texture, true);
     const int uploaded = conecurl_tex_image_from_source(static_cast<void*>(source));
     if (uploaded != 0) {
         if (found == pageTextures_.end()) {
@@ -314,6 +370,8 @@ std::string BookRenderer::setPageImage(int page, int width, int height, JsHandle
         return uploaded == 1 ? kTaintedSource : "the browser refused to upload the page image";
     }
     if (found == pageTextures_.end()) pageTextures_.emplace_back(page, texture);
+    // New pixels in a texture the cached resting spread shows: draw the spread again.
+    if (std::find(cachedTextures_.begin(), cachedTextures_.end(), texture) != cachedTextures_.end()) invalidateRestingSpread();
     glGenerateMipmap(GL_TEXTURE_2D);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -369,7 +427,7 @@ void BookRenderer::ensureShadowTarget(int width, int height) {
     if (w == shadowWidth_ && h == shadowHeight_) return;
     shadowWidth_ = w;
     shadowHeight_ = h;
-    bindTexture(2, shadowTexture_);
+    bindTexture(2, shadowTexture_, true);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -381,7 +439,7 @@ void BookRenderer::ensureShadowTarget(int width, int height) {
 }
 
 LeafPlacement BookRenderer::setPlacementUniforms(Program& program, const Book& book, const LeafDraw& leaf,
-                                                 const Camera& camera, bool receiveShadow) {
+                                                 const Camera& camera) {
     const BookConfig& c = book.config();
     const LeafPlacement placement = placeLeaf(c.binding, leaf.mirrored, c.pageHeight, leaf.flippedY);
     const glm::mat4 pageToWorld(placement.pageToWorld);
@@ -391,7 +449,7 @@ LeafPlacement BookRenderer::setPlacementUniforms(Program& program, const Book& b
     const float trig[4] = {static_cast<float>(std::sin(curl.theta)), static_cast<float>(std::cos(curl.theta)),
                            static_cast<float>(std::sin(curl.rho)), static_cast<float>(std::cos(curl.rho))};
     // A resting leaf lies flat: the shader skips the cone (the same points: theta is 90 degrees there).
-    const float flags[2] = {leaf.resting ? 1.0f : 0.0f, receiveShadow ? 1.0f : 0.0f};
+    const float flags[2] = {leaf.resting ? 1.0f : 0.0f, 0.0f};
     setUniform(program, uLeaf, flags, 2);
     setUniform(program, uCurl, curlValues, 3);
     setUniform(program, uCurlTrig, trig, 4);
@@ -421,9 +479,34 @@ void BookRenderer::setSurfaceUniforms(const Book& book, const LeafDraw& leaf, co
     bindTexture(1, textureFor(awayPage));
 }
 
-void BookRenderer::drawLeaf(const Book& book, const LeafDraw& leaf, const Camera& camera, bool receiveShadow) {
-    setSurfaceUniforms(book, leaf, setPlacementUniforms(leafProgram_, book, leaf, camera, receiveShadow), camera);
+void BookRenderer::drawLeaf(const Book& book, const LeafDraw& leaf, const Camera& camera) {
+    setSurfaceUniforms(book, leaf, setPlacementUniforms(leafProgram_, book, leaf, camera), camera);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(grid_.indices.size()), GL_UNSIGNED_INT, nullptr);
+}
 
+void BookRenderer::drawFlatPage(const Book& book, const LeafDraw& leaf, const Camera& camera) {
+    Program& p = flatProgram_;
+    const BookConfig& c = book.config();
+    const LeafPlacement placement = setPlacementUniforms(p, book, leaf, camera);
+    // page.frag's choice of side and its light, made once: a flat leaf's normal is the same at every
+    // point, and the eye is above the page plane, so one point (the page's middle) decides.
+    const glm::mat4 pageToWorld(placement.pageToWorld);
+    const float sinRho = static_cast<float>(std::sin(leaf.curl.rho));
+    const float cosRho = static_cast<float>(std::cos(leaf.curl.rho));
+    const glm::vec3 normal = glm::normalize(glm::mat3(pageToWorld) * glm::vec3(-sinRho, 0.0f, cosRho));
+    const float midX = static_cast<float>(c.pageWidth / 2.0);
+    const glm::vec4 middle = pageToWorld * glm::vec4(midX * cosRho, static_cast<float>(c.pageHeight / 2.0), midX * sinRho, 1.0f);
+    const bool facing = glm::dot(normal, camera.eye - glm::vec3(middle)) >= 0.0f;
+    auto diffuse = [](const glm::vec3& n) { return 0.35f + 0.65f * std::max(glm::dot(n, kLightDirection), 0.0f); };
+    const float light = options_.lighting ? diffuse(facing ? normal : -normal) / diffuse(glm::vec3(0.0f, 0.0f, 1.0f)) : 1.0f;
+    const glm::mat3 uv(facing ? placement.facingUv : placement.awayUv);
+    const bool backSeen = facing == placement.facingIsBackPage;
+    const float pageSize[2] = {static_cast<float>(c.pageWidth), static_cast<float>(c.pageHeight)};
+    setUniform(p, uFlatLight, light);
+    setUniform(p, uFacingUv, glm::value_ptr(uv), 9);
+    setUniform(p, uPageSize, pageSize, 2);
+    setUniform(p, uGutter, options_.gutter ? (leaf.hard ? 2.0f : 1.0f) : 0.0f);
+    bindTexture(0, textureFor(backSeen ? leaf.backPage : leaf.frontPage));
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(grid_.indices.size()), GL_UNSIGNED_INT, nullptr);
 }
 
@@ -432,6 +515,7 @@ void BookRenderer::updateStacks(const Book& book) {
     const StackKey key{stackLeaves(book), c.leafThickness, c.pageWidth, c.pageHeight, c.display, c.binding};
     if (key == stackKey_) return;  // a turn changes the leaves on a side twice: as it lifts and as it lands
     stackKey_ = key;
+    ++stackGeneration_;
     const std::vector<float> mesh = stackMesh(c, bookStacks(c, key.leaves, key.thickness));
     stackVertexCount_ = static_cast<int>(mesh.size()) / kStackVertexFloats;
     if (stackVertexCount_ == 0) return;
@@ -441,13 +525,79 @@ void BookRenderer::updateStacks(const Book& book) {
 
 void BookRenderer::drawStacks(const Camera& camera) {
     if (stackVertexCount_ == 0) return;
-    // Below the table plane and outside the pages: drawn first, everything else lies over them. In a
-    // frame with leaves in flight the depth test may be on: the stacks pass it (the depth was just
-    // cleared), and every leaf lies above them, nearer the eye.
+    // Below the table plane and outside the pages: drawn first, everything else lies over them.
     useProgram(stackProgram_);
     setUniform(stackProgram_, uViewProjection, glm::value_ptr(camera.viewProjection), 16);
     setUniform(stackProgram_, uLighting, options_.lighting ? 1.0f : 0.0f);
     glDrawArrays(GL_TRIANGLES, 0, stackVertexCount_);
+}
+
+void BookRenderer::drawRestingSpread(const Book& book, const BookFrame& frame, const Camera& camera) {
+    drawStacks(camera);
+    // Marks on the page block (tabs, ticks) are drawn here, with the stacks: they rest with them.
+    edgeMarks_.draw(book, camera.viewProjection, programInUse_);
+    useProgram(flatProgram_);
+    for (int i = 0; i < frame.count; ++i) {
+        if (frame.leaves[i].resting) drawFlatPage(book, frame.leaves[i], camera);
+    }
+}
+
+BookRenderer::RestingKey BookRenderer::restingKey(const Book& book, const BookFrame& frame, const Camera& camera,
+                                                  int width, int height) const {
+    RestingKey key{};
+    size_t at = 0;
+    auto put = [&key, &at](double value) { key[at++] = value; };
+    const float* viewProjection = glm::value_ptr(camera.viewProjection);
+    for (int i = 0; i < 16; ++i) put(viewProjection[i]);  // zoom, pan, layout, size: all move the camera
+    put(width);
+    put(height);
+    put(options_.lighting);
+    put(options_.gutter);
+    put(stackGeneration_);
+    put(grid_.rows * 4096.0 + grid_.columns);
+    put(book.config().pageWidth);
+    put(book.config().pageHeight);
+    for (int i = 0; i < frame.count; ++i) {
+        const LeafDraw& leaf = frame.leaves[i];
+        if (!leaf.resting) continue;
+        put(leaf.leaf);
+        put(leaf.frontPage);
+        put(leaf.backPage);
+        put(textureFor(leaf.frontPage));  // a page that arrives or goes changes the texture drawn
+        put(textureFor(leaf.backPage));
+        put(leaf.curl.rho);
+        put(leaf.mirrored);
+        put(leaf.flippedY);
+        put(leaf.hard);
+        put(1.0);  // this slot is a leaf
+    }
+    return key;
+}
+
+void BookRenderer::ensureCacheTarget(int width, int height) {
+    if (width == cacheWidth_ && height == cacheHeight_) return;
+    cacheWidth_ = width;
+    cacheHeight_ = height;
+    bindTexture(3, cacheTexture_, true);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, cacheFramebuffer_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, cacheTexture_, 0);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void BookRenderer::composeRestingSpread() {
+    if (canvasSamples_ == 0) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, cacheFramebuffer_);
+        glBlitFramebuffer(0, 0, cacheWidth_, cacheHeight_, 0, 0, cacheWidth_, cacheHeight_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);  // readPixels reads the canvas
+        return;
+    }
+    // A multisampled drawing buffer takes no blit: one triangle over it copies each pixel's texel.
+    useProgram(compositeProgram_);
+    bindTexture(3, cacheTexture_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
 void BookRenderer::draw(const Book& book, const BookFrame& frame) {
@@ -463,66 +613,105 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
     updateStacks(book);
     ++framesDrawn_;
 
-    bool anyLifted = false;
-    for (int i = 0; i < frame.count; ++i) anyLifted |= !frame.leaves[i].resting;
-    const bool shadows = options_.shadows && anyLifted;
+    int moving = 0;
+    bool curled = false;  // a curled leaf may hide part of itself; a hard leaf turns flat
+    for (int i = 0; i < frame.count; ++i) {
+        if (frame.leaves[i].resting) continue;
+        ++moving;
+        curled |= !frame.leaves[i].hard;
+    }
+    glDisable(GL_DEPTH_TEST);
+    if (moving == 0) {
+        // A resting book: the stacks, the flat pages over them. Nothing is depth-tested.
+        glViewport(0, 0, width, height);
+        glClear(GL_COLOR_BUFFER_BIT);
+        drawRestingSpread(book, frame, camera);
+        lastViewProjection_ = camera.viewProjection;
+        return;
+    }
+    const bool shadows = options_.shadows;
     const GLsizei indexCount = static_cast<GLsizei>(grid_.indices.size());
-
     if (shadows) {
         // Shadow mask: every lifted leaf flattened along the light, the darkest wins where they overlap.
         ensureShadowTarget(width, height);
         glBindFramebuffer(GL_FRAMEBUFFER, shadowFramebuffer_);
         glViewport(0, 0, shadowWidth_, shadowHeight_);
         glClear(GL_COLOR_BUFFER_BIT);
-        glDisable(GL_DEPTH_TEST);
         glEnable(GL_BLEND);
+        setBlendEquation(GL_MAX);
         useProgram(shadowProgram_);
         setUniform(shadowProgram_, uPageWidth, static_cast<float>(book.config().pageWidth));
         for (int i = 0; i < frame.count; ++i) {
             if (frame.leaves[i].resting) continue;
-            setPlacementUniforms(shadowProgram_, book, frame.leaves[i], camera, false);
+            setPlacementUniforms(shadowProgram_, book, frame.leaves[i], camera);
             glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
         }
         glDisable(GL_BLEND);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
-
     glViewport(0, 0, width, height);
-    if (anyLifted) {
-        glDepthMask(GL_TRUE);  // a depth clear obeys the mask, which the resting pages leave off
+
+    // What rests: drawn into the canvas once, as a resting book draws it, and kept in the cache; the
+    // frames after lay the cache down, until what rests changes (restingKey).
+    const RestingKey key = restingKey(book, frame, camera, width, height);
+    ensureCacheTarget(width, height);
+    // The depth, for the moving leaves below. Cleared first: a browser clears a composited canvas
+    // lazily at the frame's first clear or draw, which would wipe a blit made before it.
+    glDepthMask(GL_TRUE);
+    if (key != restingKey_) {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        drawRestingSpread(book, frame, camera);
+        ++restingSpreadDraws_;
+        // While the camera moves (a closed book centring as it opens) every frame draws the spread
+        // anew: it is kept only once the camera holds still for a frame.
+        const bool cameraMoving = camera.viewProjection != lastViewProjection_;
+        lastViewProjection_ = camera.viewProjection;
+        if (cameraMoving) {
+            invalidateRestingSpread();
+        } else {
+            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, cacheFramebuffer_);
+            glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+            restingKey_ = key;
+        }
+        cachedTextures_.fill(0);
+        for (int i = 0, n = 0; i < frame.count; ++i) {
+            if (!frame.leaves[i].resting) continue;
+            cachedTextures_[n++] = textureFor(frame.leaves[i].frontPage);
+            cachedTextures_[n++] = textureFor(frame.leaves[i].backPage);
+        }
     } else {
-        glClear(GL_COLOR_BUFFER_BIT);  // nothing is depth-tested in a frame of resting pages
+        glClear(GL_DEPTH_BUFFER_BIT);
+        composeRestingSpread();
     }
-    drawStacks(camera);
-    edgeMarks_.draw(book, camera.viewProjection, programInUse_);
-    useProgram(leafProgram_);
+    lastViewProjection_ = camera.viewProjection;
+
     if (shadows) {
+        // The shadow on the resting pages: their colour times (1 - the blurred mask), drawn over the
+        // cache. Where a moving leaf covers them it is drawn over this.
+        useProgram(receiveProgram_);
         bindTexture(2, shadowTexture_);
         const float texel[2] = {1.0f / static_cast<float>(shadowWidth_), 1.0f / static_cast<float>(shadowHeight_)};
         const float viewportInverse[2] = {1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)};
-        setUniform(leafProgram_, uShadowTexel, texel, 2);
-        setUniform(leafProgram_, uViewportInverse, viewportInverse, 2);
+        setUniform(receiveProgram_, uShadowTexel, texel, 2);
+        setUniform(receiveProgram_, uViewportInverse, viewportInverse, 2);
+        glEnable(GL_BLEND);
+        setBlendEquation(GL_FUNC_ADD);
+        for (int i = 0; i < frame.count; ++i) {
+            if (!frame.leaves[i].resting) continue;
+            setPlacementUniforms(receiveProgram_, book, frame.leaves[i], camera);
+            glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
+        }
+        glDisable(GL_BLEND);
     }
-    if (!anyLifted) {
-        glDisable(GL_DEPTH_TEST);
-        for (int i = 0; i < frame.count; ++i) drawLeaf(book, frame.leaves[i], camera, false);
-        return;
-    }
-    // Leaves in flight first: the depth buffer sorts them against each other and against their own curl.
-    glEnable(GL_DEPTH_TEST);
+
+    // The moving leaves, over everything that rests (they lie above the page plane, nearer the eye).
+    // Depth is tested only among them: where leaves overlap each other, or a curl over its own leaf.
+    if (moving > 1 || curled) glEnable(GL_DEPTH_TEST);
+    useProgram(leafProgram_);
     for (int i = 0; i < frame.count; ++i) {
-        if (!frame.leaves[i].resting) drawLeaf(book, frame.leaves[i], camera, false);
+        if (!frame.leaves[i].resting) drawLeaf(book, frame.leaves[i], camera);
     }
-    // Then the resting pages, flat under everything that moves: depth-tested, so the pixels a leaf
-    // hides are never shaded, and pushed back by the polygon offset, so where a leaf touches them (at
-    // the spine, as it lands) the leaf wins as if it were drawn on top. They write no depth.
-    glDepthMask(GL_FALSE);
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    for (int i = 0; i < frame.count; ++i) {
-        if (frame.leaves[i].resting) drawLeaf(book, frame.leaves[i], camera, shadows);
-    }
-    glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
 RgbaImage BookRenderer::readPixels() {
@@ -558,7 +747,7 @@ std::vector<float> BookRenderer::captureLeaf(const Book& book, int drawIndex) {
 
     useProgram(leafProgram_);
     Camera camera = cameraFor(book, std::max(1, drawingWidth_), std::max(1, drawingHeight_));
-    setPlacementUniforms(leafProgram_, book, frame.leaves[drawIndex], camera, false);  // positions and normals only
+    setPlacementUniforms(leafProgram_, book, frame.leaves[drawIndex], camera);  // positions and normals only
     glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, captureBuffer_);
     glEnable(GL_RASTERIZER_DISCARD);
     glBeginTransformFeedback(GL_POINTS);

@@ -1,5 +1,7 @@
 // Draws a Book's frame with WebGL2 through Emscripten's GL layer: resting pages, leaves in flight,
-// light, gutter and shadow. It owns GL objects only; what to draw comes from Book::frame().
+// light, gutter and shadow. It owns GL objects only; what to draw comes from Book::frame(). While
+// leaves move, what rests (stacks, resting pages, their light) is drawn once into a cached texture and
+// each frame lays it down with one blit or draw; only the moving leaves and their shadow are shaded.
 #pragma once
 
 #include <GLES3/gl3.h>
@@ -77,6 +79,12 @@ public:
     // The same, with the frame the caller composed already (the frame loop composes it once).
     void draw(const Book& book, const BookFrame& frame);
     int framesDrawn() const { return framesDrawn_; }
+    // How many times the resting spread was drawn into its cache: once when a turn starts, then again
+    // only when what rests changes (a page image, a leaf that lands or lifts, size, camera, options).
+    int restingSpreadDraws() const { return restingSpreadDraws_; }
+    // Something drawn in the resting spread changed outside what the renderer tracks (e.g. marks on
+    // the page block): the next turning frame draws the spread again.
+    void invalidateRestingSpread() { restingKey_.fill(kNoKey); }
 
     // The pixels of the last drawn frame, rows top to bottom (call in the same task as draw()).
     RgbaImage readPixels();
@@ -110,7 +118,7 @@ private:
     enum Uniform : int {
         uCurl, uCurlTrig, uNormalStep, uPageToWorld, uViewProjection, uLightDirection, uFacingTexture,
         uAwayTexture, uFacingUv, uAwayUv, uPageSize, uEye, uLighting, uGutter, uLeaf, uShadowMask,
-        uShadowTexel, uViewportInverse, uPaper, uShadowStrength, uPageWidth, kUniformCount
+        uShadowTexel, uViewportInverse, uPaper, uShadowStrength, uPageWidth, uFlatLight, uCache, kUniformCount
     };
     // A linked program, its uniform locations (looked up once: the per-frame path makes no string
     // lookups) and the value each uniform was last given, so an unchanged value costs no GL call.
@@ -125,7 +133,7 @@ private:
     void setUniform(Program& program, Uniform u, const float* values, int count);
     void setUniform(Program& program, Uniform u, float x) { setUniform(program, u, &x, 1); }
     void useProgram(Program& program);
-    void bindTexture(int unit, GLuint texture);
+    void bindTexture(int unit, GLuint texture, bool toEdit = false);
 
     bool makeCurrent();
     void createGpuObjects();
@@ -134,7 +142,19 @@ private:
     void uploadGrid();
     Camera cameraFor(const Book& book, int width, int height) const;
     void ensureShadowTarget(int width, int height);
-    void drawLeaf(const Book& book, const LeafDraw& leaf, const Camera& camera, bool receiveShadow);
+    void drawLeaf(const Book& book, const LeafDraw& leaf, const Camera& camera);
+    // A resting leaf with the flat program (the side seen and its light decided here, once).
+    void drawFlatPage(const Book& book, const LeafDraw& leaf, const Camera& camera);
+    // What rests: the stacks' edges, then the resting pages over them; nothing depth-tested.
+    void drawRestingSpread(const Book& book, const BookFrame& frame, const Camera& camera);
+    void setBlendEquation(GLenum equation);
+    // The key of what the resting spread shows; equal keys draw equal pictures.
+    using RestingKey = std::array<double, 16 + 8 + 10 * kMaxLeafDraws>;
+    static constexpr double kNoKey = -1.0e300;
+    RestingKey restingKey(const Book& book, const BookFrame& frame, const Camera& camera, int width, int height) const;
+    void ensureCacheTarget(int width, int height);
+    // Lays the cached resting spread over the drawing buffer: a blit, or a draw on a multisampled canvas.
+    void composeRestingSpread();
     // The stacks' edge faces: their buffer is rebuilt only when what they depend on changes.
     void updateStacks(const Book& book);
     void drawStacks(const Camera& camera);
@@ -167,15 +187,27 @@ private:
     int drawingWidth_ = 0;
     int drawingHeight_ = 0;
 
-    // Where the leaf is and whether it lies flat (both programs), and whether it receives the shadow
-    // mask; then how its surface looks (the leaf program only).
-    LeafPlacement setPlacementUniforms(Program& program, const Book& book, const LeafDraw& leaf, const Camera& camera,
-                                       bool receiveShadow);
+    // Where the leaf is and whether it lies flat (every program that draws a leaf's grid); then how its
+    // surface looks (the leaf program only).
+    LeafPlacement setPlacementUniforms(Program& program, const Book& book, const LeafDraw& leaf, const Camera& camera);
     void setSurfaceUniforms(const Book& book, const LeafDraw& leaf, const LeafPlacement& placement, const Camera& camera);
 
     Program leafProgram_;
     Program shadowProgram_;
     Program stackProgram_;
+    Program flatProgram_;       // resting pages (flat_page.*)
+    Program receiveProgram_;    // the shadow multiplied onto the cached resting pages
+    Program compositeProgram_;  // the cache onto a multisampled canvas
+    int stackGeneration_ = 0;   // counts rebuilds of the stacks' buffer, for the resting key
+    int restingSpreadDraws_ = 0;
+    RestingKey restingKey_{};
+    glm::mat4 lastViewProjection_{0.0f};  // the last frame's camera: a moving one is not cached
+    std::array<GLuint, 2 * kMaxLeafDraws> cachedTextures_{};  // the page textures the cache shows
+    GLuint cacheFramebuffer_ = 0;
+    GLuint cacheTexture_ = 0;
+    int cacheWidth_ = 0;
+    int cacheHeight_ = 0;
+    GLint canvasSamples_ = 0;   // the drawing buffer's samples (0: not multisampled, a blit composes)
     GLuint stackBuffer_ = 0;
     int stackVertexCount_ = 0;
     struct StackKey {  // what the stacks' faces depend on
@@ -189,7 +221,8 @@ private:
         }
     } stackKey_;
     GLuint programInUse_ = 0;
-    std::array<GLuint, 3> boundTextures_{};  // per texture unit, as last bound here
+    std::array<GLuint, 4> boundTextures_{};  // per texture unit, as last bound here (3: the cache)
+    GLenum blendEquation_ = 0;
     int activeUnit_ = -1;
     GLuint vertexArray_ = 0;
     GLuint vertexBuffer_ = 0;

@@ -182,6 +182,12 @@ export interface BookRenderer {
   residentPageImages(): number;
   draw(book: Book): void;
   framesDrawn(): number;
+  /**
+   * How many times the resting spread (stacks, resting pages, their light) was drawn into its cache:
+   * once as a turn starts, then only when what rests changes (a page image, a leaf landing or lifting,
+   * size, camera, options). Frames in between lay the cache down with one blit or draw.
+   */
+  restingSpreadDraws(): number;
   /** Pixels of the frame just drawn (same task), rows top to bottom. */
   readPixels(): { width: number; height: number; data: Uint8ClampedArray };
   /**
