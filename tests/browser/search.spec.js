@@ -307,6 +307,20 @@ test('browser: showHit() turns to the hit and marks it: data-search-hit elements
   expect(await markedPixels(page)).toBe(0);
 });
 
+test('browser: showHit() called again while an earlier one still turns ends on the last hit\'s page (the latest wins)', async ({ page }) => {
+  await openPdfBook(page);
+  const ended = await page.evaluate(async () => {
+    const hits = await window.book.search('cafe');
+    const last = hits[hits.length - 1];
+    // A reader stepping through hits quickly: each call comes before the one before has landed.
+    await Promise.all([window.book.showHit(last), window.book.showHit(hits[0]), window.book.showHit(last)]);
+    await window.book.whenIdle();
+    return { openPages: window.book.openPages, last: last.page, current: [...window.book.element.querySelectorAll('[data-search-hit][data-current]')].map((m) => Number(m.dataset.page)) };
+  });
+  expect(ended.openPages).toContain(ended.last);
+  expect(ended.current).toEqual([ended.last]);
+});
+
 test('browser: a marked hit, flat and while its page curls (drawn in its texture), matches its reference images', async ({ page }) => {
   await openPdfBook(page);
   await page.evaluate(async () => {

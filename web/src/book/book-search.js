@@ -99,7 +99,9 @@ export class BookSearch {
     this._current = hit;
     this._remark();  // before the turn: the page's texture shows the marks as it comes
     this._changed();
-    if (!this._book.openPages().includes(hit.page)) await this._book.flip(hit.page);
+    // Always flip, even when the hit's page looks open: a turn still under way (an earlier showHit())
+    // would otherwise carry the book away from it; the latest flip wins, and an open page is no turn.
+    await this._book.flip(hit.page);
     this._book.layoutLayers();
   }
 
