@@ -325,6 +325,7 @@ test('browser: turn-area, label and fallback are attributes too; every option pr
       edgeMarks: true,
       // viewer (issue 23): objects kept as given
       controls: { search: false }, labels: { next: 'Suivant' },
+      textLayer: false,
     };
     const unsampled = PROPERTY_OPTIONS.filter((option) => option !== 'display' && !(option in values));
     const loose = document.createElement('cone-flipbook');  // not in the document: nothing is built

@@ -195,7 +195,22 @@ test('browser: without controls the viewer\'s module is never loaded', async ({ 
   page.on('request', (request) => { if (request.url().includes('/web/src/viewer/')) loaded.push(request.url()); });
   await openViewer(page, 12, {});
   await expect(page.getByRole('toolbar')).toHaveCount(0);
-  expect(loaded.filter((url) => !/viewer-(options|labels)\.js$/.test(url))).toEqual([]);
+  expect(loaded).toEqual([]);  // not even the option tables: options.js checks only the options' shape
+});
+
+test('browser: a controls part or label key the viewer does not know rejects create() with a TypeError naming it, and leaves no toolbar', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const errors = await page.evaluate(async () => {
+    const pages = Array.from({ length: 4 }, (_, i) => () => window.makeNumberedPage(i, 160, 200));
+    const attempt = (options) => window.Flipbook.create(document.getElementById('container'), { pages, ...options })
+      .then(() => 'built', (error) => `${error.name}: ${error.message}`);
+    return [await attempt({ controls: { share: false } }), await attempt({ controls: true, labels: { nextPage: 'Suivant' } }),
+      await attempt({ controls: 'yes' })];
+  });
+  expect(errors[0]).toMatch(/^TypeError: .*'controls' must be .*previous, next, page/);
+  expect(errors[1]).toMatch(/^TypeError: .*'labels' must be .*toolbar, previous, next/);
+  expect(errors[2]).toMatch(/^TypeError: .*option 'controls' must be true, false or an object/);
+  await expect(page.getByRole('toolbar')).toHaveCount(0);
 });
 
 test('browser: the Thumbnails panel of a 1000-page book holds only the rows near its scroll position (counted), marks the open pages, and a press riffles there', async ({ page }, testInfo) => {

@@ -39,12 +39,13 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     muted: 'true or false',
     rememberPage: 'a non-empty string (the key it is kept under)',
     antialias: "'auto', true or false",
-    on: 'an object of listeners by event name (ready, progress, pageerror, turnstart, turned, turncancel, resize, zoom, sharpened, link, pageschange, error, searchchange, fullscreenchange, download, print)',
+    on: 'an object of listeners by event name (ready, progress, pageerror, turnstart, turned, turncancel, resize, zoom, sharpened, link, pageschange, error, searchchange, fullscreenchange, download, print, passagelink)',
     outline: 'an array of { title, page, children? }',
     download: 'a URL string',
     // viewer (issue 23)
     controls: 'true, false or an object of parts to show or hide (previous, next, page, zoom, fullscreen, thumbnails, contents, search, download, print), each true or false',
     labels: 'an object of texts by key (toolbar, previous, next, page, pageOf, zoomIn, zoomOut, fullscreen, thumbnails, contents, search, download, print, close, thumbnail, noContents, searchField, previousHit, nextHit, hitOf, noHits, searching, hitPage), each a non-empty string',
+    textLayer: 'true or false',
   };
   const bad = {
     display: [NaN, 'triple', 2, null, ['double']],
@@ -73,6 +74,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     download: ['', '  ', 3, null, true],
     controls: ['yes', 1, null, [], { thumbnail: false }, { search: 'no' }],
     labels: [null, 'Suivant', [], { nextPage: 'Suivant' }, { next: '' }, { next: 3 }],
+    textLayer: ['true', 1, null],
   };
   assert.deepEqual(Object.keys(bad).sort(), Object.keys(allowed).sort());
   for (const [option, values] of Object.entries(bad)) {
@@ -118,7 +120,7 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses(null, 'options must be an object, got null');
   refuses('pages', 'options must be an object, got "pages"');
   refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, direction, startPage, duration, schedule, center, hardCovers, "
-    + 'lighting, shadows, gutter, thickness, loadWindow, wasmUrl, label, fallback, hash, autoplay, sound, muted, rememberPage, antialias, turnArea, on, outline, download, edgeMarks, controls, labels)');
+    + 'lighting, shadows, gutter, thickness, loadWindow, wasmUrl, label, fallback, hash, autoplay, sound, muted, rememberPage, antialias, turnArea, on, outline, download, edgeMarks, controls, labels, textLayer)');
   refuses({ pages, antialias: 'yes' }, "option 'antialias' must be 'auto', true or false, got \"yes\"");
   refuses({ pages, startPage: 3 }, "option 'startPage' must be below the page count 3, got 3");
   // A value whose own toString throws or is huge is described, not called.
@@ -154,6 +156,16 @@ test('node: turnArea is one of page, edges, corners, none; its default is edges 
     { name: 'TypeError', message: "conecurl: option 'turnArea' must be 'page', 'edges', 'corners' or 'none', got \"middle\"" });
   assert.throws(() => validateOptions({ pages: [{ html: 'a <b>string</b>' }] }),
     { name: 'TypeError', message: /option 'pages\[0\]\.html' must be an HTML element .*strings are never parsed as HTML/ });
+});
+
+test('node: a PDF book (validateOptions told pdf) turns from the edges by default while its text layer is on; textLayer is a boolean, default true', () => {
+  assert.equal(validateOptions({ pages: ['a.jpg'] }, { pdf: true }).turnArea, 'edges');
+  assert.equal(validateOptions({ pages: ['a.jpg'] }, { pdf: true }).textLayer, true);
+  assert.equal(validateOptions({ pages: ['a.jpg'], textLayer: false }, { pdf: true }).turnArea, 'page');
+  assert.equal(validateOptions({ pages: ['a.jpg'], turnArea: 'page' }, { pdf: true }).turnArea, 'page');
+  assert.equal(validateOptions({ pages: ['a.jpg'] }).turnArea, 'page');  // an image book has no text layer
+  assert.throws(() => validateOptions({ pages: ['a.jpg'], textLayer: 'yes' }),
+    { name: 'TypeError', message: 'conecurl: option \'textLayer\' must be true or false, got "yes"' });
 });
 
 test('node: schedule is \'paper\' (default) or \'smooth\'', () => {

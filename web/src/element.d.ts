@@ -23,7 +23,8 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
  * label (the book's name for screen readers), load-window, remember-page, wasm-url, pdf, pdf-worker-src,
  * outline (the table of contents as JSON; the property also keeps the array), download (a URL), edge-marks ("true"/"false").
  * controls (bare or "true": the toolbar; its parts as an object through the property), labels (the
- * toolbar's texts as a JSON object, or an object through the property).
+ * toolbar's texts as a JSON object, or an object through the property),
+ * text-layer ("true"/"false": a PDF's selectable text).
  * lighting, shadows, gutter, thickness, display, sound and muted apply to the running book; a change of
  * any other builds a new book at the page shown.
  */
@@ -93,6 +94,8 @@ export class ConeFlipbookElement extends HTMLElement {
   /** The toolbar's texts: an object is kept as given; a string is written to the attribute (JSON). */
   get labels(): FlipbookOptions['labels'];
   set labels(value: FlipbookOptions['labels'] | string | null);
+  /** A PDF book's selectable text over its flat pages (the text-layer attribute); default true. */
+  textLayer: FlipbookOptions['textLayer'];
   /**
    * Waits for the book being built (the StaticBook fallback without WebGL2 or the engine); rejects
    * with its error, or at once if not in the document or destroyed.

@@ -26,6 +26,8 @@ export interface FlipbookEventProps {
   onDownload?: (event: FlipbookEventMap['download']) => void;
   /** print() is about to print; preventDefault() stops it. */
   onPrint?: (event: FlipbookEventMap['print']) => void;
+  /** A reader copied a link to a passage they selected (a PDF book's text layer). */
+  onPassageLink?: (event: FlipbookEventMap['passagelink']) => void;
   /** The book could not be built, or a prop was refused (a TypeError naming it); without it, the console hears. */
   onError?: (event: CustomEvent<{ error: Error }>) => void;
 }

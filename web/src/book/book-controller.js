@@ -7,10 +7,9 @@ import { createShell } from './book-shell.js';
 import { BookEvents } from './book-events.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { BookTurns } from './book-turns.js';
-import { EdgeMarks, edgeMarksOn } from './edge-marks.js';
 import {
-  attachBookInput, attachViewer, followSurface, loadCompanions, makeDocumentApi, makeHtmlPages, makeLinkLayer, makeLivePages,
-  makePageStore, makeZoom, openingPageOf, startCompanions, watchBookSize,
+  attachBookInput, attachViewer, followSurface, loadCompanions, loadEdgeMarks, loadTextLayer, makeDocumentApi, makeHtmlPages,
+  makeLinkLayer, makeLivePages, makePageStore, makeZoom, openingPageOf, startCompanions, watchBookSize,
 } from './book-wiring.js';
 import { MAX_ZOOM, displayFor, openPages } from '../engine/layout.js';
 
@@ -40,7 +39,9 @@ export class BookController extends EventTarget {
     this._store = makePageStore(this._port);
     this._turns = new BookTurns(this._port);
     this._html = null;  // HTML pages, once _build() has loaded their module
-    this._layers = [makeLinkLayer(this._port)];
+    this._text = null;  // a PDF's selectable text, once _build() has loaded its module (text-layer.js)
+    this._links = makeLinkLayer(this._port);
+    this._layers = [this._links];
     this._reducedMotion = typeof matchMedia === 'function' ? matchMedia('(prefers-reduced-motion: reduce)') : null;
   }
 
@@ -217,13 +218,16 @@ export class BookController extends EventTarget {
     const HtmlPages = this._pages.some((entry) => entry.html) ? (await import('../layers/html-pages.js')).HtmlPages : null;
     if (HtmlPages && !this._destroyed) this._mountHtml(HtmlPages);
     this._controls = await attachViewer(this, this._port);  // the toolbar first: the book fits the rest of its box
+    this._text = await loadTextLayer(this._port, this._links.element);  // a PDF's selectable text, under the links
+    if (this._text) this._layers.splice(this._layers.indexOf(this._links), 0, this._text);
     // Page memory, autoplay and the page sound: their modules imported only when the options ask.
     const companionModules = await loadCompanions(this._settings);
+    const EdgeMarks = await loadEdgeMarks(this._settings);  // tabs and ticks on the fore-edge, when shown
     const { width, height } = this._shell.root.getBoundingClientRect();
     this._layoutSize = { width, height };
     this._surface = this._makeSurface(displayFor(this._settings.display, this._layoutSize));
     followSurface(this._port);  // the pages a moving leaf shows, images lost with a context
-    if (edgeMarksOn(this._settings)) this._layers.push(new EdgeMarks(this, this._port));  // tabs and ticks on the fore-edge
+    if (EdgeMarks) this._layers.push(new EdgeMarks(this, this._port));
     this._surface.jumpTo(this._surface.positionOfPage(openingPageOf(companionModules, this._settings, this.pageCount)));
     this._input = attachBookInput(this._port);
     this._stopWatchingSize = watchBookSize(this._port, this._layoutSize);
@@ -289,7 +293,8 @@ export class BookController extends EventTarget {
   _showOpenPages() {
     this._layoutLayers();
     const pages = this.openPages;
-    this._shell.showOpenPages(pages, this.pageCount, pages.map((i) => this._pages[i].alt));
+    // A page whose text layer is there is read from it, in order: its alt would say it all again.
+    this._shell.showOpenPages(pages, this.pageCount, pages.map((i) => (this._text ? undefined : this._pages[i].alt)));
   }
 
   // Overlay layers: laid over the open pages while the book rests, hidden while a leaf moves.

@@ -26,6 +26,8 @@ export const EVENT_DETAILS = {
   fullscreenchange: ['fullscreen'],
   download: ['url'],
   print: ['pages'],
+  // textlayer (issue 23)
+  passagelink: ['page', 'text', 'url', 'copied'],
 };
 /** Every event a book dispatches. */
 export const BOOK_EVENTS = Object.keys(EVENT_DETAILS);

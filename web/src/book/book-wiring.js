@@ -80,6 +80,33 @@ export function makeLinkLayer(book) {
   });
 }
 
+/** The edge marks' layer (edge-marks.js), imported only for a book that shows them (`edgeMarks`, on with `controls`). */
+export async function loadEdgeMarks(settings) {
+  return settings.edgeMarks ? (await import('./edge-marks.js')).EdgeMarks : null;
+}
+
+/**
+ * A PDF's selectable text (text-layer.js, imported only for PDF books with `textLayer`), laid in under
+ * `before` (the links); its passage button copies a link and says so (`passagelink`). Null for other
+ * books, and once destroyed.
+ * @param {BookPort} book
+ */
+export async function loadTextLayer(book, before) {
+  if (!book.pdf() || !book.settings.textLayer) return null;
+  const { createTextLayer } = await import('../layers/text-layer.js');
+  if (book.destroyed()) return null;
+  return createTextLayer(book.root, {
+    pdf: book.pdfDocument(),
+    canvas: book.canvas,
+    before,
+    onPassage: (passage) => {
+      // The link copied by passage-link.js, imported at the first passage a reader asks for.
+      import('./passage-link.js').then(({ sharePassage }) => sharePassage(passage))
+        .then((detail) => { if (!book.destroyed()) book.emit('passagelink', detail); });
+    },
+  });
+}
+
 /** The HTML pages' layer (html-pages.js, loaded only for books that have them). @param {BookPort} book */
 export function makeHtmlPages(HtmlPages, book) {
   return new HtmlPages(book.root, book.entries, {

@@ -4,11 +4,6 @@
 // name them and riffle there. It is one of the controller's overlay layers (place, hide, remove).
 import { createEdgeTabs } from '../layers/edge-tabs.js';
 
-/** Whether a book shows edge marks: the `edgeMarks` option, by default on with `controls`. */
-export function edgeMarksOn(settings) {
-  return settings.edgeMarks ?? Boolean(settings.controls);
-}
-
 export class EdgeMarks {
   /**
    * @param {EventTarget & { outline?: () => Promise<Array<{ title: string, page: number }>>, showHit?: (hit: object) => Promise<void> }} controller

@@ -49,7 +49,8 @@ export interface FlipbookOptions {
   /**
    * Where a press may turn a page: anywhere on it ('page'), a band along its free edge ('edges'), its
    * two free corners ('corners'), or nowhere ('none': keys, buttons and code still turn). Default
-   * 'edges' when the book has HTML pages (a press on their content stays theirs), else 'page'.
+   * 'edges' when the book has HTML pages (a press on their content stays theirs) or a PDF's text
+   * layer (a press on text selects it), else 'page'.
    */
   turnArea?: 'page' | 'edges' | 'corners' | 'none';
   /**
@@ -138,6 +139,13 @@ export interface FlipbookOptions {
    * delivered just after it resolves, to listeners added right after `await Flipbook.create(...)`.
    */
   on?: { [K in keyof FlipbookEventMap]?: (event: FlipbookEventMap[K]) => void };
+  /**
+   * A PDF book's text, selectable over its flat pages (pdf.js's TextLayer, loaded only then): a
+   * reader selects and copies it with mouse or touch, a screen reader reads it in order, a press on it
+   * selects and never turns, and a selection offers "Copy link to this passage" (`passagelink`).
+   * Default true (PDF books only; with it, `turnArea` defaults to 'edges').
+   */
+  textLayer?: boolean;
   // docapi (issue 23)
   /**
    * The table of contents of an image or HTML book, as outline() gives it (pages from 0); on a PDF
@@ -327,6 +335,12 @@ export interface FlipbookEventMap {
   download: CustomEvent<{ url: string }>;
   /** print() is about to print `pages`; cancelable: preventDefault() stops it (print() resolves false). */
   print: CustomEvent<{ pages: number[] }>;
+  /**
+   * A reader used "Copy link to this passage" on text selected on `page` (a PDF book's text layer):
+   * `url` is this document's address with #page=N&text=... (N from 1), which opens a book with
+   * `hash: true` at that page and marks the passage; `copied` says whether it reached the clipboard.
+   */
+  passagelink: CustomEvent<{ page: number; text: string; url: string; copied: boolean }>;
 }
 
 /** What the page sound (the `sound` option) is doing. */

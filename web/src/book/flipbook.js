@@ -40,7 +40,7 @@ export class Flipbook extends BookController {
     const pdf = await openPdfOption(options);
     let settings;
     try {
-      settings = validateOptions(pdf ? { ...withoutPdfOptions(options), pages: pdf.pages } : options);
+      settings = validateOptions(pdf ? { ...withoutPdfOptions(options), pages: pdf.pages } : options, { pdf: Boolean(pdf) });
     } catch (error) {
       pdf?.destroy();
       throw error;

@@ -4,7 +4,6 @@ import { BOOK_EVENTS } from './book-events.js';
 import { DIRECTIONS } from '../engine/direction.js';
 import { MAX_LEAF_THICKNESS, MAX_PAGES } from '../engine/layout.js';
 import { TURN_AREAS } from '../input/turn-area.js';
-import { checkControls, checkLabels } from '../viewer/viewer-options.js';
 
 const BOOLEAN = (v) => typeof v === 'boolean' || 'true or false';
 export { MAX_PAGES };  // the engine's Book refuses more (cpp/core/book_constants.hpp)
@@ -46,8 +45,12 @@ const OPTION_CHECKS = {
   // edgemarks (issue 23)
   edgeMarks: BOOLEAN,
   // viewer (issue 23): the toolbar and its panels (web/src/viewer/)
-  controls: checkControls,
-  labels: checkLabels,
+  // Their shape here; the names of the parts and labels are checked by the viewer's attachControls when
+  // the book is built (create() rejects with its TypeError), so a book without controls never loads them.
+  controls: (v) => typeof v === 'boolean' || isPlainEntry(v) || 'true, false or an object of parts to show or hide',
+  labels: (v) => (isPlainEntry(v) && Object.values(v).every((text) => typeof text === 'string')) || 'an object of texts by key',
+  // textlayer (issue 23): a PDF book's selectable text over its flat pages.
+  textLayer: BOOLEAN,
 };
 /** Every option validateOptions() knows (Flipbook.create also takes pdf and pdfWorkerSrc in place of pages). */
 export const OPTION_NAMES = Object.keys(OPTION_CHECKS);
@@ -60,6 +63,7 @@ export const DEFAULTS = {
   lighting: true, shadows: true, gutter: true, thickness: true, loadWindow: 4, label: 'Book', fallback: true, hash: false,
   autoplay: false, sound: false, muted: false, antialias: 'auto',
   controls: false,
+  textLayer: true,
 };
 /** Options a live book takes through setOptions(); the others need a new book. */
 export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter', 'thickness', 'display', 'sound', 'muted'];
@@ -158,9 +162,10 @@ function checkLinks(links, where, pageCount, kind) {
 
 /**
  * Checks a book's options and returns them with the defaults filled in. Throws a TypeError naming
- * the first bad option (or page entry) and what it allows.
+ * the first bad option (or page entry) and what it allows. `pdf`: the pages are a PDF's (Flipbook.create
+ * opened it), so its text layer is on unless `textLayer: false`.
  */
-export function validateOptions(options) {
+export function validateOptions(options, { pdf = false } = {}) {
   if (options === null || typeof options !== 'object') {
     throw new TypeError(`conecurl: options must be an object, got ${describeValue(options)}`);
   }
@@ -177,10 +182,12 @@ export function validateOptions(options) {
   if (options.startPage !== undefined && options.startPage >= options.pages.length) {
     throw new TypeError(`conecurl: option 'startPage' must be below the page count ${options.pages.length}, got ${options.startPage}`);
   }
-  // A book with HTML pages turns from the pages' edges by default: a press on their content is theirs.
+  // A book with HTML pages, or a PDF's selectable text, turns from the pages' edges by default: a press
+  // on their content is theirs.
   const hasHtml = Array.from(options.pages, (page) => isHtmlPage(page) || (isPlainEntry(page) && page.html !== undefined)).some(Boolean);
+  const hasText = pdf && (options.textLayer ?? DEFAULTS.textLayer);
   // edgeMarks: on with the controls unless given.
-  const settings = { ...DEFAULTS, turnArea: hasHtml ? 'edges' : 'page', edgeMarks: Boolean(options.controls), ...options };
+  const settings = { ...DEFAULTS, turnArea: hasHtml || hasText ? 'edges' : 'page', edgeMarks: Boolean(options.controls), ...options };
   if (settings.outline) settings.outline = copyOutline(settings.outline);  // the book's own: later changes to the caller's do not reach it
   return settings;
 }

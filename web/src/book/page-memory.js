@@ -1,12 +1,44 @@
 // Where a book opens and what remembers its page: `hash: true` keeps #page=N (N counted from 1) in the
 // address, so a link opens the book there and the back and forward buttons turn it; `rememberPage:
 // 'key'` keeps the page in localStorage and opens there next time. The address wins over the memory.
-const HASH = /^#page=(\d+)$/;
+// A passage link, #page=N&text=..., opens the book at page N and marks the text there as a search hit.
+const HASH = /^#page=(\d+)(?:&text=([^&]*))?$/;
 const storageKey = (key) => `conecurl:page:${key}`;
 
 function hashPage() {
   const match = HASH.exec(globalThis.location?.hash ?? '');
   return match ? Number(match[1]) - 1 : null;
+}
+
+/** The passage the address names (#page=N&text=...): { page (from 0), text }, or null. */
+export function hashPassage(hash = globalThis.location?.hash ?? '') {
+  const match = HASH.exec(hash);
+  if (!match || match[2] === undefined) return null;
+  let text;
+  try {
+    text = decodeURIComponent(match[2]).trim();
+  } catch {
+    return null;  // a malformed escape is no passage
+  }
+  return text ? { page: Number(match[1]) - 1, text } : null;
+}
+
+/** The link to a passage on page `page` (from 0): this document's address with #page=N&text=... */
+export function passageUrl(page, text, location = globalThis.location) {
+  return `${location.origin}${location.pathname}${location.search}#page=${page + 1}&text=${encodeURIComponent(text)}`;
+}
+
+/**
+ * Marks the passage the address names with the book's search (search() and showHit(), the hit on the
+ * passage's page, else the nearest). Resolves with the hit shown, or null.
+ */
+export async function markPassage(book, passage) {
+  if (!passage || typeof book.search !== 'function' || typeof book.showHit !== 'function') return null;
+  const hits = await book.search(passage.text);
+  if (!hits.length) return null;
+  const hit = hits.reduce((best, h) => (Math.abs(h.page - passage.page) < Math.abs(best.page - passage.page) ? h : best));
+  await book.showHit(hit);
+  return hit;
 }
 
 function storedPage(key) {
@@ -49,8 +81,12 @@ export function followPage(book, settings) {
     const page = hashPage();
     if (page === null || page >= book.pageCount) return;
     fromAddress++;
-    book.flip(page).catch(() => {}).finally(() => { fromAddress--; });
+    const passage = hashPassage();
+    book.flip(page).then(() => markPassage(book, passage)).catch(() => {}).finally(() => { fromAddress--; });
   };
+  // The book opened at a passage link's page: once ready, its text is marked there.
+  const onReady = () => { if (settings.hash) markPassage(book, hashPassage()).catch(() => {}); };
+  book.addEventListener('ready', onReady, { once: true });
   book.addEventListener('turned', onTurned);
   book.addEventListener('pageschange', onTurned);
   if (settings.hash) {
@@ -58,6 +94,7 @@ export function followPage(book, settings) {
     addEventListener('hashchange', onAddress);
   }
   return () => {
+    book.removeEventListener('ready', onReady);
     book.removeEventListener('turned', onTurned);
     book.removeEventListener('pageschange', onTurned);
     removeEventListener('popstate', onAddress);

@@ -94,6 +94,8 @@ export const ATTRIBUTES = {
   // viewer (issue 23): a bare `controls` shows the whole toolbar; the parts as an object go through the property.
   controls: ['controls', parseBoolean],
   labels: ['labels', parseJsonObject],
+  // textlayer (issue 23)
+  'text-layer': ['textLayer', parseBoolean],
 };
 /** Options with no attribute, and why. */
 export const NO_ATTRIBUTE = {

@@ -14,8 +14,10 @@ export const PAGE_PROPS = ['page', 'defaultPage'];
  */
 export const FIXED_PROPS = OPTION_PROPS.filter((name) => !LIVE_OPTIONS.includes(name) && name !== 'pages');
 
-const HANDLER_WORDS = { pageerror: 'PageError', turnstart: 'TurnStart', turncancel: 'TurnCancel', pageschange: 'PagesChange',
-  searchchange: 'SearchChange', fullscreenchange: 'FullscreenChange' };
+const HANDLER_WORDS = {
+  pageerror: 'PageError', turnstart: 'TurnStart', turncancel: 'TurnCancel', pageschange: 'PagesChange',
+  searchchange: 'SearchChange', fullscreenchange: 'FullscreenChange', passagelink: 'PassageLink',
+};
 /** 'turned' -> 'onTurned', 'pageerror' -> 'onPageError', ... for every book event. */
 export const EVENT_HANDLERS = Object.fromEntries(BOOK_EVENTS.map((type) => [
   type, `on${HANDLER_WORDS[type] ?? type[0].toUpperCase() + type.slice(1)}`,

@@ -63,6 +63,8 @@ export function createLinkLayer(root, { linksOf, onActivate }) {
       layer.replaceChildren();
     },
     get anchors() { return [...layer.children]; },
+    /** The layer's element (other layers go in under it). */
+    get element() { return layer; },
     remove() { layer.remove(); },
   };
 }
