@@ -1,16 +1,16 @@
-// The book controller: what a book is doing and what it tells its user, whichever surface draws it, and
-// the public API of Flipbook and StaticBook (this class over each surface). It holds the options, the
-// pages and their states (page-store.js), zoom, size, the open pages shown and events; turns are carried
-// out by book-turns.js, and its parts (input, overlay layers, live pages, watchers) are wired to it by
-// book-wiring.js through one port (`_makePort`). The calls a surface answers are in docs/architecture.md.
+// The book controller: what a book is doing and tells its user, whichever surface draws it; the public API
+// of Flipbook and StaticBook. It holds the options, pages and their states (page-store.js), zoom, size, the
+// open pages and events; turns are book-turns.js; its parts are wired to one port (`_makePort`) by
+// book-wiring.js and document-wiring.js (document API, viewer). A surface's calls: docs/architecture.md.
 import { createShell } from './book-shell.js';
 import { BookEvents } from './book-events.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { BookTurns } from './book-turns.js';
 import {
-  attachBookInput, attachViewer, followSurface, loadCompanions, loadEdgeMarks, loadTextLayer, makeDocumentApi, makeHtmlPages,
-  makeLinkLayer, makeLivePages, makePageStore, makeZoom, openingPageOf, startCompanions, watchBookSize,
+  attachBookInput, followSurface, loadCompanions, loadEdgeMarks, loadTextLayer, makeHtmlPages, makeLinkLayer, makeLivePages,
+  makePageStore, makeZoom, openingPageOf, startCompanions, watchBookSize,
 } from './book-wiring.js';
+import { attachViewer, makeDocumentApi } from './document-wiring.js';
 import { MAX_ZOOM, displayFor, openPages } from '../engine/layout.js';
 
 const REFIT_DELAY_MS = 150;  // images are fitted to a new size or zoom once it has come to rest
@@ -220,14 +220,13 @@ export class BookController extends EventTarget {
     this._controls = await attachViewer(this, this._port);  // the toolbar first: the book fits the rest of its box
     this._text = await loadTextLayer(this._port, this._links.element);  // a PDF's selectable text, under the links
     if (this._text) this._layers.splice(this._layers.indexOf(this._links), 0, this._text);
-    // Page memory, autoplay and the page sound: their modules imported only when the options ask.
-    const companionModules = await loadCompanions(this._settings);
-    const EdgeMarks = await loadEdgeMarks(this._settings);  // tabs and ticks on the fore-edge, when shown
+    // Page memory, autoplay, the page sound and the edge marks: imported only when the options ask.
+    const [companionModules, EdgeMarks] = await Promise.all([loadCompanions(this._settings), loadEdgeMarks(this._settings)]);
     const { width, height } = this._shell.root.getBoundingClientRect();
     this._layoutSize = { width, height };
     this._surface = this._makeSurface(displayFor(this._settings.display, this._layoutSize));
     followSurface(this._port);  // the pages a moving leaf shows, images lost with a context
-    if (EdgeMarks) this._layers.push(new EdgeMarks(this, this._port));
+    if (EdgeMarks) this._layers.push(new EdgeMarks(this, this._port));  // tabs and ticks on the fore-edge
     this._surface.jumpTo(this._surface.positionOfPage(openingPageOf(companionModules, this._settings, this.pageCount)));
     this._input = attachBookInput(this._port);
     this._stopWatchingSize = watchBookSize(this._port, this._layoutSize);

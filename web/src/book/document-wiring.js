@@ -1,0 +1,81 @@
+// How the document API (outline, search and its marks, thumbnails, fullscreen, download, print) and
+// the viewer (`controls`) are wired to a book from its port, each module imported on first use.
+
+/**
+ * The document API (issue 23): outline(), search() and its marks, pageThumbnail(), fullscreen,
+ * download() and print(), each module imported on first use; a PDF's text is indexed in the background
+ * once the book is open (indexInBackground). `controller` is the book, for its events.
+ * @param {import('./book-wiring.js').BookPort} book
+ */
+export function makeDocumentApi(controller, book) {
+  let search = null;
+  let searchLoading = null;
+  let textIndex = null;
+  let thumbnails = null;
+  let stopFollowingFullscreen = null;
+  let stopped = false;
+  const documentModule = () => import('./book-document.js');
+  const pdfIndex = async () => {
+    const pdf = book.pdfDocument();
+    if (!pdf) return null;
+    const { PdfTextIndex } = await import('../pages/text-index.js');
+    return (textIndex ??= new PdfTextIndex(pdf, book.pageCount()));
+  };
+  const searcher = () => (searchLoading ??= import('./book-search.js').then(({ BookSearch }) => {
+    book.alive();
+    return (search = new BookSearch(book, pdfIndex));
+  }));
+  const drawer = async () => {
+    const { PageThumbnails } = await import('./page-thumbnails.js');
+    return (thumbnails ??= new PageThumbnails(book));
+  };
+  controller.addEventListener('pageschange', () => search?.pagesChanged());  // hits' page numbers no longer hold
+  return {
+    outline: async () => (await import('./book-outline.js')).bookOutline(book),
+    search: async (text, options) => (await searcher()).search(text, options),
+    showHit: async (hit) => (await searcher()).showHit(hit),
+    clearSearch: () => search?.clear(),
+    decorate: (index, image) => (search ? search.decorate(index, image) : image),
+    thumbnail: async (index, size) => (await drawer()).draw(index, size),
+    toggleFullscreen: async (force) => {
+      const { followFullscreen, toggleFullscreen } = await documentModule();
+      book.alive();
+      stopFollowingFullscreen ??= followFullscreen(book.container, (fullscreen) => {
+        book.emit('fullscreenchange', { fullscreen });
+        book.refitSoon();  // the size watch lays the book out at its new size; sharp images once it rests
+      });
+      return toggleFullscreen(book.container, force);
+    },
+    download: async () => {
+      book.alive();
+      return (await documentModule()).downloadDocument(controller, book.root, book.settings, book.pdfDocument());
+    },
+    print: async () => {
+      book.alive();
+      const draw = (index, size) => drawer().then((t) => t.draw(index, size));
+      return (await documentModule()).printDocument(controller, book.pageCount(), draw);
+    },
+    /** After the book opened: a PDF's text read page by page in idle time, for the first search. */
+    indexInBackground: () => {
+      if (book.pdfDocument()) pdfIndex().then((index) => { if (!stopped) index?.startBackground(); }).catch(() => {});
+    },
+    stop: () => {
+      stopped = true;
+      textIndex?.stop();
+      stopFollowingFullscreen?.();
+    },
+  };
+}
+
+/**
+ * The viewer (the `controls` option): its module loaded only now, attached to `controller` through its
+ * public API as conecurl/viewer's attachControls is; null without `controls` or once destroyed.
+ * @param {import('./book-wiring.js').BookPort} book
+ */
+export async function attachViewer(controller, book) {
+  const { controls, labels } = book.settings;
+  if (!controls) return null;
+  const { attachControls } = await import('../viewer/attach-controls.js');
+  if (book.destroyed()) return null;
+  return attachControls(controller, { controls, labels, pdf: book.pdf() });
+}
