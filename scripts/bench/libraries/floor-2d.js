@@ -1,16 +1,10 @@
 // The 2D-canvas floor (issue 24): the WebGL floor's book drawn with a 2D canvas instead, measured
 // beside conecurl as what the same turn costs without WebGL: a viewport-sized canvas, drawImage of the
 // open pages, and the leaf drawn narrower by cos(angle) about the spine (no perspective); nothing else.
-import { floorBook } from './floor-book.js';
+import { floorBook, viewportCanvas } from './floor-book.js';
 
 export async function mount(container, { urls, display, duration }) {
-  const { width, height } = container.getBoundingClientRect();
-  const ratio = window.devicePixelRatio || 1;
-  const canvas = document.createElement('canvas');
-  canvas.width = Math.round(width * ratio);
-  canvas.height = Math.round(height * ratio);
-  canvas.style.cssText = 'position:absolute;inset:0;width:100%;height:100%';
-  container.append(canvas);
+  const { canvas, width, height } = viewportCanvas(container);
   const context = canvas.getContext('2d');
   if (!context) throw new Error('floor-2d: no 2D context');
   const bitmaps = new Map();  // page -> ImageBitmap (PageImages owns and closes them)

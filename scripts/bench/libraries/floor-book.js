@@ -105,6 +105,18 @@ export function playTurn(duration, draw) {
   });
 }
 
+/** A canvas over the whole container at the device's pixel ratio: both floors draw into one. */
+export function viewportCanvas(container) {
+  const { width, height } = container.getBoundingClientRect();
+  const ratio = window.devicePixelRatio || 1;
+  const canvas = document.createElement('canvas');
+  canvas.width = Math.round(width * ratio);
+  canvas.height = Math.round(height * ratio);
+  canvas.style.cssText = 'position:absolute;inset:0;width:100%;height:100%';
+  container.append(canvas);
+  return { canvas, width, height };
+}
+
 /**
  * The bench adapter both floors give the harness. `surface` draws scene() quads (draw), gets each page's
  * image before it is drawn (prepare(page, bitmap, images), awaited before a turn's first frame: WebGL

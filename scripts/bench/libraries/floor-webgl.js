@@ -2,7 +2,7 @@
 // what a WebGL flipbook must pay on this platform. A viewport-sized canvas (alpha, no MSAA, no depth),
 // the open pages as textures, and per frame of a turn three textured quads, the leaf rotated about the
 // spine with a simple perspective (a w divide); nothing else: no lighting, shadows, stacks or curl.
-import { floorBook } from './floor-book.js';
+import { floorBook, viewportCanvas } from './floor-book.js';
 
 const VERTEX = `#version 300 es
 uniform vec4 u_page;   // spine x, top y, page width, page height (px)
@@ -41,13 +41,7 @@ function program(gl) {
 }
 
 export async function mount(container, { urls, display, duration }) {
-  const { width, height } = container.getBoundingClientRect();
-  const ratio = window.devicePixelRatio || 1;
-  const canvas = document.createElement('canvas');
-  canvas.width = Math.round(width * ratio);
-  canvas.height = Math.round(height * ratio);
-  canvas.style.cssText = 'position:absolute;inset:0;width:100%;height:100%';
-  container.append(canvas);
+  const { canvas, width, height } = viewportCanvas(container);
   const gl = canvas.getContext('webgl2', { alpha: true, antialias: false, depth: false, stencil: false });
   if (!gl) throw new Error('floor-webgl: no WebGL2 context');
   gl.useProgram(program(gl));
