@@ -4,7 +4,7 @@
 import { floorBook, viewportCanvas } from './floor-book.js';
 
 export async function mount(container, { urls, display, duration }) {
-  const { canvas, width, height } = viewportCanvas(container);
+  const { canvas, width, height, ratio } = viewportCanvas(container);
   const context = canvas.getContext('2d');
   if (!context) throw new Error('floor-2d: no 2D context');
   const bitmaps = new Map();  // page -> ImageBitmap (PageImages owns and closes them)

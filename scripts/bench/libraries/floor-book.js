@@ -114,7 +114,7 @@ export function viewportCanvas(container) {
   canvas.height = Math.round(height * ratio);
   canvas.style.cssText = 'position:absolute;inset:0;width:100%;height:100%';
   container.append(canvas);
-  return { canvas, width, height };
+  return { canvas, width, height, ratio };
 }
 
 /**

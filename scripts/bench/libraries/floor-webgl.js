@@ -41,7 +41,7 @@ function program(gl) {
 }
 
 export async function mount(container, { urls, display, duration }) {
-  const { canvas, width, height } = viewportCanvas(container);
+  const { canvas, width, height, ratio } = viewportCanvas(container);
   const gl = canvas.getContext('webgl2', { alpha: true, antialias: false, depth: false, stencil: false });
   if (!gl) throw new Error('floor-webgl: no WebGL2 context');
   gl.useProgram(program(gl));
