@@ -1,5 +1,6 @@
 // Browser: what a book loads and when. A plain book of images fetches none of the optional parts (page
-// sound, autoplay, page memory, live pages, HTML pages, PDF, the 2D fallback, the document API): each is
+// sound, autoplay, page memory, live pages, HTML pages, PDF, the 2D fallback, the document API, the edge
+// marks, the text layer and passage links, the viewer): each is
 // fetched only once an option or a call asks for it (counted by the module URLs the page requests); and
 // page images reach the GPU outside the turn's frames or in bands (bytes counted per frame).
 import { test, expect } from '@playwright/test';
@@ -23,6 +24,14 @@ const OPTIONAL = {
   textIndex: '/web/src/pages/text-index.js',
   thumbnails: '/web/src/book/page-thumbnails.js',
   document: '/web/src/book/book-document.js',
+  // Issue 23's other parts: the edge marks (edgeMarks, on with controls), a PDF's text layer and its
+  // passage link, the viewer (controls).
+  edgeMarks: '/web/src/book/edge-marks.js',
+  edgeTabs: '/web/src/layers/edge-tabs.js',
+  textLayer: '/web/src/layers/text-layer.js',
+  passageLink: '/web/src/book/passage-link.js',
+  viewer: '/web/src/viewer/attach-controls.js',
+  viewerOptions: '/web/src/viewer/viewer-options.js',
 };
 
 // Every module path under /web/src/ the page requests, from now on.
@@ -63,6 +72,18 @@ test('browser: the optional modules load when their option or call asks for them
   });
   expect(count).toBe(7);
   expect(modules.has(OPTIONAL.live)).toBe(true);
+  expect(problems).toEqual([]);
+});
+
+test('browser: edgeMarks: true loads the edge marks and their buttons, and only then (module count)', async ({ page }) => {
+  const modules = recordModules(page);
+  const problems = await openReady(page, FIXTURE);
+  await page.evaluate(() => window.openBook({ pages: 6 }));
+  expect(modules.has(OPTIONAL.edgeMarks)).toBe(false);
+  await page.evaluate(() => window.openBook({ pages: 6, edgeMarks: true, outline: [{ title: 'Two', page: 2 }] }));
+  expect(modules.has(OPTIONAL.edgeMarks)).toBe(true);
+  expect(modules.has(OPTIONAL.edgeTabs)).toBe(true);
+  expect(modules.has(OPTIONAL.viewer)).toBe(false);  // the marks come without the toolbar
   expect(problems).toEqual([]);
 });
 
