@@ -232,11 +232,7 @@ void BookRenderer::createGpuObjects() {
     // stacks binds no other vertex array. The buffer is filled by updateStacks().
     glGenBuffers(1, &stackBuffer_);
     glBindBuffer(GL_ARRAY_BUFFER, stackBuffer_);
-    constexpr GLsizei kStride = kStackVertexFloats * sizeof(float);
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 4, GL_FLOAT, GL_FALSE, kStride, nullptr);
-    glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, kStride, reinterpret_cast<const void*>(4 * sizeof(float)));
+    vec4PairAttributes(1, kStackVertexFloats);
     stackKey_ = StackKey{};
     stackVertexCount_ = 0;
 

@@ -60,11 +60,7 @@ void EdgeMarksRenderer::draw(const Book& book, const glm::mat4& viewProjection, 
         viewProjection_ = glGetUniformLocation(program_, "uViewProjection");
         glGenBuffers(1, &buffer_);
         glBindBuffer(GL_ARRAY_BUFFER, buffer_);
-        constexpr GLsizei kStride = kFloats * sizeof(float);
-        glEnableVertexAttribArray(3);
-        glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, kStride, nullptr);
-        glEnableVertexAttribArray(4);
-        glVertexAttribPointer(4, 4, GL_FLOAT, GL_FALSE, kStride, reinterpret_cast<const void*>(4 * sizeof(float)));
+        vec4PairAttributes(3, kFloats);
         marksChanged_ = true;
     }
     const BookConfig& c = book.config();

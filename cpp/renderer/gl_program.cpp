@@ -62,4 +62,12 @@ GLuint buildProgram(const ProgramSource& source, std::string& error) {
     return program;
 }
 
+void vec4PairAttributes(GLuint location, int strideFloats) {
+    const auto stride = static_cast<GLsizei>(strideFloats * sizeof(float));
+    glEnableVertexAttribArray(location);
+    glVertexAttribPointer(location, 4, GL_FLOAT, GL_FALSE, stride, nullptr);
+    glEnableVertexAttribArray(location + 1);
+    glVertexAttribPointer(location + 1, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(4 * sizeof(float)));
+}
+
 }  // namespace conecurl

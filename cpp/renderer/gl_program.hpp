@@ -17,4 +17,8 @@ struct ProgramSource {
 // Returns the linked program, or 0 with `error` set to a readable message.
 GLuint buildProgram(const ProgramSource& source, std::string& error);
 
+// The buffer bound to GL_ARRAY_BUFFER read as two vec4 attributes a vertex, at `location` and
+// `location + 1`, from vertices of `strideFloats` floats (the stacks' faces and the edge marks).
+void vec4PairAttributes(GLuint location, int strideFloats);
+
 }  // namespace conecurl

@@ -3,6 +3,7 @@
 // tree (/Outlines) whose entries point at pages by explicit and by named destinations. It also says
 // where each line of text was drawn, so a test can check a hit's rectangle against the glyphs' place.
 import { PDFDocument, PDFHexString, PDFName, PDFNull, PDFNumber, StandardFonts, rgb } from 'pdf-lib';
+import { openReady } from './helpers.js';
 
 export const PAGE_SIZE = [420, 560];  // points, portrait
 const MARGIN = 40;
@@ -102,4 +103,22 @@ function addOutline(pdf, pages) {
   const destsDict = context.obj({});
   for (const [name, dest] of Object.entries(dests)) destsDict.set(PDFName.of(name), dest);
   catalog.set(PDFName.of('Dests'), destsDict);
+}
+
+/**
+ * Opens the PDF fixture page with a book of `made` (makeDocumentPdf's result) in `window.book` (options
+ * merged over a double spread turning in 300 ms), and beside it, to compare with, pdf.js itself as the
+ * page has it (`window.pdfjs`, the module the book imported) and the same PDF opened by it (`window.refDoc`).
+ */
+export async function openPdfBook(page, made, options = {}) {
+  await openReady(page, '/tests/browser/fixtures/pdf-fixture.html');
+  await page.evaluate(async ({ base64, options }) => {
+    window.pdfBytes = window.bytesFromBase64(base64);
+    window.book = await window.Flipbook.create(window.container, {
+      pdf: window.pdfBytes, display: 'double', duration: 300, ...options,
+    });
+    await window.book.whenIdle();
+    window.pdfjs = await import('pdfjs-dist');
+    window.refDoc = await window.pdfjs.getDocument({ data: window.pdfBytes.slice() }).promise;
+  }, { base64: made.base64, options });
 }

@@ -6,21 +6,12 @@
 import { test, expect } from '@playwright/test';
 import { readFileSync } from 'node:fs';
 import { openReady } from './helpers.js';
-import { PAGES, PAGE_SIZE, makeDocumentPdf } from './document-pdf.js';
+import { PAGES, PAGE_SIZE, makeDocumentPdf, openPdfBook as openPdf } from './document-pdf.js';
 
 let made;
 test.beforeAll(async () => { made = await makeDocumentPdf(); });
 
-async function openPdfBook(page, options = {}) {
-  await openReady(page, '/tests/browser/fixtures/pdf-fixture.html');
-  await page.evaluate(async ({ base64, options }) => {
-    window.pdfBytes = window.bytesFromBase64(base64);
-    window.book = await window.Flipbook.create(window.container, {
-      pdf: window.pdfBytes, display: 'double', duration: 300, ...options,
-    });
-    await window.book.whenIdle();
-  }, { base64: made.base64, options });
-}
+const openPdfBook = (page, options) => openPdf(page, made, options);
 
 test('browser: pageThumbnail() draws a PDF page at the size asked from pdf.js, never touching the book\'s textures or kept pages', async ({ page }) => {
   await openPdfBook(page);

@@ -6,25 +6,13 @@
 import { test, expect } from '@playwright/test';
 import { existsSync, readFileSync } from 'node:fs';
 import { openReady } from './helpers.js';
-import { BOOKMARKS, PAGES, PAGE_SIZE, lineAt, makeDocumentPdf } from './document-pdf.js';
+import { BOOKMARKS, PAGES, PAGE_SIZE, lineAt, makeDocumentPdf, openPdfBook as openPdf } from './document-pdf.js';
 
 let made;
 test.beforeAll(async () => { made = await makeDocumentPdf(); });
 
-/** Opens the fixture with a book of the test PDF in `window.book` (extra options merged). */
-async function openPdfBook(page, options = {}) {
-  await openReady(page, '/tests/browser/fixtures/pdf-fixture.html');
-  await page.evaluate(async ({ base64, options }) => {
-    window.pdfBytes = window.bytesFromBase64(base64);
-    window.book = await window.Flipbook.create(window.container, {
-      pdf: window.pdfBytes, display: 'double', duration: 300, lighting: false, shadows: false, gutter: false, ...options,
-    });
-    await window.book.whenIdle();
-    // pdf.js itself, as the page has it, to compare with: the same module the book imported.
-    window.pdfjs = await import('pdfjs-dist');
-    window.refDoc = await window.pdfjs.getDocument({ data: window.pdfBytes.slice() }).promise;
-  }, { base64: made.base64, options });
-}
+/** The test PDF's book, drawn without light, shadows or gutter (plain pixels under the marks), and pdf.js beside it. */
+const openPdfBook = (page, options) => openPdf(page, made, { lighting: false, shadows: false, gutter: false, ...options });
 
 test('browser: outline() of a PDF is pdf.js\'s outline with each destination resolved to its page, and an entry opens its page', async ({ page }) => {
   await openPdfBook(page);
@@ -348,14 +336,7 @@ test('browser: a marked hit, flat and while its page curls (drawn in its texture
 test('browser: search() over HTML pages finds their text, with rects from a Range over the word', async ({ page }) => {
   await openReady(page, '/tests/browser/fixtures/html-fixture.html');
   const result = await page.evaluate(async () => {
-    const make = (text) => {
-      const section = document.createElement('section');
-      section.className = 'html-page';
-      const p = document.createElement('p');
-      p.textContent = text;
-      section.append(p);
-      return section;
-    };
+    const make = window.makeTextPage;
     const pages = [make('Cover'), make('An Élan of words here.'), make('Nothing'), make('élan again, and ELAN')];
     window.book = await window.Flipbook.create(window.container, { pages, display: 'double', duration: 300 });
     await window.book.whenIdle();
@@ -476,14 +457,7 @@ test('browser: <cone-flipbook outline="..."> gives its book the outline from JSO
 test('browser: on a StaticBook (2D canvas) with HTML pages, showHit() lays its data-search-hit mark over the word on the live page', async ({ page }) => {
   await openReady(page, '/tests/browser/fixtures/html-fixture.html');
   const result = await page.evaluate(async () => {
-    const make = (text) => {
-      const section = document.createElement('section');
-      section.className = 'html-page';
-      const p = document.createElement('p');
-      p.textContent = text;
-      section.append(p);
-      return section;
-    };
+    const make = window.makeTextPage;
     const pages = [make('Cover'), make('First'), make('Second'), make('Where the heron stands'), make('Last')];
     window.book = await window.StaticBook.create(window.container, { pages, display: 'double' });
     await window.book.whenIdle();
