@@ -2,6 +2,7 @@
 // behave the same on any machine without a GPU. The repository is served by scripts/serve.mjs.
 import { defineConfig } from '@playwright/test';
 import { chromiumLaunchOptions } from './scripts/chromium.mjs';
+import { PHONES, phoneUse } from './tests/browser/phone.js';
 
 // CONECURL_TEST_PORT lets several checkouts run their browser tests side by side.
 const port = Number(process.env.CONECURL_TEST_PORT) || 8089;
@@ -22,6 +23,11 @@ export default defineConfig({
     deviceScaleFactor: 1,
     launchOptions: chromiumLaunchOptions(),
   },
+  // Desktop specs run once at 800x600; every *.phone.spec.js runs on each phone (tests/browser/phone.js).
+  projects: [
+    { name: 'desktop', testIgnore: /\.phone\.spec\.js$/ },
+    ...Object.entries(PHONES).map(([name, screen]) => ({ name, testMatch: /\.phone\.spec\.js$/, use: phoneUse(screen) })),
+  ],
   webServer: {
     command: `node scripts/serve.mjs --port ${port}`,
     url: `http://127.0.0.1:${port}/web/demo/`,
