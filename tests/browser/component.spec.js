@@ -457,9 +457,10 @@ test('browser: restingRect is where the resting pages are drawn, for double, sin
   }
 });
 
-test('browser: the book follows its container: \'auto\' turns single below aspect 1.2 and double above, keeping the page and its textures, and redraws', async ({ page }) => {
+test('browser: the book follows its container: \'auto\' turns single where a spread\'s pages would be narrower than minPageWidth and double where not, keeping the page and its textures, and redraws', async ({ page }) => {
   await openReady(page, FIXTURE);
-  await openBook(page, { pages: 30, display: 'auto', duration: 150, startPage: 5 });
+  // 640x400 lays a spread's pages 246 px wide, 300x400 115 px, 600x450 231 px: 200 px lies between.
+  await openBook(page, { pages: 30, display: 'auto', minPageWidth: 200, duration: 150, startPage: 5 });
   const resize = (width, height) => page.evaluate(([width, height]) => new Promise((resolve) => {
     const book = window.book;
     const framesBefore = book.surface.framesDrawn;

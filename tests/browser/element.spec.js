@@ -280,6 +280,7 @@ test('browser: every option is a property too, as Svelte and Angular set them: p
     element.append(Object.assign(document.createElement('img'), { src: window.pageUrl(5), alt: 'ignored: the pages property wins' }));
     element.pages = [window.pageUrl(0), { src: window.pageUrl(1), alt: 'One' }, window.pageUrl(2), window.pageUrl(3)];
     element.startPage = 2;
+    element.display = 'double';  // a spread (640x400 is too narrow for 'auto' to choose one): page 2 opens pages 1-2
     element.lighting = false;
     element.duration = 300;
     element.setAttribute('autoplay', '60000');  // parsed as { interval }
@@ -317,7 +318,7 @@ test('browser: turn-area, label and fallback are attributes too; every option pr
     const autoplay = { interval: 60000, loop: true };
     // A value for every option property (display reads the display shown: the live-attribute test has it).
     const values = {
-      pages, direction: 'rtl', startPage: 2, duration: 300, schedule: 'smooth', center: false, hardCovers: true,
+      pages, minPageWidth: 150, direction: 'rtl', startPage: 2, duration: 300, schedule: 'smooth', center: false, hardCovers: true,
       lighting: false, shadows: false, gutter: false, thickness: 0.01, loadWindow: 2, hash: false, autoplay, sound: false,
       muted: true, rememberPage: 'element-spec', wasmUrl: '/dist/x.wasm', antialias: 'auto', turnArea: 'corners',
       label: 'Atlas of clouds', fallback: false, pdf: new Uint8Array([37, 80, 68, 70]), pdfWorkerSrc: '/no/worker.mjs',

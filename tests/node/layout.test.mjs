@@ -185,15 +185,6 @@ test('node: clampZoom treats non-finite values as no zoom, as the engine does', 
   assert.deepEqual(clamped({ scale: 2, offsetX: 0.5, offsetY: -2 }), { scale: 2, offsetX: 0.5, offsetY: -1 });
 });
 
-test('node: displayFor shows two pages in \'auto\' only in containers wider than AUTO_DOUBLE_ASPECT times their height', () => {
-  assert.equal(layout.displayFor('single', { width: 2000, height: 100 }), 'single');
-  assert.equal(layout.displayFor('double', { width: 100, height: 2000 }), 'double');
-  assert.equal(layout.displayFor('auto', { width: 1000, height: 1000 }), 'single');
-  assert.equal(layout.displayFor('auto', { width: 120, height: 100 }), 'single');
-  assert.equal(layout.displayFor('auto', { width: 121, height: 100 }), 'double');
-  assert.equal(layout.displayFor('auto', { width: 10, height: 0 }), 'double');
-});
-
 test('node: one direction module answers what depends on direction, and the engine takes its spine sides (needs the wasm built)', async () => {
   const { DIRECTIONS, directionFacts, freeEdge, halfOf } = await import('../../web/src/engine/direction.js');
   const engine = await loadEngineForNode();

@@ -19,6 +19,7 @@ function refuses(options, expected) {
 test('node: every option refuses NaN, negative, wrong-type values with a TypeError naming it and what it allows', () => {
   const allowed = {
     display: "'single', 'double' or 'auto'",
+    minPageWidth: 'a positive number of CSS pixels',
     direction: "'ltr', 'rtl' or 'vertical'",
     startPage: 'a page index (a whole number from 0)',
     duration: 'a positive number of milliseconds',
@@ -39,7 +40,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     muted: 'true or false',
     rememberPage: 'a non-empty string (the key it is kept under)',
     antialias: "'auto', true or false",
-    on: 'an object of listeners by event name (ready, progress, pageerror, turnstart, turned, turncancel, resize, zoom, sharpened, link, pageschange, error, searchchange, fullscreenchange, download, print, passagelink)',
+    on: 'an object of listeners by event name (ready, progress, pageerror, turnstart, turned, turncancel, resize, zoom, sharpened, link, pageschange, error, searchchange, fullscreenchange, download, print, passagelink, displaychange, middletap)',
     outline: 'an array of { title, page, children? }',
     download: 'a URL string',
     // viewer (issue 23): the shape here; the part and label names are the viewer's (viewer-options.test.mjs)
@@ -49,6 +50,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
   };
   const bad = {
     display: [NaN, 'triple', 2, null, ['double']],
+    minPageWidth: [NaN, 0, -300, Infinity, '300', null, true],
     direction: ['LTR', -1, undefined, {}],
     startPage: [NaN, -1, 1.5, '1', Infinity, null],
     duration: [NaN, -1, 0, Infinity, '300', null],
@@ -119,7 +121,7 @@ test('node: pages must be a non-empty array of page sources; each entry is check
 test('node: options that are not an object, unknown keys, and a start page past the end are refused by name', () => {
   refuses(null, 'options must be an object, got null');
   refuses('pages', 'options must be an object, got "pages"');
-  refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, direction, startPage, duration, schedule, center, hardCovers, "
+  refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, minPageWidth, direction, startPage, duration, schedule, center, hardCovers, "
     + 'lighting, shadows, gutter, thickness, loadWindow, wasmUrl, label, fallback, hash, autoplay, sound, muted, rememberPage, antialias, turnArea, on, outline, download, edgeMarks, controls, labels, textLayer)');
   refuses({ pages, antialias: 'yes' }, "option 'antialias' must be 'auto', true or false, got \"yes\"");
   refuses({ pages, startPage: 3 }, "option 'startPage' must be below the page count 3, got 3");
@@ -130,11 +132,13 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses({ pages, display: 'x'.repeat(500) }, `option 'display' must be 'single', 'double' or 'auto', got "${'x'.repeat(57)}..."`);
 });
 
-test('node: setOptions takes only lighting, shadows, gutter, thickness, display, sound and muted, checked; flip options are { animate: boolean }', () => {
+test('node: setOptions takes only lighting, shadows, gutter, thickness, display, minPageWidth, sound and muted, checked; flip options are { animate: boolean }', () => {
   assert.deepEqual(checkLiveOptions({ lighting: false }, pages), { lighting: false });
+  assert.deepEqual(checkLiveOptions({ minPageWidth: 150 }, pages), { minPageWidth: 150 });
+  assert.throws(() => checkLiveOptions({ minPageWidth: -1 }, pages), /option 'minPageWidth' must be a positive number of CSS pixels, got -1/);
   assert.deepEqual(checkLiveOptions({ display: 'single' }, pages), { display: 'single' });
   assert.throws(() => checkLiveOptions({ display: 'triple' }, pages), /option 'display' must be 'single', 'double' or 'auto'/);
-  assert.throws(() => checkLiveOptions({ direction: 'rtl' }, pages), /option 'direction' cannot change on a live book \(only lighting, shadows, gutter, thickness, display, sound, muted\)/);
+  assert.throws(() => checkLiveOptions({ direction: 'rtl' }, pages), /option 'direction' cannot change on a live book \(only lighting, shadows, gutter, thickness, display, minPageWidth, sound, muted\)/);
   assert.deepEqual(checkLiveOptions({ sound: true, muted: true }, pages), { sound: true, muted: true });
   assert.throws(() => checkLiveOptions({ muted: 'yes' }, pages), /option 'muted' must be true or false, got "yes"/);
   assert.deepEqual(checkLiveOptions({ thickness: 0.01 }, pages), { thickness: 0.01 });

@@ -16,7 +16,7 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
  * The Flipbook as an element. Every option is an attribute (all optional except the pages), its name
  * in kebab case, except `on` (listen on the element: it dispatches every book event): pages (URLs
  * separated by spaces; else the child elements: an <img> an image page, alt text kept, any other
- * element a live HTML page shown through a named slot), display, direction, start-page, duration,
+ * element a live HTML page shown through a named slot), display, min-page-width, direction, start-page, duration,
  * schedule, center, hard-covers, lighting, shadows, gutter, hash, sound, muted, fallback
  * ("true"/"false"), thickness ("true"/"false"/a number), autoplay ("true"/"false"/the milliseconds
  * between turns), antialias ("auto"/"true"/"false"), turn-area ("page"/"edges"/"corners"/"none"),
@@ -25,7 +25,7 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
  * controls (bare or "true": the toolbar; its parts as an object through the property), labels (the
  * toolbar's texts as a JSON object, or an object through the property),
  * text-layer ("true"/"false": a PDF's selectable text).
- * lighting, shadows, gutter, thickness, display, sound and muted apply to the running book; a change of
+ * lighting, shadows, gutter, thickness, display, min-page-width, sound and muted apply to the running book; a change of
  * any other builds a new book at the page shown.
  */
 export class ConeFlipbookElement extends HTMLElement {
@@ -42,6 +42,8 @@ export class ConeFlipbookElement extends HTMLElement {
   /** Pages shown side by side; null until `ready`. Setting it sets the display attribute (applied live). */
   get display(): 'single' | 'double' | null;
   set display(value: 'single' | 'double' | 'auto' | null | undefined);
+  /** With display 'auto', the narrowest page shown two at a time, CSS px (the min-page-width attribute, applied live). */
+  minPageWidth: FlipbookOptions['minPageWidth'];
   /**
    * Every option with an attribute is a property too (frameworks that set properties, such as Svelte
    * and Angular). A value no attribute can hold is kept as given, read back as given and wins over the

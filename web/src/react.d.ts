@@ -28,6 +28,10 @@ export interface FlipbookEventProps {
   onPrint?: (event: FlipbookEventMap['print']) => void;
   /** A reader copied a link to a passage they selected (a PDF book's text layer). */
   onPassageLink?: (event: FlipbookEventMap['passagelink']) => void;
+  /** The book shows one page instead of two, or two instead of one (display 'auto' chose again, or the display prop changed). */
+  onDisplayChange?: (event: FlipbookEventMap['displaychange']) => void;
+  /** A tap or click on the middle of the book, which turns nothing (a reader's bar can come back on it). */
+  onMiddleTap?: (event: FlipbookEventMap['middletap']) => void;
   /** The book could not be built, or a prop was refused (a TypeError naming it); without it, the console hears. */
   onError?: (event: CustomEvent<{ error: Error }>) => void;
 }

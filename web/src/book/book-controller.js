@@ -142,7 +142,7 @@ export class BookController extends EventTarget {
     Object.assign(this._settings, checkLiveOptions(options, this._settings.pages));
     const { lighting, shadows, gutter, thickness } = this._settings;
     this._surface.setOptions({ lighting, shadows, gutter, thickness });
-    if ('display' in options) this._relayout();
+    if ('display' in options || 'minPageWidth' in options) this._relayout();
     this._sound.update();
   }
 
@@ -224,7 +224,7 @@ export class BookController extends EventTarget {
     const [companionModules, EdgeMarks] = await Promise.all([loadCompanions(this._settings), loadEdgeMarks(this._settings)]);
     const { width, height } = this._shell.root.getBoundingClientRect();
     this._layoutSize = { width, height };
-    this._surface = this._makeSurface(displayFor(this._settings.display, this._layoutSize));
+    this._surface = this._makeSurface(displayFor(this._settings.display, this._layoutSize, this._settings));
     followSurface(this._port);  // the pages a moving leaf shows, images lost with a context
     if (EdgeMarks) this._layers.push(new EdgeMarks(this, this._port));  // tabs and ticks on the fore-edge
     this._surface.jumpTo(this._surface.positionOfPage(openingPageOf(companionModules, this._settings, this.pageCount)));
@@ -318,17 +318,17 @@ export class BookController extends EventTarget {
     if (proceed && link.toPage !== undefined) this.flip(link.toPage).catch(() => {});
   }
 
-  // ---- size and pixel ratio ------------------------------------------------------------------
-  // The container or the pixel ratio changed: switch single/double for 'auto' (same surface, same
-  // page), draw at the new size, and once resizing rests bring the images to the size now wanted.
+  // Size, pixel ratio or display options changed: 'auto' chooses again (layout.js displayFor, from the
+  // settings' minPageWidth, direction, pageAspect); a switch keeps surface and page and says `displaychange`.
   _relayout() {
-    const display = displayFor(this._settings.display, this._layoutSize);
-    if (display !== this.display) {
+    const [display, previous] = [displayFor(this._settings.display, this._layoutSize, this._settings), this.display];
+    if (display !== previous) {
       this._surface.setDisplay(display);
       this._store.update();
       this._showOpenPages();
+      this._emit('displaychange', { display, previous });
     }
-    this._surface.sizeChanged();
+    this._surface.sizeChanged();  // drawn at the new size; the images refit once resizing rests
     this._refitSoon();
     this._layoutLayers();
     this._emit('resize', { ...this._layoutSize, display: this.display });

@@ -28,6 +28,10 @@ export const EVENT_DETAILS = {
   print: ['pages'],
   // textlayer (issue 23)
   passagelink: ['page', 'text', 'url', 'copied'],
+  // phone (issue 28): the display in effect changed (display 'auto' chose again, or setOptions); a tap or
+  // click on the middle of the book (CSS px from the book element's corner), which turns nothing.
+  displaychange: ['display', 'previous'],
+  middletap: ['x', 'y'],
 };
 /** Every event a book dispatches. */
 export const BOOK_EVENTS = Object.keys(EVENT_DETAILS);

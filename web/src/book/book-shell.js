@@ -54,13 +54,17 @@ export function createShell(container, { label, direction }) {
   root.setAttribute('aria-roledescription', 'book');
   root.setAttribute('aria-label', label);
   root.setAttribute('aria-keyshortcuts', keyShortcuts(direction));
-  root.style.cssText = 'position:relative;width:100%;height:100%';
+  // touch-action on the whole book (the text and link layers, HTML pages): the browser may scroll the
+  // host page across the turn, never pinch-zoom it or zoom it on a double tap over the book.
+  const touchAction = directionFacts(direction).touchAction;
+  root.style.cssText = `position:relative;width:100%;height:100%;touch-action:${touchAction}`;
 
   const canvas = document.createElement('canvas');
   canvas.setAttribute('aria-hidden', 'true');
-  // The browser keeps the scrolling and zooming that does not turn pages (swipes go along the turn).
-  // Pinches stay with the book (it zooms itself); a stroke across the turn still scrolls the page.
-  canvas.style.cssText = `display:block;width:100%;height:100%;touch-action:${directionFacts(direction).touchAction}`;
+  // The browser keeps the scrolling that does not turn pages (swipes go along the turn): a stroke across
+  // the turn still scrolls the host page. Pinches and double taps stay with the book (it zooms itself);
+  // zoomed in, book-zoom.js makes it 'none' (one finger pans the book).
+  canvas.style.cssText = `display:block;width:100%;height:100%;touch-action:${touchAction}`;
 
   const status = document.createElement('div');
   status.setAttribute('role', 'status');

@@ -194,6 +194,12 @@ export function attachBookInput(book) {
         book.emit('turncancel', { page: book.page() });
       }
     },
+    // A tap or click on the middle third of the book (input-taps.js): `middletap`, at CSS px from the book element's corner.
+    middleTapped: (clientX, clientY) => {
+      if (book.destroyed()) return;
+      const box = book.root.getBoundingClientRect();
+      book.emit('middletap', { x: clientX - box.left, y: clientY - box.top });
+    },
     // A corner lifts as the mouse hovers it: the live layers give way to the page's texture.
     hintStarted: book.hideLayers,
     // A corner lifted by hovering fell back: the open pages are those from before it again.

@@ -61,8 +61,16 @@ export interface FlipbookOptions {
   pdf?: string | ArrayBuffer | Uint8Array;
   /** URL of pdf.js's worker module, where `import.meta.resolve('pdfjs-dist/build/pdf.worker.min.mjs')` cannot find it. */
   pdfWorkerSrc?: string;
-  /** 'auto' (default) shows two pages when the container is wider than 1.2x its height. */
+  /**
+   * 'auto' (default) shows two pages where each page of the spread would be at least `minPageWidth`
+   * CSS px wide (across the turn), else one; it chooses again as the container resizes (`displaychange`).
+   */
   display?: 'single' | 'double' | 'auto';
+  /**
+   * With display 'auto': the narrowest page (CSS px, across the turn) shown two at a time; default 300.
+   * Changes live through setOptions.
+   */
+  minPageWidth?: number;
   /** 'ltr' (default), 'rtl' (spine on the right), 'vertical' (spine at the top, a calendar). */
   direction?: 'ltr' | 'rtl' | 'vertical';
   /** Page to open at; default 0. */
@@ -341,6 +349,16 @@ export interface FlipbookEventMap {
    * `hash: true` at that page and marks the passage; `copied` says whether it reached the clipboard.
    */
   passagelink: CustomEvent<{ page: number; text: string; url: string; copied: boolean }>;
+  // phone (issue 28)
+  /** The display in effect changed: display 'auto' chose again (a resize, a rotation) or setOptions changed it. */
+  displaychange: CustomEvent<{ display: 'single' | 'double'; previous: 'single' | 'double' }>;
+  /**
+   * A tap or click on the middle third of the book (of the page in single display; the band within a
+   * sixth of the spread's width either side of the spine in double), which turns nothing: x, y in CSS
+   * px from the book element's top-left corner. Not for a double tap or click, a drag, a swipe, nor
+   * while zoomed in; whatever `turnArea` is.
+   */
+  middletap: CustomEvent<{ x: number; y: number }>;
 }
 
 /** What the page sound (the `sound` option) is doing. */
@@ -448,8 +466,8 @@ export class BookController extends EventTarget {
   removePages(from: number, count?: number): Promise<PagesChangeDetail>;
   /** Puts `page` in the place of page `index`, as insertPages applies; a page on screen shows its old image until the new one is ready. */
   replacePage(index: number, page: PageSource | HTMLElement | PageEntry): Promise<PagesChangeDetail>;
-  /** Switches the effects, the thickness, the display or the sound on a live book (same page); any other option is a TypeError (it needs a new book). */
-  setOptions(options: Pick<FlipbookOptions, 'lighting' | 'shadows' | 'gutter' | 'thickness' | 'display' | 'sound' | 'muted'>): void;
+  /** Switches the effects, the thickness, the display (and minPageWidth) or the sound on a live book (same page); any other option is a TypeError (it needs a new book). */
+  setOptions(options: Pick<FlipbookOptions, 'lighting' | 'shadows' | 'gutter' | 'thickness' | 'display' | 'minPageWidth' | 'sound' | 'muted'>): void;
   /** The page sound is muted (the `muted` option); setting it is setOptions({ muted }) (TypeError unless a boolean). */
   muted: boolean;
   /** What the page sound is doing, a snapshot for tools and tests; null after destroy(). */

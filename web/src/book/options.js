@@ -2,7 +2,7 @@
 // a TypeError that names the option and says what is allowed, before anything is built.
 import { BOOK_EVENTS } from './book-events.js';
 import { DIRECTIONS } from '../engine/direction.js';
-import { MAX_LEAF_THICKNESS, MAX_PAGES } from '../engine/layout.js';
+import { AUTO_MIN_PAGE_WIDTH, MAX_LEAF_THICKNESS, MAX_PAGES } from '../engine/layout.js';
 import { TURN_AREAS } from '../input/turn-area.js';
 
 const BOOLEAN = (v) => typeof v === 'boolean' || 'true or false';
@@ -12,6 +12,8 @@ const OPTION_CHECKS = {
   pages: (v) => (Array.isArray(v) && v.length > 0 && v.length <= MAX_PAGES)
     || `a non-empty array of at most ${MAX_PAGES} page sources`,
   display: (v) => ['single', 'double', 'auto'].includes(v) || "'single', 'double' or 'auto'",
+  // phone (issue 28): display 'auto' shows two pages only where each is at least this wide (layout.js displayFor).
+  minPageWidth: (v) => (Number.isFinite(v) && v > 0) || 'a positive number of CSS pixels',
   direction: (v) => DIRECTIONS.includes(v) || DIRECTIONS.map((d) => `'${d}'`).join(', ').replace(/, ([^,]+)$/, ' or $1'),
   startPage: (v) => (Number.isInteger(v) && v >= 0) || 'a page index (a whole number from 0)',
   duration: (v) => (Number.isFinite(v) && v > 0) || 'a positive number of milliseconds',
@@ -59,14 +61,14 @@ export const PDF_OPTIONS = ['pdf', 'pdfWorkerSrc'];
 /** Every option Flipbook.create takes: FlipbookOptions in flipbook.d.ts (tests/node/typings.test.mjs checks it). */
 export const CREATE_OPTIONS = [...OPTION_NAMES, ...PDF_OPTIONS];
 export const DEFAULTS = {
-  display: 'auto', direction: 'ltr', startPage: 0, duration: 1000, schedule: 'paper', center: true, hardCovers: false,
+  display: 'auto', minPageWidth: AUTO_MIN_PAGE_WIDTH, direction: 'ltr', startPage: 0, duration: 1000, schedule: 'paper', center: true, hardCovers: false,
   lighting: true, shadows: true, gutter: true, thickness: true, loadWindow: 4, label: 'Book', fallback: true, hash: false,
   autoplay: false, sound: false, muted: false, antialias: 'auto',
   controls: false,
   textLayer: true,
 };
 /** Options a live book takes through setOptions(); the others need a new book. */
-export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter', 'thickness', 'display', 'sound', 'muted'];
+export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter', 'thickness', 'display', 'minPageWidth', 'sound', 'muted'];
 const PAGE_ENTRY_KEYS = ['src', 'html', 'alt', 'hard', 'zoomSrc', 'links'];
 const PAGE_SOURCES = 'a URL string, HTMLImageElement, HTMLCanvasElement, ImageBitmap, Blob, '
   + 'a function returning one of these (or a Promise of one), or an HTML element (an HTML page)';

@@ -63,6 +63,7 @@ function parseOutline(raw, attribute) {
 export const ATTRIBUTES = {
   pages: ['pages', parseList],
   display: ['display', parseText],
+  'min-page-width': ['minPageWidth', parseNumber],
   direction: ['direction', parseText],
   'start-page': ['startPage', parseNumber],
   duration: ['duration', parseNumber],

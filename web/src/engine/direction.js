@@ -35,6 +35,18 @@ export function freeEdge(direction, turned) {
   return turned === turnedFirst ? 'left' : 'right';
 }
 
+/**
+ * Which third of a box, along the turn, a point at (px, py) from its corner falls on: 'forward' (the
+ * third on the forward half's side: a single page's free edge), 'backward' (the other end: its spine),
+ * or 'middle' (edges included).
+ */
+export function thirdOf(direction, width, height, px, py) {
+  const { vertical, forwardHalf } = directionFacts(direction);
+  const [at, span] = vertical ? [py, height] : [px, width];
+  if (at >= span / 3 && at <= (2 * span) / 3) return 'middle';
+  return halfOf(direction, width, height, px, py) === forwardHalf ? 'forward' : 'backward';
+}
+
 /** Which half of a box a point at (px, py) from its corner falls on, as forwardHalf names halves. */
 export function halfOf(direction, width, height, px, py) {
   if (directionFacts(direction).vertical) return py < height / 2 ? 'top' : 'bottom';

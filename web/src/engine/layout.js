@@ -11,15 +11,30 @@ export { MAX_LEAF_THICKNESS, MAX_PAGES, MAX_TURNS_IN_FLIGHT, MAX_ZOOM, TURN_QUEU
 export const PAPER = `rgb(${PAPER_RED}, ${PAPER_GREEN}, ${PAPER_BLUE})`;
 /** The engine's default page: width (spine to free edge) over height (along the spine). */
 export const DEFAULT_PAGE_ASPECT = DEFAULT_PAGE_WIDTH / DEFAULT_PAGE_HEIGHT;
-/** Containers wider than this times their height show two pages in display 'auto' (a JS-only rule). */
-export const AUTO_DOUBLE_ASPECT = 1.2;
 /** Whether a view magnification counts as zoomed in (above 1 by more than rounding). */
 export const isZoomed = (scale) => scale > 1.001;
+/**
+ * Display 'auto' shows two pages only where each would be at least this many CSS px across the turn
+ * (the `minPageWidth` option's default): narrower, a spread is unreadable and one page shows instead.
+ */
+export const AUTO_MIN_PAGE_WIDTH = 300;
 
-/** 'single' or 'double' for a display option ('single' | 'double' | 'auto') in a container of that size. */
-export function displayFor(option, { width, height }) {
+/**
+ * 'single' or 'double' for a display option ('single' | 'double' | 'auto') in a container of that size
+ * (CSS px). 'auto' is 'double' where each page of a spread, laid as restingRect lays it, would be at
+ * least `minPageWidth` CSS px wide across the turn (its height on screen for a vertical book), else
+ * 'single'. `book`: { pageAspect, direction, minPageWidth } (defaults: the engine's page, 'ltr', 300).
+ */
+export function displayFor(option, size, book = {}) {
   if (option !== 'auto') return option;
-  return width / Math.max(1, height) > AUTO_DOUBLE_ASPECT ? 'double' : 'single';
+  const { pageAspect = DEFAULT_PAGE_ASPECT, direction = 'ltr', minPageWidth = AUTO_MIN_PAGE_WIDTH } = book;
+  return spreadPageWidth(size, { pageAspect, direction }) >= minPageWidth ? 'double' : 'single';
+}
+
+/** How wide (across the turn, in `size`'s unit) each page of a two-page spread lies in a view of `size`. */
+export function spreadPageWidth(size, { pageAspect = DEFAULT_PAGE_ASPECT, direction = 'ltr' } = {}) {
+  const rect = restingRect(size, { display: 'double', direction, pageAspect });
+  return directionFacts(direction).vertical ? rect.height / 2 : rect.width / 2;
 }
 
 // ---- positions: spreads (double) or pages (single), as cpp/core/book.cpp ------------------------------

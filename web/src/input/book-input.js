@@ -3,7 +3,7 @@
 // small port, the same for either surface; none of them reaches into the controller.
 import { listenForKeys } from './input-keys.js';
 import { listenForTaps } from './input-taps.js';
-import { listenForZoom } from './zoom-input.js';
+import { doubleTapScale, listenForZoom } from './zoom-input.js';
 import { PointerDrag } from './pointer-drag.js';
 
 /**
@@ -13,7 +13,8 @@ import { PointerDrag } from './pointer-drag.js';
  *           turn: (direction: string) => void, jump: (end: 'first'|'last') => void,
  *           turnsFrom: (clientX: number, clientY: number) => boolean,
  *           dragStarted: (direction: string) => void, dragEnded: (completed: boolean) => void,
- *           hintStarted: () => void, hintEnded: () => void }} book  what the controller lets input do
+ *           hintStarted: () => void, hintEnded: () => void,
+ *           middleTapped: (clientX: number, clientY: number) => void }} book  what the controller lets input do
  * @returns {{ stop: () => void, readonly pendingClick: boolean, clickWaitMs: number }}
  */
 export function attachInput({ canvas, element, surface, direction }, book) {
@@ -37,6 +38,9 @@ export function attachInput({ canvas, element, surface, direction }, book) {
     restingRect: () => surface.restingRect(),
     strokeWasDrag: () => Boolean(drag?.strokeWasDrag),
     turnsFrom: book.turnsFrom,
+    middleTapped: book.middleTapped,
+    // A touch double tap zooms in about the point, or back out, as a double-click does.
+    doubleTapped: (x, y) => book.zoomAbout(doubleTapScale(book.zoom()), x, y),
   };
   const taps = listenForTaps(canvas, port);
   const stopZoom = listenForZoom(canvas, {

@@ -22,7 +22,8 @@ export function swipeDirection(dx, dy, direction) {
 }
 
 /**
- * Calls `tap(clientX, clientY)` for a primary mouse click or a touch/pen tap on `element`, and
+ * Calls `tap(clientX, clientY, kind)` for a primary mouse click (kind 'click') or a touch/pen tap
+ * ('touch', pen included) on `element`, and
  * `swipe(dx, dy, x, y)` (CSS px, end minus start; where it started) for a touch/pen stroke of SWIPE_MIN or more. A second
  * finger cancels the stroke (pinch-zoom is not a swipe). Returns a function that stops listening.
  */
@@ -47,7 +48,7 @@ export function listenForTapsAndSwipes(element, { tap, swipe }) {
     const dx = event.clientX - x;
     const dy = event.clientY - y;
     const elapsed = event.timeStamp - time;
-    if (Math.hypot(dx, dy) <= TAP_SLOP && elapsed <= TAP_MAX_MS) tap(x, y);
+    if (Math.hypot(dx, dy) <= TAP_SLOP && elapsed <= TAP_MAX_MS) tap(x, y, 'touch');
     else if (Math.max(Math.abs(dx), Math.abs(dy)) >= SWIPE_MIN) swipe(dx, dy, x, y);
   };
   const onPointerCancel = (event) => {

@@ -1,10 +1,15 @@
 // Zoom and pan input for a book's canvas: Ctrl/⌘ + wheel (and trackpad pinch, which browsers send as
-// Ctrl + wheel), two-finger pinch, double-click, and dragging to pan while zoomed. It only reads the
-// DOM; what a zoom or a pan does is the book's (book/book-zoom.js, through its surface).
+// Ctrl + wheel), two-finger pinch, double-click (a touch double tap is found by input-taps.js), and
+// dragging to pan while zoomed. It only reads the DOM; what a zoom or a pan does is the book's
+// (book/book-zoom.js, through its surface).
 import { isZoomed } from '../engine/layout.js';
 
 const WHEEL_ZOOM_PER_PIXEL = 0.0025;  // zoom factor exp(-deltaY * this): a notch of 100 px is about 1.28x
 const DOUBLE_CLICK_ZOOM = 2;
+const CLICK_AFTER_TOUCH_MS = 800;  // a dblclick this soon after a touch is the browser's echo of a double tap
+
+/** The scale a double-click or double tap asks for from `scale`: DOUBLE_CLICK_ZOOM, or back to 1 when zoomed. */
+export const doubleTapScale = (scale) => (isZoomed(scale) ? 1 : DOUBLE_CLICK_ZOOM);
 
 /**
  * @param {HTMLCanvasElement} canvas
@@ -16,6 +21,7 @@ export function listenForZoom(canvas, book) {
   const touches = new Map();  // pointerId -> { x, y } for fingers down
   let pinch = null;           // { distance, scale } at the start of a two-finger pinch
   let pan = null;             // { id, x, y } while one pointer pans a zoomed view
+  let lastTouch = -Infinity;  // timeStamp of the last touch or pen pointerup (its double taps are input-taps.js's)
 
   const onWheel = (event) => {
     if (!event.ctrlKey && !event.metaKey) return;  // a plain wheel scrolls the page as usual
@@ -25,8 +31,10 @@ export function listenForZoom(canvas, book) {
   };
   const onDoubleClick = (event) => {
     event.preventDefault();
+    // A double tap already zoomed (input-taps.js); the dblclick a browser may send after it must not undo it.
+    if (event.sourceCapabilities?.firesTouchEvents || event.timeStamp - lastTouch < CLICK_AFTER_TOUCH_MS) return;
     book.doubleClicked?.();
-    book.zoomAbout(isZoomed(book.scale()) ? 1 : DOUBLE_CLICK_ZOOM, event.clientX, event.clientY);
+    book.zoomAbout(doubleTapScale(book.scale()), event.clientX, event.clientY);
   };
   const onDown = (event) => {
     if (event.pointerType === 'touch') {
@@ -58,6 +66,7 @@ export function listenForZoom(canvas, book) {
     }
   };
   const onUp = (event) => {
+    if (event.pointerType === 'touch' || event.pointerType === 'pen') lastTouch = event.timeStamp;
     touches.delete(event.pointerId);
     if (touches.size < 2) pinch = null;
     if (pan && event.pointerId === pan.id) pan = null;
