@@ -284,7 +284,7 @@ test('browser: bad options reach a TypeError naming the option and what it allow
   expect(messages.loadWindow).toBe("TypeError: conecurl: option 'loadWindow' must be a whole number of pages from 1, got -2");
   expect(messages.entry).toBe("TypeError: conecurl: option 'pages[1].hard' must be true or false; got \"yes\"");
   // Every option the book knows, in the order options.js checks them (the list lives there alone).
-  expect(messages.optionNames.slice(0, 3)).toEqual(['pages', 'display', 'direction']);
+  expect(messages.optionNames.slice(0, 4)).toEqual(['pages', 'display', 'minPageWidth', 'direction']);
   expect(messages.unknown).toBe(`TypeError: conecurl: unknown option 'colour' (allowed: ${messages.optionNames.join(', ')})`);
   expect(messages.staticLabel).toBe("TypeError: conecurl: option 'label' must be a non-empty string, got 42");
   expect(messages.live).toBe("TypeError: conecurl: option 'gutter' must be true or false, got \"off\"");
