@@ -1,0 +1,41 @@
+// Browser (phone): a thumb's drag in single display completes the turn when let go past the middle of
+// the page and falls back before it (cpp/core/page_drag.cpp shouldCompleteTurn), with CDP touch.
+import { test, expect } from '@playwright/test';
+import { openReady } from './helpers.js';
+import { touchscreen } from './phone.js';
+
+const FIXTURE = '/tests/browser/fixtures/flipbook-fixture.html';
+
+/** A single-display book filling the phone's viewport at page 2 of 8; the open page's viewport rect. */
+async function openPhoneBook(page, direction) {
+  await openReady(page, FIXTURE);
+  return page.evaluate(async (direction) => {
+    const container = document.getElementById('container');
+    container.style.width = `${innerWidth}px`;
+    container.style.height = `${innerHeight}px`;
+    await window.openBook({ pages: 8, display: 'single', startPage: 2, direction, duration: 300 });
+    await window.book.whenIdle();
+    window.events = [];
+    for (const type of ['turnstart', 'turned', 'turncancel']) window.book.addEventListener(type, () => window.events.push(type));
+    const canvas = window.book.surface.canvas.getBoundingClientRect();
+    const [open] = window.book.openPagePlaces();
+    return { x: canvas.left + open.x, y: canvas.top + open.y, width: open.width, height: open.height };
+  }, direction);
+}
+
+for (const direction of ['ltr', 'rtl']) {
+  for (const [fromSpine, ending, page] of [[0.4, 'turned', 3], [0.6, 'turncancel', 2]]) {
+    test(`browser (phone): single display, ${direction}, a touch drag from the free edge let go at ${fromSpine} of the page from the spine, held still, ends in ${ending}`, async ({ page: tab }) => {
+      const open = await openPhoneBook(tab, direction);
+      // The spine is the page's left edge (ltr) or its right edge (rtl); the grip starts 2 px inside the
+      // free edge at 80% of the height, where a corner grip starts. A horizontal stroke: the canvas pans y.
+      const at = (f) => (direction === 'ltr' ? open.x + f * open.width : open.x + open.width - f * open.width);
+      const y = open.y + 0.8 * open.height;
+      const touch = await touchscreen(tab);
+      await touch.drag({ x: at(1) + (direction === 'ltr' ? -2 : 2), y }, { x: at(fromSpine), y }, { holdMs: 150 });
+      await tab.waitForFunction((ending) => window.events.includes(ending), ending);
+      await tab.evaluate(() => window.settle());
+      expect(await tab.evaluate(() => ({ page: window.book.page, events: window.events }))).toEqual({ page, events: ['turnstart', ending] });
+    });
+  }
+}
