@@ -10,9 +10,13 @@ const FIXTURE = '/tests/browser/fixtures/flipbook-fixture.html';
 async function openPhoneBook(page, options = {}) {
   await openReady(page, FIXTURE);
   return page.evaluate(async (options) => {
+    // The fixture has no viewport meta: a mobile browser would lay it out 980 px wide. A phone's page has
+    // one, and a container no wider than the screen (wider content widens the layout viewport).
     const container = document.getElementById('container');
-    container.style.width = `${innerWidth}px`;
-    container.style.height = `${innerHeight}px`;
+    Object.assign(container.style, { width: '100vw', height: '100vh' });
+    const meta = Object.assign(document.createElement('meta'), { name: 'viewport', content: 'width=device-width, initial-scale=1' });
+    document.head.append(meta);
+    await new Promise((resolve) => { const check = () => (innerWidth === screen.width ? resolve() : requestAnimationFrame(check)); check(); });
     await window.openBook({ pages: 8, display: 'single', startPage: 2, ...options });
     await window.book.whenIdle();
     const canvas = window.book.surface.canvas.getBoundingClientRect();
