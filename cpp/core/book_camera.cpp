@@ -15,6 +15,8 @@ namespace {
 constexpr double kFieldOfViewY = 24.0 * 3.14159265358979323846 / 180.0;  // mild: a lift reads as one
 }  // namespace
 
+double frameMargin(Display display) { return display == Display::Single ? kSingleFrameMargin : kFrameMargin; }
+
 BookCamera bookCamera(const Book& book, int width, int height, bool settled) {
     return bookCamera(book.config(), width, height, book.zoom(), settled ? book.settledCenterShift() : book.centerShift());
 }
@@ -26,8 +28,9 @@ BookCamera bookCamera(const BookConfig& c, int width, int height, const ViewZoom
     const ViewFrame frame = viewFrameFor(c.display, c.binding, c.pageWidth, c.pageHeight);
     const double aspect = static_cast<double>(camera.width) / camera.height;
     const double tanHalf = std::tan(kFieldOfViewY * 0.5);
-    const double halfW = frame.halfExtent.x * kFrameMargin;
-    const double halfH = frame.halfExtent.y * kFrameMargin;
+    const double margin = frameMargin(c.display);
+    const double halfW = frame.halfExtent.x * margin;
+    const double halfH = frame.halfExtent.y * margin;
     const double distance = std::max(halfH / tanHalf, halfW / (tanHalf * aspect));
     const glm::dvec2 moved = frame.center + shift * unturnedSide(c.binding);
     const glm::dvec3 center(moved.x, moved.y, 0.0);

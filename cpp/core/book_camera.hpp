@@ -21,6 +21,11 @@ struct BookCamera {
     double magnification = 1.0;  // worst case for a leaf lifted towards the eye
 };
 
+// How much larger than the view frame the camera's picture is, in the dimension the box limits: a
+// spread keeps room for leaves lifting up (kFrameMargin); a single page fills its box (a phone's
+// screen is the book), and a lifting leaf may leave the canvas (kSingleFrameMargin).
+double frameMargin(Display display);
+
 // A mild perspective looking straight down at the view frame of the book, with room around it for
 // leaves lifting up, magnified by `zoom`. Sizes below 1 pixel count as 1.
 // `shift` moves the view along the spine's normal, towards the unturned side (Book::centerShift()).

@@ -47,10 +47,36 @@ StackDepth stackDepth(int leaves, bool topHard, bool bottomHard, double leafThic
     return depth;
 }
 
+double singleStackRoom(const BookConfig& config) {
+    return 0.5 * (kSingleFrameMargin - 1.0) * std::min(config.pageWidth, config.pageHeight);
+}
+
+namespace {
+
+// `depth` squeezed, every layer alike, to at most `room`.
+StackDepth fitted(StackDepth depth, double room) {
+    const double total = depth.total();
+    if (!(total > room)) return depth;
+    const double k = room / total;
+    depth.topBoard *= k;
+    depth.paper *= k;
+    depth.bottomBoard *= k;
+    depth.leafThickness *= k;
+    return depth;
+}
+
+}  // namespace
+
 Stacks bookStacks(const BookConfig& config, const StackLeaves& leaves, double leafThicknessOfWidth) {
     const double w = config.pageWidth;
-    return Stacks{stackDepth(leaves.turned, leaves.turnedTopHard, leaves.turnedBottomHard, leafThicknessOfWidth, w),
+    Stacks stacks{stackDepth(leaves.turned, leaves.turnedTopHard, leaves.turnedBottomHard, leafThicknessOfWidth, w),
                   stackDepth(leaves.unturned, leaves.unturnedTopHard, leaves.unturnedBottomHard, leafThicknessOfWidth, w)};
+    if (config.display == Display::Single) {
+        const double room = singleStackRoom(config);
+        stacks.turned = fitted(stacks.turned, room);
+        stacks.unturned = fitted(stacks.unturned, room);
+    }
+    return stacks;
 }
 
 namespace {

@@ -55,6 +55,10 @@ struct Stacks {
     StackDepth turned;
     StackDepth unturned;
 };
+// In single display the page fills its box, and a stack takes what the box has left around it: the
+// band the frame margin leaves on every side whatever the box's shape (half the margin's excess of the
+// page's smaller side), its layers squeezed in proportion when deeper. It never shrinks the page.
+double singleStackRoom(const BookConfig& config);
 Stacks bookStacks(const BookConfig& config, const StackLeaves& leaves, double leafThicknessOfWidth);
 
 // Triangles of the stacks' edge faces, 8 floats a vertex: world x y z, s (depth in paper leaves from

@@ -74,6 +74,8 @@ std::vector<EdgeMarkShape> edgeMarkShapes(const Book& book, const std::vector<Ed
         for (int i = 0; i < static_cast<int>(marks.size()); ++i) {
             const EdgeMark& mark = marks[i];
             if (mark.kind != kind || mark.page < 0 || mark.page >= c.pageCount) continue;
+            // A tab sticks out past the block; a single page fills its box, which has no room for it.
+            if (kind == EdgeMarkKind::Tab && c.display == Display::Single) continue;
             LeafEdge edge;
             if (!leafEdge(book, stacks, leafOfPage(c, mark.page), edge)) continue;
             EdgeMarkShape shape;

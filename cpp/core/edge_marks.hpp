@@ -59,7 +59,8 @@ struct EdgeMarkShape {
     std::array<glm::dvec3, 4> corners{};
 };
 // Shapes of the marks that show now, ticks first (tabs lie over them). Tabs are ordered by page for
-// their slots (ties by their order given); marks on leaves not shown are left out.
+// their slots (ties by their order given); marks on leaves not shown are left out, and so are tabs in
+// single display (the page fills its box: no room past the block's edge for a tab to stick out).
 std::vector<EdgeMarkShape> edgeMarkShapes(const Book& book, const std::vector<EdgeMark>& marks);
 
 // The tabs' slots along the edge: how many there are (all tabs given, shown or not, so a tab keeps

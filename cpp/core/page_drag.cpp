@@ -381,7 +381,11 @@ bool shouldCompleteTurn(const Book& book, const BookCamera& camera, const Grip& 
     const double speed = ((toPage * glm::dvec4(later, 1.0)).x - x) / dt / c.pageWidth;  // pages per second
     if (speed < -kFlingPagesPerSecond) return true;
     if (speed > kFlingPagesPerSecond) return false;
-    return x < 0.0;
+    // Double display: past the spine. Single display, where the spine is the page's edge and a thumb
+    // cannot reach past it: past the middle of the page shown (the turned side is out of view, so a
+    // backward turn's page shown lies at x < 0 in its mirrored page space).
+    if (c.display == Display::Double) return x < 0.0;
+    return grip.backward ? x < -0.5 * c.pageWidth : x < 0.5 * c.pageWidth;
 }
 
 CurlParams hoverHintPose(const Book& book, const Grip& grip, double amount) {

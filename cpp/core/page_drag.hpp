@@ -51,7 +51,10 @@ DragPose solveSlidingDragPose(const Book& book, int width, int height, const Gri
                               const CurlParams& start);
 
 // On release at `pixel` moving at `velocity` (pixels per second): complete the turn when the pointer
-// is past the spine, unless flung back; fall back when short of it, unless flung on.
+// is past the line, unless flung back; fall back when short of it, unless flung on. The line is the
+// spine in double display, and the middle of the page shown in single display (a thumb holding a phone
+// cannot reach past the page's edge). A fling is a speed over 0.8 page widths a
+// second towards either side, whatever the display.
 bool shouldCompleteTurn(const Book& book, const BookCamera& camera, const Grip& grip, glm::dvec2 pixel,
                         glm::dvec2 velocity);
 

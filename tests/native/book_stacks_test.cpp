@@ -174,6 +174,32 @@ TEST(BookStacks, RightToLeftPutsTheTurnedStackOnTheRightAndSingleDisplayLeavesIt
     for (const Vertex& v : mesh) EXPECT_GE(v.x, 0.0);
 }
 
+TEST(BookStacks, SingleDisplaySqueezesAStackIntoTheBandTheFrameMarginLeaves) {
+    std::vector<bool> hard(400, false);
+    hard[0] = hard[399] = true;
+    Book single = makeBook(400, Display::Single, Binding::Left, hard);
+    single.jumpTo(10);
+    const double room = singleStackRoom(single.config());
+    EXPECT_NEAR(room, 0.5 * (kSingleFrameMargin - 1.0) * std::min(single.config().pageWidth, single.config().pageHeight), 1e-12);
+    const Stacks deep = bookStacks(single.config(), stackLeaves(single), kLeaf);
+    EXPECT_NEAR(deep.unturned.total(), room, 1e-12);
+    // Squeezed in proportion: a board stays a board, the page-edge lines stay one a leaf.
+    const StackLeaves leaves = stackLeaves(single);  // 390 leaves unturned, the last a board
+    const StackDepth natural = stackDepth(leaves.unturned, leaves.unturnedTopHard, leaves.unturnedBottomHard, kLeaf,
+                                          single.config().pageWidth);
+    ASSERT_GT(natural.bottomBoard, 0.0);
+    const double k = room / natural.total();
+    EXPECT_NEAR(deep.unturned.bottomBoard, natural.bottomBoard * k, 1e-12);
+    EXPECT_NEAR(deep.unturned.leafThickness, natural.leafThickness * k, 1e-12);
+    double far = 0.0;
+    for (const Vertex& v : vertices(stackMesh(single.config(), deep))) far = std::max(far, v.x - single.config().pageWidth);
+    EXPECT_LE(far, room + 1e-6);
+    // A thin stack that fits keeps its depth.
+    single.jumpTo(398);
+    const Stacks thin = bookStacks(single.config(), stackLeaves(single), kLeaf);
+    EXPECT_NEAR(thin.unturned.total(), stackDepth(2, false, true, kLeaf, single.config().pageWidth).total(), 1e-12);
+}
+
 TEST(BookStacks, PageEdgeLinesCountTheLeavesAndBoardsAreMarked) {
     std::vector<bool> hard(20, false);
     hard[18] = hard[19] = true;

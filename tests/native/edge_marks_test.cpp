@@ -113,6 +113,17 @@ TEST(EdgeMarks, SingleDisplayShowsOnlyTheUnturnedBlock) {
     EXPECT_EQ(shapes[0].kind, EdgeMarkKind::Tick);
 }
 
+TEST(EdgeMarks, SingleDisplayFoldsTheTabsAwayAndKeepsTheTicks) {
+    Book book = makeBook(30, Display::Single);
+    book.jumpTo(10);
+    const std::vector<EdgeMark> marks{{20, EdgeMarkKind::Tab}, {25, EdgeMarkKind::Tick}};
+    const auto shapes = edgeMarkShapes(book, marks);
+    ASSERT_EQ(shapes.size(), 1u);
+    EXPECT_EQ(shapes[0].kind, EdgeMarkKind::Tick);
+    // The tick lies within the squeezed block, in the band around the page (book_stacks.hpp).
+    for (const glm::dvec3& corner : shapes[0].corners) EXPECT_GE(corner.z, -singleStackRoom(book.config()) - 1e-9);
+}
+
 TEST(EdgeMarks, NoThicknessNoMarks) {
     BookConfig config;
     config.pageCount = 20;

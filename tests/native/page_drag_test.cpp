@@ -287,6 +287,60 @@ TEST(PageDragNative, ReleaseCompletesPastTheSpineOrWhenFlungOnAndFallsBackOtherw
     EXPECT_FALSE(shouldCompleteTurn(book, camera, *grip, shortOfSpine, towardSpine * 0.05));  // a slow drift
 }
 
+TEST(PageDragNative, SingleDisplayReleaseCompletesPastTheMiddleOfThePageOrWhenFlungOnForEverySpineAndDirection) {
+    for (Binding binding : {Binding::Left, Binding::Right, Binding::Top}) {
+        for (bool backward : {false, true}) {
+            Book book = makeBook(binding, Display::Single);
+            book.jumpTo(3);
+            const BookCamera camera = bookCamera(book.config(), 390, 780);
+            // Forward: the free edge near the bottom corner; backward: the spine-side quarter takes the previous leaf.
+            const auto grip = gripAt(book, camera, restingPixel(book, camera, false, {backward ? kW * 0.1 : kW * 0.98, kH * 0.2}));
+            ASSERT_TRUE(grip) << where(binding, false, backward);
+            ASSERT_EQ(grip->backward, backward) << where(binding, false, backward);
+            // Points on the page shown, by their distance from the spine: the turn's far side is the spine
+            // for a forward turn and the free edge for a backward one.
+            auto at = [&](double fromSpine) { return restingPixel(book, camera, false, {fromSpine * kW, kH * 0.2}); };
+            const dvec2 onFar = at(backward ? 0.6 : 0.4);   // let go past the middle
+            const dvec2 onNear = at(backward ? 0.4 : 0.6);  // let go before it
+            const dvec2 still(0.0, 0.0);
+            const dvec2 flingOn = (onFar - onNear) * 10.0;  // 2 page widths a second towards the far side
+            const std::string w = where(binding, false, backward);
+            EXPECT_TRUE(shouldCompleteTurn(book, camera, *grip, onFar, still)) << w;
+            EXPECT_FALSE(shouldCompleteTurn(book, camera, *grip, onNear, still)) << w;
+            EXPECT_TRUE(shouldCompleteTurn(book, camera, *grip, onNear, flingOn)) << w;
+            EXPECT_FALSE(shouldCompleteTurn(book, camera, *grip, onFar, -flingOn)) << w;
+            // The same fling threshold as double display: a slow drift (0.2 page widths a second) decides nothing.
+            EXPECT_FALSE(shouldCompleteTurn(book, camera, *grip, onNear, flingOn * 0.1)) << w;
+            EXPECT_TRUE(shouldCompleteTurn(book, camera, *grip, onFar, -flingOn * 0.1)) << w;
+        }
+    }
+}
+
+TEST(BookCameraNative, ASinglePageFillsItsBoxWhateverItsShapeAndASpreadKeepsItsMargin) {
+    // Phone boxes, portrait and landscape, and page shapes from tall to wide.
+    for (Binding binding : {Binding::Left, Binding::Right, Binding::Top}) {
+        for (dvec2 page : {dvec2(0.8, 1.0), dvec2(0.5, 1.0), dvec2(1.4, 1.0)}) {
+            for (dvec2 box : {dvec2(374, 468), dvec2(828, 300), dvec2(300, 300)}) {
+                BookConfig config;
+                config.pageCount = 10;
+                config.display = Display::Single;
+                config.binding = binding;
+                config.pageWidth = page.x;
+                config.pageHeight = page.y;
+                const BookCamera camera = bookCamera(config, static_cast<int>(box.x), static_cast<int>(box.y));
+                const PixelRect r = restingRect(camera, config);
+                // The dimension the box limits: the larger of the two fractions.
+                const double fill = std::max(r.width / box.x, r.height / box.y);
+                EXPECT_NEAR(fill, 1.0 / kSingleFrameMargin, 1e-9) << name(binding) << " " << page.x << " " << box.x;
+                EXPECT_GE(fill, 0.92);
+                config.display = Display::Double;
+                const PixelRect spread = restingRect(bookCamera(config, static_cast<int>(box.x), static_cast<int>(box.y)), config);
+                EXPECT_NEAR(std::max(spread.width / box.x, spread.height / box.y), 1.0 / kFrameMargin, 1e-9);
+            }
+        }
+    }
+}
+
 CurlParams flyingPose(const Book& book) {
     const BookFrame frame = book.frame();
     for (int i = 0; i < frame.count; ++i) {

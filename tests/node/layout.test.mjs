@@ -177,6 +177,30 @@ test('node: the engine keeps the limits and defaults layout.js exports (needs th
   assert.match(layout.PAPER, /^rgb\(\d{1,3}, \d{1,3}, \d{1,3}\)$/);
 });
 
+test('node: a single page fills its box to 1 / SINGLE_FRAME_MARGIN (at least 92%) in the dimension the box limits, on phone boxes, as the engine does (needs the wasm built)', () => {
+  const { FRAME_MARGIN, SINGLE_FRAME_MARGIN } = generated;
+  assert.ok(1 / SINGLE_FRAME_MARGIN >= 0.92, `SINGLE_FRAME_MARGIN ${SINGLE_FRAME_MARGIN} leaves the page under 92%`);
+  // The demo's box on a portrait and a landscape phone, and a square one; tall, default and wide pages.
+  for (const size of [{ width: 374, height: 468 }, { width: 828, height: 300 }, { width: 300, height: 300 }]) {
+    for (const page of [{}, { pageWidth: 0.5, pageHeight: 1 }, { pageWidth: 1.4, pageHeight: 1.1 }]) {
+      for (const direction of Object.keys(BINDING)) {
+        for (const display of ['single', 'double']) {
+          const shape = { pageCount: 8, display, direction };
+          if (page.pageWidth) shape.pageAspect = page.pageWidth / page.pageHeight;
+          const rect = layout.restingRect(size, shape, 2);
+          const where = `${display}, ${direction}, page ${page.pageWidth ?? 'default'}, ${size.width}x${size.height}`;
+          const fill = Math.max(rect.width / size.width, rect.height / size.height);
+          assert.ok(Math.abs(fill - 1 / (display === 'single' ? SINGLE_FRAME_MARGIN : FRAME_MARGIN)) < 1e-9, `${where}: fills ${fill}`);
+          withBook({ pageCount: 8, display, binding: BINDING[direction], ...page }, (book) => {
+            book.jumpTo(2);
+            assertRectClose(rect, book.restingRect(size.width, size.height), size, `${where}: restingRect`);
+          });
+        }
+      }
+    }
+  }
+});
+
 test('node: clampZoom treats non-finite values as no zoom, as the engine does', () => {
   // -0 (an offset clamped to -0 at scale 1, as std::clamp gives too) reads as 0.
   const clamped = (zoom) => Object.fromEntries(Object.entries(layout.clampZoom(zoom)).map(([key, value]) => [key, value + 0]));

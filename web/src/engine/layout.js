@@ -2,7 +2,7 @@
 // and the engine's constants for every JS module; tests/node/layout.test.mjs holds both to the engine.
 import {
   DEFAULT_PAGE_HEIGHT, DEFAULT_PAGE_WIDTH, FRAME_MARGIN, MAX_LEAF_THICKNESS, MAX_PAGES, MAX_TURNS_IN_FLIGHT, MAX_ZOOM, PAPER_BLUE,
-  PAPER_GREEN, PAPER_RED, TURN_QUEUED, TURN_REFUSED, TURN_STARTED,
+  PAPER_GREEN, PAPER_RED, SINGLE_FRAME_MARGIN, TURN_QUEUED, TURN_REFUSED, TURN_STARTED,
 } from '../../../dist/engine-constants.js';
 import { directionFacts } from './direction.js';
 
@@ -79,8 +79,9 @@ export function centerShift(position, { pageCount = 0, display = 'double', cente
 
 /**
  * The rectangle both pages of a spread (or the one page) occupy in a view of `size` ({ width, height },
- * any pixel unit), unzoomed: the view frame times FRAME_MARGIN fitted and centred, then moved by
- * centerShift() when a `position` is given. As the engine's restingRect.
+ * any pixel unit), unzoomed: the view frame times its margin (FRAME_MARGIN for a spread, the smaller
+ * SINGLE_FRAME_MARGIN for a single page) fitted and centred, then moved by centerShift() when a
+ * `position` is given. As the engine's restingRect.
  */
 export function restingRect(size, book = {}, position = undefined) {
   const { display = 'double', direction = 'ltr', pageAspect = DEFAULT_PAGE_ASPECT } = book;
@@ -88,7 +89,8 @@ export function restingRect(size, book = {}, position = undefined) {
   // A top spine (vertical) hangs the pages below it: the width runs down the canvas.
   const { vertical, turnedFirst } = directionFacts(direction);
   const [frameWidth, frameHeight] = vertical ? [1, across] : [across, 1];
-  const scale = Math.min(size.width / (frameWidth * FRAME_MARGIN), size.height / (frameHeight * FRAME_MARGIN));
+  const margin = display === 'double' ? FRAME_MARGIN : SINGLE_FRAME_MARGIN;  // as frameMargin() in book_camera.cpp
+  const scale = Math.min(size.width / (frameWidth * margin), size.height / (frameHeight * margin));
   const width = frameWidth * scale;
   const height = frameHeight * scale;
   // The camera moves towards the unturned side (right for ltr, left for rtl, down for vertical): the pages move the other way.

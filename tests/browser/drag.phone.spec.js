@@ -1,0 +1,53 @@
+// Browser (phone): a thumb's drag in single display completes the turn when let go past the middle of
+// the page and falls back before it (cpp/core/page_drag.cpp shouldCompleteTurn), with CDP touch.
+import { test, expect } from '@playwright/test';
+import { openReady } from './helpers.js';
+import { touchscreen } from './phone.js';
+
+const FIXTURE = '/tests/browser/fixtures/flipbook-fixture.html';
+
+/** A single-display book filling the phone's viewport at page 2 of 8; the open page's viewport rect. */
+async function openPhoneBook(page, direction) {
+  await openReady(page, FIXTURE);
+  return page.evaluate(async (direction) => {
+    // The fixture has no viewport meta: a mobile browser would lay it out 980 px wide. A phone's page has
+    // one, and a container no wider than the screen (wider content widens the layout viewport).
+    const container = document.getElementById('container');
+    Object.assign(container.style, { width: '100vw', height: '100vh' });
+    const meta = Object.assign(document.createElement('meta'), { name: 'viewport', content: 'width=device-width, initial-scale=1' });
+    document.head.append(meta);
+    await new Promise((resolve) => { const check = () => (innerWidth === screen.width ? resolve() : requestAnimationFrame(check)); check(); });
+    await window.openBook({ pages: 8, display: 'single', startPage: 2, direction, duration: 300 });
+    await window.book.whenIdle();
+    window.events = [];
+    for (const type of ['turnstart', 'turned', 'turncancel']) window.book.addEventListener(type, () => window.events.push(type));
+    const canvas = window.book.surface.canvas.getBoundingClientRect();
+    const [open] = window.book.openPagePlaces();
+    return { x: canvas.left + open.x, y: canvas.top + open.y, width: open.width, height: open.height };
+  }, direction);
+}
+
+for (const direction of ['ltr', 'rtl']) {
+  for (const [fromSpine, ending, page] of [[0.4, 'turned', 3], [0.6, 'turncancel', 2]]) {
+    test(`browser (phone): single display, ${direction}, a touch drag from the free edge let go at ${fromSpine} of the page from the spine, held still, ends in ${ending}`, async ({ page: tab }) => {
+      const open = await openPhoneBook(tab, direction);
+      // The spine is the page's left edge (ltr) or its right edge (rtl); the grip starts 2 px inside the
+      // free edge at 80% of the height, where a corner grip starts. A horizontal stroke: the canvas pans y.
+      const at = (f) => (direction === 'ltr' ? open.x + f * open.width : open.x + open.width - f * open.width);
+      const y = open.y + 0.8 * open.height;
+      const touch = await touchscreen(tab);
+      const from = { x: at(1) + (direction === 'ltr' ? -2 : 2), y };
+      const to = { x: at(fromSpine), y };
+      // touch.drag(from, to, { holdMs: 150 }) repeats the last point to hold still, but Chromium sends no
+      // pointermove for a touch that did not move, and pointer-drag.js takes the release velocity from the
+      // last moves alone: the stroke would read as a fling. A real thumb held still drifts a pixel: so here.
+      await touch.send('touchStart', [from]);
+      for (let i = 1; i <= 12; i++) await touch.send('touchMove', [{ x: from.x + ((to.x - from.x) * i) / 12, y }], 320 / 12);
+      await touch.send('touchMove', [{ x: to.x, y: y + 1 }], 150);  // what time tests: the finger held 150 ms
+      await touch.send('touchEnd', []);
+      await tab.waitForFunction((ending) => window.events.includes(ending), ending);
+      await tab.evaluate(() => window.settle());
+      expect(await tab.evaluate(() => ({ page: window.book.page, events: window.events }))).toEqual({ page, events: ['turnstart', ending] });
+    });
+  }
+}

@@ -1,0 +1,49 @@
+// Browser (phone): in single display the open page fills its box (the camera's small single-display
+// margin, cpp/core/book_camera.cpp frameMargin), in every direction, and a forward turn on a phone
+// matches its reference images at t = 0.15, 0.6 and 0.95.
+import { test, expect } from '@playwright/test';
+import { openReady } from './helpers.js';
+
+const FIXTURE = '/tests/browser/fixtures/flipbook-fixture.html';
+
+/** A single-display book of numbered pages in a box the size of the phone's viewport; its box and open page (CSS px). */
+async function openPhoneBook(page, options = {}) {
+  await openReady(page, FIXTURE);
+  return page.evaluate(async (options) => {
+    // The fixture has no viewport meta: a mobile browser would lay it out 980 px wide. A phone's page has
+    // one, and a container no wider than the screen (wider content widens the layout viewport).
+    const container = document.getElementById('container');
+    Object.assign(container.style, { width: '100vw', height: '100vh' });
+    const meta = Object.assign(document.createElement('meta'), { name: 'viewport', content: 'width=device-width, initial-scale=1' });
+    document.head.append(meta);
+    await new Promise((resolve) => { const check = () => (innerWidth === screen.width ? resolve() : requestAnimationFrame(check)); check(); });
+    await window.openBook({ pages: 8, display: 'single', startPage: 2, ...options });
+    await window.book.whenIdle();
+    const canvas = window.book.surface.canvas.getBoundingClientRect();
+    const [open] = window.book.openPagePlaces();
+    return { box: { width: canvas.width, height: canvas.height }, open };
+  }, options);
+}
+
+test('browser (phone): a single page fills at least 92% of its box in the dimension the box limits, ltr, rtl and vertical', async ({ page }) => {
+  for (const direction of ['ltr', 'rtl', 'vertical']) {
+    const { box, open } = await openPhoneBook(page, { direction });
+    const fill = Math.max(open.width / box.width, open.height / box.height);
+    expect(fill, `${direction}: ${JSON.stringify({ box, open })}`).toBeGreaterThanOrEqual(0.92);
+    // Centred and whole.
+    expect(Math.abs(open.x + open.width / 2 - box.width / 2)).toBeLessThan(1);
+    expect(Math.abs(open.y + open.height / 2 - box.height / 2)).toBeLessThan(1);
+    expect(open.x).toBeGreaterThanOrEqual(0);
+    expect(open.y).toBeGreaterThanOrEqual(0);
+  }
+});
+
+for (const t of [0.15, 0.6, 0.95]) {
+  test(`browser (phone): a single-display forward turn at t=${t} matches its reference image`, async ({ page }, testInfo) => {
+    test.skip(testInfo.project.name === 'phone-small', 'portrait and landscape show the turn; the small phone is a smaller portrait');
+    await openPhoneBook(page);
+    expect(await page.evaluate((t) => window.book.previewTurn('forward', t), t)).toBe(true);
+    await expect(page.locator('#container')).toHaveScreenshot(`${testInfo.project.name}-single-turn-${t}.png`,
+      { maxDiffPixelRatio: 0.005, threshold: 0.1 });
+  });
+}
