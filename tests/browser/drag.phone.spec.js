@@ -38,16 +38,28 @@ for (const direction of ['ltr', 'rtl']) {
       const touch = await touchscreen(tab);
       const from = { x: at(1) + (direction === 'ltr' ? -2 : 2), y };
       const to = { x: at(fromSpine), y };
-      // touch.drag(from, to, { holdMs: 150 }) repeats the last point to hold still, but Chromium sends no
-      // pointermove for a touch that did not move, and pointer-drag.js takes the release velocity from the
-      // last moves alone: the stroke would read as a fling. A real thumb held still drifts a pixel: so here.
-      await touch.send('touchStart', [from]);
-      for (let i = 1; i <= 12; i++) await touch.send('touchMove', [{ x: from.x + ((to.x - from.x) * i) / 12, y }], 320 / 12);
-      await touch.send('touchMove', [{ x: to.x, y: y + 1 }], 150);  // what time tests: the finger held 150 ms
-      await touch.send('touchEnd', []);
+      // Held still 150 ms before lifting: Chromium sends no move for a finger that stands still, so the
+      // release itself must tell pointer-drag.js that the speed fell to nothing (no fling).
+      await touch.drag(from, to, { steps: 12, durationMs: 320, holdMs: 150 });
       await tab.waitForFunction((ending) => window.events.includes(ending), ending);
       await tab.evaluate(() => window.settle());
       expect(await tab.evaluate(() => ({ page: window.book.page, events: window.events }))).toEqual({ page, events: ['turnstart', ending] });
     });
   }
 }
+
+test('browser (phone): single display, a quick flick let go at 0.6 of the page from the spine still turns (a fling), and one held still falls back', async ({ page: tab }) => {
+  const open = await openPhoneBook(tab, 'ltr');
+  const y = open.y + 0.8 * open.height;
+  const touch = await touchscreen(tab);
+  // The same stroke twice, 120 ms long: lifted at once it is a fling on (turned), held 150 ms first it is not.
+  await touch.drag({ x: open.x + open.width - 2, y }, { x: open.x + 0.6 * open.width, y }, { steps: 6, durationMs: 120, holdMs: 0 });
+  await tab.waitForFunction(() => window.events.includes('turned'));
+  await tab.evaluate(() => window.settle());
+  expect(await tab.evaluate(() => ({ page: window.book.page, events: window.events }))).toEqual({ page: 3, events: ['turnstart', 'turned'] });
+  await tab.evaluate(() => { window.events = []; });
+  await touch.drag({ x: open.x + open.width - 2, y }, { x: open.x + 0.6 * open.width, y }, { steps: 6, durationMs: 120, holdMs: 150 });
+  await tab.waitForFunction(() => window.events.includes('turncancel'));
+  await tab.evaluate(() => window.settle());
+  expect(await tab.evaluate(() => ({ page: window.book.page, events: window.events }))).toEqual({ page: 3, events: ['turnstart', 'turncancel'] });
+});

@@ -4,7 +4,15 @@
 
 const DRAG_THRESHOLD_CSS_PX = 4;   // below this a press is a click, not a drag
 const VELOCITY_WINDOW_MS = 100;     // pointer samples this recent set the release velocity
+
 const HINT_MS = 160;                // the hover hint eases in over this long
+
+/** Adds the pointer's place at the event's time to `samples`, keeping those within VELOCITY_WINDOW_MS (two at least). */
+function keepSample(samples, event, p) {
+  const now = event.timeStamp || performance.now();
+  samples.push({ t: now, x: p.x, y: p.y });
+  while (samples.length > 2 && now - samples[0].t > VELOCITY_WINDOW_MS) samples.shift();
+}
 
 export class PointerDrag {
   /**
@@ -116,10 +124,7 @@ export class PointerDrag {
       return;
     }
     const p = this._pixel(event);
-    const now = event.timeStamp || performance.now();
-    const samples = this._drag.samples;
-    samples.push({ t: now, x: p.x, y: p.y });
-    while (samples.length > 2 && now - samples[0].t > VELOCITY_WINDOW_MS) samples.shift();
+    keepSample(this._drag.samples, event, p);
     this.view.book.dragHeldTurn(this._drag.grip, p.x, p.y, p.width, p.height);
     this.view.heldChanged();
   }
@@ -135,6 +140,9 @@ export class PointerDrag {
     this._drag = null;
     this._swallowClick = !cancelled;
     const p = this._pixel(event);
+    // Where the pointer lifts, and when: a finger that stood still sends no moves, so without this
+    // sample a drag that paused before lifting would be released at the speed it had before the pause.
+    keepSample(samples, event, p);
     let vx = 0;
     let vy = 0;
     if (samples.length >= 2) {
