@@ -100,7 +100,7 @@ const VIEWER_CSS = `
 }
 @media (pointer: coarse) {
   .conecurl-viewer .conecurl-toolbar { gap: 0; padding: 0 2px; }
-  .conecurl-viewer.conecurl-viewer button { min-width: 44px; min-height: 44px; }
+  .conecurl-viewer.conecurl-viewer button, .conecurl-viewer.conecurl-viewer .conecurl-toolbar button { min-width: 44px; min-height: 44px; }
   .conecurl-viewer.conecurl-viewer :is(.conecurl-toolbar, .conecurl-panel-head, .conecurl-search-row) button { height: 44px; }
   .conecurl-viewer.conecurl-viewer .conecurl-menu button { min-height: 48px; }
   .conecurl-viewer.conecurl-viewer .conecurl-page-field { height: 44px; }
