@@ -282,8 +282,6 @@ test('browser (phone): Escape leaves reading mode, and so does the browser leavi
   await page.keyboard.press('Escape');
   await page.waitForFunction(() => !document.querySelector('.conecurl-viewer[data-reading]') && !document.fullscreenElement);
   await enter();
-  page.on('console', (m) => console.log(m.text()));
-  await page.evaluate(() => { window.book.addEventListener('fullscreenchange', (e) => console.log('fsc', e.detail.fullscreen)); document.addEventListener('fullscreenchange', () => console.log('doc fsc', Boolean(document.fullscreenElement))); });
   await page.evaluate(() => document.exitFullscreen());
   await page.waitForFunction(() => !document.querySelector('.conecurl-viewer[data-reading]'));
 });

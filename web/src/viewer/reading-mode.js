@@ -55,8 +55,11 @@ export function readingMode(book, { container, viewer, toolbar, busy, changed })
   const onKey = (event) => {
     if (event.key === 'Escape' && !event.defaultPrevented) leave();
   };
+  // The book's fullscreenchange, and the document's too (the book's was not always heard on leaving
+  // fullscreen a second time in a test).
   const onFullscreen = (event) => {
-    if (event.detail?.fullscreen) reachedFullscreen = true;
+    const now = event.detail?.fullscreen ?? Boolean(doc.fullscreenElement);
+    if (now) reachedFullscreen = true;
     else if (viaFullscreen && reachedFullscreen) leave();
   };
 
@@ -72,13 +75,19 @@ export function readingMode(book, { container, viewer, toolbar, busy, changed })
     book.addEventListener('middletap', onMiddleTap);
     book.addEventListener('turned', onTurned);
     book.addEventListener('fullscreenchange', onFullscreen);
+    doc.addEventListener('fullscreenchange', onFullscreen);
     viewer.addEventListener('pointerdown', onUse);
     viewer.addEventListener('keydown', onUse);
     viewer.addEventListener('focusin', onFocusIn);
     doc.addEventListener('keydown', onKey);
     viaFullscreen = canFullscreen(container);
     reachedFullscreen = false;
-    if (viaFullscreen) book.toggleFullscreen(true).catch(() => { viaFullscreen = false; });
+    if (viaFullscreen) {
+      book.toggleFullscreen(true).then((now) => {
+        if (now) reachedFullscreen = true;
+        else if (active) leave();  // it left again before we heard it went
+      }, () => { viaFullscreen = false; });
+    }
     changed();
     showBar();
     if (focusWasIn) toolbar.buttons.exit.focus();
@@ -92,6 +101,7 @@ export function readingMode(book, { container, viewer, toolbar, busy, changed })
     book.removeEventListener('middletap', onMiddleTap);
     book.removeEventListener('turned', onTurned);
     book.removeEventListener('fullscreenchange', onFullscreen);
+    doc.removeEventListener('fullscreenchange', onFullscreen);
     viewer.removeEventListener('pointerdown', onUse);
     viewer.removeEventListener('keydown', onUse);
     viewer.removeEventListener('focusin', onFocusIn);
