@@ -310,6 +310,7 @@ test.describe('reference images', () => {
   });
 
   test('browser (phone): the More menu open, reference image', async ({ page }, testInfo) => {
+    test.skip(testInfo.project.name === 'phone-landscape', 'at 844 px every control fits: no More button');
     await openDemoPdf(page);
     await page.getByRole('toolbar').evaluate((bar) => bar.scrollIntoView({ block: 'end' }));
     await page.getByRole('button', { name: 'More' }).click();
