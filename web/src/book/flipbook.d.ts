@@ -262,6 +262,12 @@ export interface ViewerLabels {
   searching?: string;
   /** A result's page: 'Page {n}'. */
   hitPage?: string;
+  /** The toolbar's menu button holding the controls that do not fit: 'More'. */
+  more?: string;
+  /** On a phone, or where there is no Fullscreen API: the button that gives the book the whole screen: 'Read'. */
+  read?: string;
+  /** The reading bar's button that leaves reading mode: 'Exit reading'. */
+  exitReading?: string;
 }
 
 /** Where a page stands: not wanted yet ('idle'), loading, loaded, or failed (with why, as `pageerror` said). */

@@ -1,6 +1,7 @@
 // attachControls(book, options): the viewer for a book, built on its public API alone (the `controls`
 // option calls this; conecurl/viewer exports it). A toolbar below the book (the book's box gives up
-// its height), the panels over the book's side, all in the book's container so fullscreen takes them.
+// its height), the panels over the book's side (on a phone, sheets fixed to the screen), reading mode,
+// all in the book's container so fullscreen takes them.
 import { MAX_ZOOM } from '../engine/layout.js';
 import { viewerLabels } from './viewer-labels.js';
 import { checkControls, checkLabels, shownParts } from './viewer-options.js';
@@ -10,11 +11,14 @@ import { createPanel } from './panel.js';
 import { thumbnailsPanel } from './thumbnails-panel.js';
 import { contentsPanel } from './contents-panel.js';
 import { searchPanel } from './search-panel.js';
+import { canFullscreen, readingMode } from './reading-mode.js';
 
 const ZOOM_STEP = 0.5;
 const NARROW = 600;         // CSS px: below, icons only and panels as sheets from the bottom
 const COMPACT = 800;        // CSS px: below, the panels' buttons show their icons only too
-const SHEET_SHARE = 0.62;   // of the book's height, a sheet's
+const SHEET_SHARE = 0.62;   // of the book's height, a sheet's (fine pointer, narrow book)
+const COARSE = '(pointer: coarse)';  // a phone's finger: 44 px targets, sheets fixed to the screen, reading mode
+const HIT_MARGIN = 12;      // CSS px kept between a hit shown and the sheet or the screen's edge
 const PANEL_KINDS = { thumbnails: thumbnailsPanel, contents: contentsPanel, search: searchPanel };
 
 /**
@@ -34,27 +38,42 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
   viewer.className = 'conecurl-viewer';
   const removeStyle = installViewerStyle(container);
   const panels = {};
+  const coarse = window.matchMedia?.(COARSE) ?? { matches: false };
+  const fullscreenApi = canFullscreen(container);
+  let reading = null;
+  // Fullscreen: the Fullscreen API on a desktop; on a phone, or where there is no API (Read), reading mode.
+  const fullscreen = () => {
+    if (coarse.matches || !fullscreenApi) reading.toggle();
+    else book.toggleFullscreen().catch(() => {});
+  };
   const toolbar = createToolbar(text, parts, {
     previous: () => book.prev().catch(() => {}),
     next: () => book.next().catch(() => {}),
     page: (n) => book.flip(n - 1).catch(() => {}),
     zoomIn: () => { book.zoom = Math.min(MAX_ZOOM, book.zoom + ZOOM_STEP); },
     zoomOut: () => { book.zoom = Math.max(1, book.zoom - ZOOM_STEP); },
-    fullscreen: () => book.toggleFullscreen().catch(() => {}),
+    fullscreen,
+    exit: () => reading.leave(),
     download: () => book.download().catch(() => {}),
     print: () => book.print().catch(() => {}),
     thumbnails: () => toggle('thumbnails'),
     contents: () => toggle('contents'),
     search: () => toggle('search'),
-  });
-  viewer.append(toolbar.element);
+  }, { fullscreenKey: fullscreenApi ? 'fullscreen' : 'read' });
+  viewer.append(toolbar.element, toolbar.menu.element);
   const contents = [];
   for (const [kind, make] of Object.entries(PANEL_KINDS)) {
     if (!parts[kind]) continue;
-    panels[kind] = createPanel(text, text[kind], toolbar.buttons[kind]);
+    panels[kind] = createPanel(text, text[kind], toolbar.buttons[kind], () => toolbar.focusTarget(kind));
     viewer.append(panels[kind].element);
-    contents.push(make(book, panels[kind], text));
+    contents.push(make(book, panels[kind], text, { revealHit }));
   }
+  const openPanel = () => Object.values(panels).find((panel) => panel.isOpen());
+  reading = readingMode(book, {
+    container, viewer, toolbar,
+    busy: () => Boolean(openPanel()) || toolbar.menu.isOpen(),
+    changed: () => { layout(); show(); },
+  });
 
   function toggle(kind) {
     const panel = panels[kind];
@@ -68,26 +87,66 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
 
   // The book and the open panel side by side: on a wide book the panel takes the left of the book's
   // box and the book the rest; on a narrow one (icons only) the panel is a sheet over the toolbar and
-  // the book takes what is above it. The book fits itself to its new box (its size watch).
+  // the book takes what is above it. On a coarse pointer (a phone) the panels are sheets fixed to the
+  // screen, whatever the page around the book: from the bottom, 45% of the screen's height, when the
+  // screen stands; from the left, min(360 px, 45% of its width), when it lies; the book gives way to a
+  // side sheet, and in reading mode to either. The book fits itself to its new box (its size watch).
   const given = book.element.style;
   const bookStyle = { height: given.height, width: given.width, marginLeft: given.marginLeft, marginBottom: given.marginBottom };
   const BOOK_HEIGHT = 'calc(100% - var(--conecurl-toolbar-height, 44px))';
   function layout() {
     const width = viewer.clientWidth;
     const narrow = width < NARROW;
+    const phone = coarse.matches;
+    const landscape = window.innerWidth > window.innerHeight;
+    const inReading = reading?.active() ?? false;
     viewer.toggleAttribute('data-narrow', narrow);
     viewer.toggleAttribute('data-compact', width < COMPACT);
-    const space = container.getBoundingClientRect().height - viewer.getBoundingClientRect().height;
-    const sheet = Math.round(space * SHEET_SHARE);
-    for (const panel of Object.values(panels)) panel.element.style.height = `${Math.max(0, narrow ? sheet : space)}px`;
-    const open = Object.values(panels).find((panel) => panel.isOpen());
-    const beside = open && !narrow ? open.element.getBoundingClientRect().width : 0;
-    Object.assign(book.element.style, {
-      height: open && narrow ? `calc(100% - var(--conecurl-toolbar-height, 44px) - ${sheet}px)` : BOOK_HEIGHT,
-      width: beside ? `calc(100% - ${beside}px)` : bookStyle.width,
-      marginLeft: beside ? `${beside}px` : bookStyle.marginLeft,
-      marginBottom: open && narrow ? `${sheet}px` : bookStyle.marginBottom,  // the toolbar stays where it was
-    });
+    viewer.toggleAttribute('data-coarse', phone);
+    viewer.toggleAttribute('data-landscape', phone && landscape);
+    const open = openPanel();
+    if (phone) {
+      for (const panel of Object.values(panels)) panel.element.style.height = '';
+      const sheet = open?.element.getBoundingClientRect();
+      const box = container.getBoundingClientRect();
+      const beside = sheet && landscape ? Math.max(0, Math.round(sheet.right - box.left)) : 0;
+      const below = sheet && !landscape && inReading ? Math.max(0, Math.round(box.bottom - sheet.top)) : 0;
+      Object.assign(book.element.style, {
+        height: inReading ? (below ? `calc(100% - ${below}px)` : '100%') : BOOK_HEIGHT,
+        width: beside ? `calc(100% - ${beside}px)` : (inReading ? '100%' : bookStyle.width),
+        marginLeft: beside ? `${beside}px` : (inReading ? '0px' : bookStyle.marginLeft),
+        marginBottom: inReading ? '0px' : bookStyle.marginBottom,
+      });
+    } else {
+      const space = container.getBoundingClientRect().height - (inReading ? 0 : viewer.getBoundingClientRect().height);
+      const sheet = Math.round(space * SHEET_SHARE);
+      for (const panel of Object.values(panels)) panel.element.style.height = `${Math.max(0, narrow ? sheet : space)}px`;
+      const beside = open && !narrow ? open.element.getBoundingClientRect().width : 0;
+      const full = inReading ? '100%' : BOOK_HEIGHT;
+      Object.assign(book.element.style, {
+        height: open && narrow ? `calc(${full} - ${sheet}px)` : full,
+        width: beside ? `calc(100% - ${beside}px)` : (inReading ? '100%' : bookStyle.width),
+        marginLeft: beside ? `${beside}px` : (inReading ? '0px' : bookStyle.marginLeft),
+        marginBottom: open && narrow && !inReading ? `${sheet}px` : (inReading ? '0px' : bookStyle.marginBottom),
+      });
+    }
+    toolbar.fit();
+  }
+
+  // A search hit shown while a sheet covers part of the screen: when its place on the page lies under
+  // the sheet or off the screen, the page scrolls it into the part left free (above a bottom sheet).
+  function revealHit(hit) {
+    const sheet = openPanel()?.element;
+    if (!coarse.matches || !sheet) return;
+    const place = book.openPagePlaces().find((p) => p.page === hit.page);
+    if (!place) return;
+    const at = book.element.getBoundingClientRect();  // the canvas fills the book's box
+    const top = at.top + place.y + Math.min(...hit.rects.map((r) => r[1])) * place.height;
+    const bottom = at.top + place.y + Math.max(...hit.rects.map((r) => r[1] + r[3])) * place.height;
+    const cover = sheet.getBoundingClientRect();
+    const freeBottom = window.innerWidth > window.innerHeight ? window.innerHeight : cover.top;
+    if (top >= HIT_MARGIN && bottom <= freeBottom - HIT_MARGIN) return;
+    window.scrollBy({ top: (top + bottom) / 2 - freeBottom / 2, behavior: 'instant' });
   }
   for (const panel of Object.values(panels)) panel.onToggle(layout);
 
@@ -104,10 +163,12 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
     layout();
     show();
   };
+  window.addEventListener('resize', resized);
+  coarse.addEventListener?.('change', resized);
   // Escape anywhere in the viewer closes the open panel and gives focus back to its button.
   const onKey = (event) => {
     if (event.key !== 'Escape' || event.defaultPrevented) return;
-    const open = Object.values(panels).find((panel) => panel.isOpen());
+    const open = openPanel();
     if (!open) return;
     event.preventDefault();
     open.close(true);
@@ -130,6 +191,9 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
     panels: Object.fromEntries(Object.entries(panels).map(([kind, panel]) => [kind, panel.element])),
     /** Takes the viewer away; the book gets its whole box back. */
     remove() {
+      reading.leave();
+      window.removeEventListener('resize', resized);
+      coarse.removeEventListener?.('change', resized);
       for (const [type, listener] of Object.entries(events)) book.removeEventListener(type, listener);
       for (const part of contents) part.remove();
       for (const panel of Object.values(panels)) panel.close();

@@ -1,5 +1,5 @@
 // A panel of the viewer (thumbnails, contents, search): a non-modal dialog over the book's side (a
-// sheet from the bottom on a narrow book), opened and closed by its toolbar button, which says so
+// sheet from the bottom on a narrow book or a phone; attach-controls.js places it), opened and closed by its toolbar button, which says so
 // (aria-expanded). Escape or its close button closes it and gives focus back to that button.
 import { icon } from './viewer-icons.js';
 
@@ -7,10 +7,12 @@ let panelCount = 0;
 
 /**
  * A panel titled `title` for `button`; `content` is what it shows: { element, opened(), closed() }.
+ * `focusTarget()` is where focus goes back to on close: the button, or the More button while the
+ * button is in the More menu.
  * @returns {{ element: HTMLElement, body: HTMLElement, open: () => void, close: (refocus?: boolean) => void,
  *   isOpen: () => boolean, remove: () => void }}
  */
-export function createPanel(labels, title, button) {
+export function createPanel(labels, title, button, focusTarget = () => button) {
   const id = `conecurl-panel-${++panelCount}`;
   const element = document.createElement('div');
   element.className = 'conecurl-panel';
@@ -55,7 +57,7 @@ export function createPanel(labels, title, button) {
       element.hidden = true;
       button.setAttribute('aria-expanded', 'false');
       for (const listener of listeners) listener(false);
-      if (refocus) button.focus();
+      if (refocus) focusTarget().focus();
     },
     remove: () => element.remove(),
   };

@@ -16,8 +16,11 @@ function iconButton(name, label) {
   return button;
 }
 
-/** The search in `panel` (panel.js) for `book`; returns { remove }. */
-export function searchPanel(book, panel, labels) {
+/**
+ * The search in `panel` (panel.js) for `book`; `revealHit(hit)` is called once a hit is shown (the
+ * viewer keeps it clear of a sheet); returns { remove }.
+ */
+export function searchPanel(book, panel, labels, { revealHit = () => {} } = {}) {
   const row = document.createElement('div');
   row.className = 'conecurl-search-row';
   const field = document.createElement('input');
@@ -90,7 +93,8 @@ export function searchPanel(book, panel, labels) {
   function choose(i) {
     if (hits.length === 0) return;
     mark(i);
-    book.showHit(hits[current]).catch(() => {});
+    const hit = hits[current];
+    book.showHit(hit).then(() => { if (!removed && hits[current] === hit) revealHit(hit); }, () => {});
   }
 
   // Hit `i` is the current one: marked in the list, announced.

@@ -1,9 +1,11 @@
 // The toolbar's elements: its buttons (each named by its label, an icon beside or instead of the text)
 // and the page field ("3 of 12"; a page number typed and Enter opens it), in one role="toolbar" row
-// with roving focus. What the buttons do is the caller's (attach-controls.js): `actions` by part.
+// with roving focus; the controls its width cannot hold move into the More menu (more-menu.js),
+// measured, least used first. What the buttons do is the caller's (attach-controls.js): `actions` by part.
 import { icon } from './viewer-icons.js';
 import { fill } from './viewer-labels.js';
 import { rovingFocus } from './roving-focus.js';
+import { createMoreMenu } from './more-menu.js';
 
 // part -> [label key, icon, text shown beside the icon on a wide book]; in toolbar order, groups by null.
 const LAYOUT = [
@@ -14,6 +16,14 @@ const LAYOUT = [
 ];
 // The toggles whose state is shown by aria-pressed or aria-expanded.
 const PANELS = ['thumbnails', 'contents', 'search'];
+/**
+ * The parts that move into the More menu when the toolbar's width cannot hold them, least used first
+ * (each moves only once those before it did). Previous, Next and the page field always stay.
+ */
+export const OVERFLOW_ORDER = ['print', 'download', 'fullscreen', 'contents', 'thumbnails', 'zoom', 'search'];
+// The buttons a part is made of.
+const BUTTONS_OF = { zoom: ['zoomOut', 'zoomIn'] };
+const buttonsOf = (part) => BUTTONS_OF[part] ?? [part];
 
 function makeButton(labels, key, iconName, textShown) {
   const button = document.createElement('button');
@@ -33,7 +43,7 @@ function makeButton(labels, key, iconName, textShown) {
  * @returns {{ element: HTMLElement, buttons: Record<string, HTMLButtonElement>, pageField: HTMLInputElement|null,
  *   show: (state: object) => void, remove: () => void }}
  */
-export function createToolbar(labels, parts, actions) {
+export function createToolbar(labels, parts, actions, { fullscreenKey = 'fullscreen' } = {}) {
   const element = document.createElement('div');
   element.className = 'conecurl-toolbar';
   element.setAttribute('role', 'toolbar');
@@ -58,12 +68,29 @@ export function createToolbar(labels, parts, actions) {
       buttons.zoomOut = makeButton(labels, 'zoomOut', 'zoomOut', false);
       buttons.zoomIn = makeButton(labels, 'zoomIn', 'zoomIn', false);
       element.append(buttons.zoomOut, buttons.zoomIn);
+    } else if (part === 'fullscreen') {
+      buttons.fullscreen = makeButton(labels, fullscreenKey, fullscreenKey === 'read' ? 'read' : 'fullscreen', false);
+      element.append(buttons.fullscreen);
     } else {
       buttons[part] = makeButton(labels, entry[0], entry[1], entry[2]);
       element.append(buttons[part]);
     }
   }
   element.lastElementChild?.classList.contains('conecurl-gap') && element.lastElementChild.remove();
+  // Reading mode's Exit (shown only while reading) and the More button end the row; neither moves.
+  buttons.exit = makeButton(labels, 'exitReading', 'exit', false);
+  buttons.exit.hidden = true;
+  const menuItems = [];
+  for (const [name, button] of Object.entries(buttons)) {
+    const part = Object.keys(BUTTONS_OF).find((key) => BUTTONS_OF[key].includes(name)) ?? name;
+    if (!OVERFLOW_ORDER.includes(part)) continue;
+    const key = name === 'fullscreen' ? fullscreenKey : name;
+    menuItems.push({ part: name, label: labels[key], iconName: name === 'fullscreen' && fullscreenKey === 'read' ? 'read' : name });
+  }
+  const menu = createMoreMenu(labels, menuItems, (name) => {
+    if (buttons[name].getAttribute('aria-disabled') !== 'true') actions[name](buttons[name]);
+  });
+  element.append(buttons.exit, menu.button);
   for (const [name, button] of Object.entries(buttons)) {
     if (PANELS.includes(name)) button.setAttribute('aria-expanded', 'false');
     if (name === 'fullscreen') button.setAttribute('aria-pressed', 'false');
@@ -71,12 +98,67 @@ export function createToolbar(labels, parts, actions) {
       if (button.getAttribute('aria-disabled') !== 'true') actions[name](button);
     });
   }
-  const focus = rovingFocus(element, () => [...element.querySelectorAll('button, input')]);
+  const focus = rovingFocus(element, () => [...element.querySelectorAll('button, input')].filter((control) => !control.hidden));
+
+  // The width's fit: every part shown; while the row is wider than the toolbar, the next part of
+  // OVERFLOW_ORDER moves into the menu. Measured on the real widths (labels, fonts, a coarse pointer's
+  // 44 px targets), again whenever the toolbar's width changes.
+  let reading = false;
+  const present = (part) => buttonsOf(part).every((name) => buttons[name]) && !(reading && part === 'fullscreen');
+  const setShown = (part, on) => { for (const name of buttonsOf(part)) buttons[name].hidden = !on; };
+  const fits = () => element.scrollWidth <= element.clientWidth;
+  let moved = [];
+  function fit() {
+    if (element.clientWidth === 0) return;
+    const movable = OVERFLOW_ORDER.filter(present);
+    for (const part of movable) setShown(part, true);
+    if (buttons.fullscreen) buttons.fullscreen.hidden = reading;
+    menu.show([]);
+    moved = [];
+    if (!fits()) {
+      menu.button.hidden = false;
+      for (const part of movable) {
+        if (fits()) break;
+        setShown(part, false);
+        moved.push(part);
+      }
+    }
+    const names = moved.flatMap(buttonsOf);
+    menu.show(Object.keys(menu.items).filter((name) => names.includes(name)));  // in toolbar order
+    focus.refresh();
+  }
+  const watch = typeof ResizeObserver === 'function' ? new ResizeObserver(() => fit()) : null;
+  watch?.observe(element);
+  const mirror = (name) => {  // a menu item says what its button says
+    const item = menu.items[name];
+    if (!item) return;
+    for (const attribute of ['aria-disabled', 'aria-expanded', 'aria-pressed']) {
+      const value = buttons[name].getAttribute(attribute);
+      const mirrored = attribute === 'aria-disabled' ? attribute : 'data-on';  // a menuitem has no aria-pressed
+      if (value !== null) item.setAttribute(mirrored, value);
+    }
+  };
+  const states = new MutationObserver((records) => { for (const record of records) mirror(record.target.dataset.control); });
+  for (const button of Object.values(buttons)) states.observe(button, { attributes: true, attributeFilter: ['aria-disabled', 'aria-expanded', 'aria-pressed'] });
 
   return {
     element,
     buttons,
     pageField,
+    /** The More menu: { button, element, open(), close(), isOpen() }; its element goes beside the toolbar. */
+    menu,
+    /** Fits the controls to the toolbar's width again (after its buttons changed size). */
+    fit,
+    /** The parts in the More menu now, in the order they moved. */
+    moved: () => [...moved],
+    /** Where focus goes for a part's button: the button, or the More button while the part is in the menu. */
+    focusTarget: (name) => (buttons[name] && !buttons[name].hidden ? buttons[name] : menu.button),
+    /** Reading mode: Exit shown, Fullscreen (or Read) hidden. */
+    setReading(on) {
+      reading = on;
+      buttons.exit.hidden = !on;
+      fit();
+    },
     /**
      * Shows the book's state: { pages (the open pages' numbers from 1: "6" or "6–7"), pageCount, atStart,
      * atEnd, zoom, maxZoom, fullscreen }.
@@ -92,6 +174,9 @@ export function createToolbar(labels, parts, actions) {
       focus.refresh();
     },
     remove() {
+      watch?.disconnect();
+      states.disconnect();
+      menu.remove();
       focus.stop();
       element.remove();
     },

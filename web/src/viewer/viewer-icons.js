@@ -17,6 +17,9 @@ const PATHS = {
   close: ['M6 6l12 12', 'M18 6L6 18'],
   up: ['M6 15l6-6 6 6'],
   down: ['M6 9l6 6 6-6'],
+  more: ['M5 12h.01', 'M12 12h.01', 'M19 12h.01'],
+  read: ['M4 5h6a2 2 0 0 1 2 2v12a2 2 0 0 0-2-2H4z', 'M20 5h-6a2 2 0 0 0-2 2v12a2 2 0 0 1 2-2h6z'],
+  exit: ['M9 4v5H4', 'M15 4v5h5', 'M15 20v-5h5', 'M9 20v-5H4'],
 };
 
 /** The SVG icon named `name` (a key of PATHS), hidden from screen readers. */

@@ -26,6 +26,9 @@ export const DEFAULT_LABELS = Object.freeze({
   noHits: 'No results',
   searching: 'Searching\u2026',
   hitPage: 'Page {n}',
+  more: 'More',
+  read: 'Read',
+  exitReading: 'Exit reading',
 });
 export const LABEL_KEYS = Object.keys(DEFAULT_LABELS);
 

@@ -77,7 +77,43 @@ const VIEWER_CSS = `
   background: #ffffff !important; color: #1d1d1b !important;
 }
 .conecurl-search-status { padding: 0 12px 6px; min-height: 1.2em; flex: none; }
-.conecurl-empty { padding: 12px; margin: 0; }`;
+.conecurl-empty { padding: 12px; margin: 0; }
+.conecurl-viewer button[hidden] { display: none; }
+.conecurl-menu {
+  position: absolute; right: 4px; bottom: 100%; z-index: 3; display: flex; flex-direction: column;
+  min-width: 190px; max-width: calc(100vw - 8px); padding: 4px 0; box-sizing: border-box; overflow-y: auto;
+  overscroll-behavior: contain; border-radius: 8px; box-shadow: 0 2px 18px rgba(0, 0, 0, 0.32);
+  color: var(--conecurl-panel-fg, #1d1d1b); background: var(--conecurl-panel-bg, #fbfaf7);
+}
+.conecurl-menu[data-below] { bottom: auto; top: 100%; }
+.conecurl-menu[hidden] { display: none; }
+.conecurl-viewer .conecurl-menu button {
+  justify-content: flex-start; width: 100%; height: auto; min-height: 36px; padding: 0 14px; gap: 10px; border-radius: 0;
+}
+.conecurl-menu button:hover, .conecurl-menu button:focus { background: var(--conecurl-panel-hover, rgba(0, 0, 0, 0.07)); }
+.conecurl-menu button[data-on="true"] { box-shadow: inset 4px 0 var(--conecurl-accent, #3d7be0); font-weight: 700; }
+.conecurl-viewer .conecurl-menu :is(button):focus-visible { outline-color: var(--conecurl-accent, #3d7be0); }
+.conecurl-viewer[data-reading] { position: absolute; left: 0; right: 0; bottom: 0; z-index: 2; }
+.conecurl-viewer[data-reading][data-bar-hidden] { transform: translateY(100%); visibility: hidden; }
+@media (prefers-reduced-motion: no-preference) {
+  .conecurl-viewer[data-reading] { transition: transform 0.2s ease, visibility 0.2s; }
+}
+@media (pointer: coarse) {
+  .conecurl-viewer .conecurl-toolbar { gap: 0; padding: 0 2px; }
+  .conecurl-viewer.conecurl-viewer button, .conecurl-viewer.conecurl-viewer .conecurl-toolbar button { min-width: 44px; min-height: 44px; }
+  .conecurl-viewer.conecurl-viewer :is(.conecurl-toolbar, .conecurl-panel-head, .conecurl-search-row) button { height: 44px; }
+  .conecurl-viewer.conecurl-viewer .conecurl-menu button { min-height: 48px; }
+  .conecurl-viewer.conecurl-viewer .conecurl-page-field { height: 44px; }
+  .conecurl-viewer.conecurl-viewer[data-narrow] .conecurl-page-field { width: 5em; }
+  .conecurl-viewer .conecurl-search-row input { height: 44px; }
+}
+.conecurl-viewer[data-coarse] .conecurl-panel {
+  position: fixed; left: 0; right: 0; top: auto; bottom: 0; z-index: 2147483001; width: 100%; max-width: none;
+  height: 45vh; height: 45dvh; border-radius: 12px 12px 0 0;
+}
+.conecurl-viewer[data-coarse][data-landscape] .conecurl-panel {
+  top: 0; right: auto; width: min(360px, 45vw); height: 100vh; height: 100dvh; border-radius: 0 12px 12px 0;
+}`;
 
 let sharedSheet = null;
 
