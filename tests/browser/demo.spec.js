@@ -116,6 +116,7 @@ test('browser: demo book turns when its corner is dragged across the spine', asy
 });
 
 test('browser: demo shows its PDF example through pdf.js, and the contents links turn to their pages', async ({ page }) => {
+  await page.setViewportSize({ width: 1440, height: 900 });  // a spread of the PDF's pages, each 300 CSS px or more, beside its toolbar
   const problems = await openReady(page, '/web/demo/');
   await page.selectOption('#source', 'pdf');
   await expect(page.locator('#where')).toHaveText('Page 1 of 12', { timeout: 30_000 });

@@ -185,11 +185,13 @@ export function validateOptions(options, { pdf = false } = {}) {
     throw new TypeError(`conecurl: option 'startPage' must be below the page count ${options.pages.length}, got ${options.startPage}`);
   }
   // A book with HTML pages, or a PDF's selectable text, turns from the pages' edges by default: a press
-  // on their content is theirs.
+  // on their content is theirs. Not a PDF's text on a coarse pointer: a finger selects by a long press,
+  // so a tap or a drag anywhere on the page may turn it (and a tap on a word reaches the book, text-layer.js).
   const hasHtml = Array.from(options.pages, (page) => isHtmlPage(page) || (isPlainEntry(page) && page.html !== undefined)).some(Boolean);
   const hasText = pdf && (options.textLayer ?? DEFAULTS.textLayer);
   // edgeMarks: on with the controls unless given.
-  const settings = { ...DEFAULTS, turnArea: hasHtml || hasText ? 'edges' : 'page', edgeMarks: Boolean(options.controls), ...options };
+  const coarse = Boolean(globalThis.matchMedia?.('(pointer: coarse)').matches);
+  const settings = { ...DEFAULTS, turnArea: hasHtml || (hasText && !coarse) ? 'edges' : 'page', edgeMarks: Boolean(options.controls), ...options };
   if (settings.outline) settings.outline = copyOutline(settings.outline);  // the book's own: later changes to the caller's do not reach it
   return settings;
 }

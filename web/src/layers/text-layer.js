@@ -77,8 +77,8 @@ export function passageText(text) {
 
 /**
  * The text layer: one element `data-text-layer` (and `data-page`) per open page, over its place.
- * Only the spans take presses: a press on a word selects (the canvas never sees it), a press between
- * words is the canvas's, where `turnArea` rules (a PDF book's default, 'edges', keeps the page's inside
+ * Only the spans take presses: a mouse press on a word selects (the canvas never sees it; a touch on
+ * one is handed to the canvas too, a finger selects by a long press), a press between words is the canvas's, where `turnArea` rules (a PDF book's default, 'edges', keeps the page's inside
  * for selecting). The wheel over a word is handed to the canvas (it zooms there).
  * @param {HTMLElement} root  the book's element; the layer goes in it, over the canvas, before `before`
  * @param {{ pdf: { pdfjs: object, page: (index: number) => Promise<object>, textContent: (index: number) => Promise<object> },
@@ -109,6 +109,19 @@ export function createTextLayer(root, { pdf, canvas, before = null, onPassage })
     event.preventDefault();
     canvas.dispatchEvent(new WheelEvent(event.type, event));
   }, { passive: false });
+
+  // A finger selects by a long press (the browser's own), never by a drag: so a touch on a word is
+  // also the canvas's, as between the words, and a tap, swipe or drag over text turns as elsewhere.
+  // Once a drag takes the pointer (the canvas captures it), its later events go to the canvas directly.
+  for (const type of ['pointerdown', 'pointermove', 'pointerup', 'pointercancel']) {
+    layer.addEventListener(type, (event) => {
+      if (event.pointerType !== 'touch' || !event.isTrusted) return;
+      // The same touch, at the time it happened (a tap, a long press and a fling are told apart by it).
+      const handed = new PointerEvent(type, event);
+      Object.defineProperty(handed, 'timeStamp', { value: event.timeStamp });
+      canvas.dispatchEvent(handed);
+    });
+  }
 
   // While a selection is dragged, its page takes every press (pdf.js's `selecting`), so the drag
   // stays on text, never on the canvas under the gaps between words.
