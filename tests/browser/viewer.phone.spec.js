@@ -4,7 +4,7 @@
 // clear of the sheet, reading mode by the Fullscreen API and by Read, and the reference images. Counted
 // and measured; needs Chromium and the demo's PDF (pdf-lib, pdf.js).
 import { test, expect } from '@playwright/test';
-import { PHONES } from './phone.js';
+import { PHONES, touchscreen } from './phone.js';
 
 /** Opens the demo with its PDF book and toolbar (the toolbar in view); `window.book` is the book. */
 async function openDemoPdf(page) {
@@ -248,10 +248,13 @@ for (const road of ['fullscreen', 'read']) {
     // A turn hides the bar; a middle tap shows it, another hides it.
     await page.evaluate(() => window.book.next());
     await expect(exit).toBeHidden();
-    const middletap = () => page.evaluate(() => {
-      const { width, height } = window.book.element.getBoundingClientRect();
-      window.book.dispatchEvent(new CustomEvent('middletap', { detail: { x: width / 2, y: height / 2 } }));
-    });
+    // A finger's tap on the middle of the open page (CDP touch), which the book says as `middletap`.
+    const touch = await touchscreen(page);
+    const middletap = async () => touch.tap(await page.evaluate(() => {
+      const canvas = window.book.element.querySelector('canvas').getBoundingClientRect();
+      const [place] = window.book.openPagePlaces();
+      return { x: canvas.left + place.x + place.width / 2, y: canvas.top + place.y + 0.4 * place.height };
+    }));
     await middletap();
     await expect(exit).toBeVisible();
     await middletap();

@@ -3,8 +3,10 @@
 // Both floors are the smallest books that do the job (issue 24), so this holds no options, no input, no resize.
 
 // The same page place as conecurl's at rest (web/src/engine/layout.js restingRect: the spread fitted
-// in the view with FRAME_MARGIN around it), so every contender shades the same number of page pixels.
-const FRAME_MARGIN = 1.3;
+// in the view with FRAME_MARGIN around it, a single page with SINGLE_FRAME_MARGIN), so every contender
+// shades the same number of page pixels. The margins are the engine's (cpp/core/book_constants.hpp).
+import { FRAME_MARGIN, SINGLE_FRAME_MARGIN } from '../../../dist/engine-constants.js';
+
 const PAGE_ASPECT = 640 / 800;  // the bench's page images (scripts/bench/page-images.mjs)
 // Pages kept decoded (2D) or as textures (WebGL) around the open spread: behind it and ahead of it.
 const KEEP_BEHIND = 2;
@@ -13,7 +15,8 @@ const KEEP_AHEAD = 5;
 /** Where the book lies in a view of width x height px: { spineX, top, pageWidth, pageHeight } (px). */
 export function bookPlace(width, height, display) {
   const across = display === 'double' ? 2 * PAGE_ASPECT : PAGE_ASPECT;
-  const scale = Math.min(width / (across * FRAME_MARGIN), height / FRAME_MARGIN);
+  const margin = display === 'double' ? FRAME_MARGIN : SINGLE_FRAME_MARGIN;
+  const scale = Math.min(width / (across * margin), height / margin);
   const left = (width - across * scale) / 2;
   const pageWidth = PAGE_ASPECT * scale;
   return { spineX: display === 'double' ? left + pageWidth : left, top: (height - scale) / 2, pageWidth, pageHeight: scale };
