@@ -4,19 +4,10 @@
 import { test, expect } from '@playwright/test';
 import { openReady } from './helpers.js';
 
-const FIXTURE = '/tests/browser/fixtures/flipbook-fixture.html';
-
-/** A single-display book of numbered pages in a box the size of the phone's viewport; its box and open page (CSS px). */
+/** A single-display book of numbered pages filling the phone's screen (phone-book-fixture.html); its box and open page (CSS px). */
 async function openPhoneBook(page, options = {}) {
-  await openReady(page, FIXTURE);
+  await openReady(page, '/tests/browser/fixtures/phone-book-fixture.html');
   return page.evaluate(async (options) => {
-    // The fixture has no viewport meta: a mobile browser would lay it out 980 px wide. A phone's page has
-    // one, and a container no wider than the screen (wider content widens the layout viewport).
-    const container = document.getElementById('container');
-    Object.assign(container.style, { width: '100vw', height: '100vh' });
-    const meta = Object.assign(document.createElement('meta'), { name: 'viewport', content: 'width=device-width, initial-scale=1' });
-    document.head.append(meta);
-    await new Promise((resolve) => { const check = () => (innerWidth === screen.width ? resolve() : requestAnimationFrame(check)); check(); });
     await window.openBook({ pages: 8, display: 'single', startPage: 2, ...options });
     await window.book.whenIdle();
     const canvas = window.book.surface.canvas.getBoundingClientRect();
