@@ -63,6 +63,13 @@ export function readingMode(book, { container, viewer, toolbar, busy, changed })
     else if (viaFullscreen && reachedFullscreen) leave();
   };
 
+  // What reading mode listens to while it lasts: [target, type, listener].
+  const listeners = [
+    [book, 'middletap', onMiddleTap], [book, 'turned', onTurned], [book, 'fullscreenchange', onFullscreen],
+    [doc, 'fullscreenchange', onFullscreen], [viewer, 'pointerdown', onUse], [viewer, 'keydown', onUse],
+    [viewer, 'focusin', onFocusIn], [doc, 'keydown', onKey],
+  ];
+
   function enter() {
     if (active) return;
     active = true;
@@ -72,14 +79,7 @@ export function readingMode(book, { container, viewer, toolbar, busy, changed })
     doc.documentElement.style.overflow = 'hidden';
     viewer.setAttribute('data-reading', '');
     toolbar.setReading(true);
-    book.addEventListener('middletap', onMiddleTap);
-    book.addEventListener('turned', onTurned);
-    book.addEventListener('fullscreenchange', onFullscreen);
-    doc.addEventListener('fullscreenchange', onFullscreen);
-    viewer.addEventListener('pointerdown', onUse);
-    viewer.addEventListener('keydown', onUse);
-    viewer.addEventListener('focusin', onFocusIn);
-    doc.addEventListener('keydown', onKey);
+    for (const [target, type, listener] of listeners) target.addEventListener(type, listener);
     viaFullscreen = canFullscreen(container);
     reachedFullscreen = false;
     if (viaFullscreen) {
@@ -98,14 +98,7 @@ export function readingMode(book, { container, viewer, toolbar, busy, changed })
     active = false;
     clearTimeout(timer);
     const focusWasIn = viewer.contains(doc.activeElement) || doc.activeElement === doc.body;
-    book.removeEventListener('middletap', onMiddleTap);
-    book.removeEventListener('turned', onTurned);
-    book.removeEventListener('fullscreenchange', onFullscreen);
-    doc.removeEventListener('fullscreenchange', onFullscreen);
-    viewer.removeEventListener('pointerdown', onUse);
-    viewer.removeEventListener('keydown', onUse);
-    viewer.removeEventListener('focusin', onFocusIn);
-    doc.removeEventListener('keydown', onKey);
+    for (const [target, type, listener] of listeners) target.removeEventListener(type, listener);
     if (saved.style === null) container.removeAttribute('style');
     else container.setAttribute('style', saved.style);
     doc.documentElement.style.overflow = saved.rootOverflow;
