@@ -87,6 +87,15 @@ window.bench = {
   async mounted() {
     return (await started).book;
   },
+  /**
+   * What the page draws into: the device pixel ratio and every canvas on screen with its drawing buffer
+   * (px) and CSS size, so the report can say which library draws at the device's ratio (none: a DOM book).
+   */
+  drawing() {
+    const canvases = [...document.querySelectorAll('canvas')].filter((canvas) => canvas.clientWidth > 0 && canvas.clientHeight > 0)
+      .map((canvas) => ({ width: canvas.width, height: canvas.height, cssWidth: canvas.clientWidth, cssHeight: canvas.clientHeight }));
+    return { devicePixelRatio: window.devicePixelRatio, canvases };
+  },
   /** Library-specific figures (conecurl: wasm heap, resident page textures). */
   async stats() {
     const { book } = await started;

@@ -1,6 +1,6 @@
 // One measurement of one library in one configuration, in a fresh Chromium: navigation to first
 // rendered book, 10 turns (rAF intervals, main-thread and per-process CPU per frame), 2 s idle CPU,
-// and memory after GC. Returns plain numbers; the report turns them into tables.
+// memory after GC, and the drawing buffers the page drew into. Returns plain numbers; the report turns them into tables.
 import { chromium } from '@playwright/test';
 import {
   busiestRenderer, cpuDelta, heapAfterGc, mainThread, processCpu, pssBytes, rendererAndGpu,
@@ -13,17 +13,18 @@ const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
 /**
  * @param {object} o
  * @param {string} o.url          harness URL with the query for this library and configuration
- * @param {{width: number, height: number}} o.viewport
+ * @param {object} o.use         Playwright context options of the configuration's screen: viewport and
+ *   deviceScaleFactor, and on a phone isMobile and hasTouch
  * @param {number} o.turns        turns to make
  * @param {number} o.askedTurnMs  the turn duration the page was asked for (returned with the result)
  * @param {number} o.turnTimeoutMs
  * @param {number} o.idleMs       how long idle CPU is sampled
  */
-export async function measureOnce({ url, viewport, turns, askedTurnMs, turnTimeoutMs, idleMs }) {
+export async function measureOnce({ url, use, turns, askedTurnMs, turnTimeoutMs, idleMs }) {
   const browser = await chromium.launch(chromiumLaunchOptions());
   const errors = [];
   try {
-    const context = await browser.newContext({ viewport, deviceScaleFactor: 1 });
+    const context = await browser.newContext(use);
     const page = await context.newPage();
     page.on('pageerror', (error) => errors.push(String(error)));
     page.on('console', (message) => { if (message.type() === 'error') errors.push(message.text()); });
@@ -57,6 +58,8 @@ export async function measureOnce({ url, viewport, turns, askedTurnMs, turnTimeo
     const wallTurns = (Date.now() - wallBefore) / 1000;
     const mainAfter = await mainThread(pageSession);
     const cpuAfter = await processCpu(browserSession);
+    // Read after the CPU sample, so it costs the turns nothing: the buffers as the turns drew into them.
+    const drawing = await page.evaluate(() => window.bench.drawing());
     const turnCpu = cpuDelta(cpuBefore, cpuAfter);
     const rendererPid = busiestRenderer(turnCpu);
     const turning = rendererAndGpu(turnCpu, rendererPid);
@@ -111,6 +114,7 @@ export async function measureOnce({ url, viewport, turns, askedTurnMs, turnTimeo
       memory: { jsHeapBytes, rendererPssBytes: rendererPss, gpuPssBytes: gpuPss },
       stats,
       turnStats,
+      drawing,
       wasm,
       errors,
     };

@@ -3,7 +3,9 @@
 // x repetition in a fresh browser (order alternated), then writes JSON, Markdown and an SVG chart.
 // With --baseline <dir> (another checkout of conecurl, e.g. a git worktree of an older commit with its dist/
 // built), that tree's conecurl is measured too, in the same run, and the report shows before and after.
-// Usage: node scripts/bench/run.mjs [--reps 3] [--configs double-20,single-1000] [--libs conecurl,floor-webgl]
+// Configurations: a double spread and a single page on a desktop screen with 20 and 1000 pages, and a phone
+// (390x844 at ratio 3, single page, 20 pages) judged by targets of its own.
+// Usage: node scripts/bench/run.mjs [--reps 3] [--configs double-20,single-1000,phone-20] [--libs conecurl,floor-webgl]
 //        [--duration 600] [--turns 10] [--port 8095] [--out bench-results] [--baseline ../conecurl-before] [--publish]
 import { spawn } from 'node:child_process';
 import fs from 'node:fs';
@@ -17,13 +19,20 @@ import { chromiumLaunchOptions } from '../chromium.mjs';
 import { summarize } from './metrics.mjs';
 import { writePageImages } from './page-images.mjs';
 import { frameChart, markdown, readmeTables, summarizeRuns } from './report.mjs';
+import { PHONES, phoneUse } from '../../tests/browser/phone.js';
 
 const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
+// `screen` says which targets judge a configuration (FLOOR_TARGETS in report.mjs); `use` is the Playwright
+// context each is measured in. The phone is the phone-portrait screen of the phone tests (tests/browser/phone.js).
+const desktop = (width, height) => ({ viewport: { width, height }, deviceScaleFactor: 1 });
+const PHONE = PHONES['phone-portrait'];
 const CONFIGS = [
-  { id: 'double-20', display: 'double', pages: 20, viewport: { width: 1600, height: 1100 }, label: 'Two-page spread, 1600x1100, 20 pages' },
-  { id: 'double-1000', display: 'double', pages: 1000, viewport: { width: 1600, height: 1100 }, label: 'Two-page spread, 1600x1100, 1000 pages' },
-  { id: 'single-20', display: 'single', pages: 20, viewport: { width: 800, height: 1100 }, label: 'Single page, 800x1100, 20 pages' },
-  { id: 'single-1000', display: 'single', pages: 1000, viewport: { width: 800, height: 1100 }, label: 'Single page, 800x1100, 1000 pages' },
+  { id: 'double-20', screen: 'desktop', display: 'double', pages: 20, use: desktop(1600, 1100), label: 'Two-page spread, 1600x1100, 20 pages' },
+  { id: 'double-1000', screen: 'desktop', display: 'double', pages: 1000, use: desktop(1600, 1100), label: 'Two-page spread, 1600x1100, 1000 pages' },
+  { id: 'single-20', screen: 'desktop', display: 'single', pages: 20, use: desktop(800, 1100), label: 'Single page, 800x1100, 20 pages' },
+  { id: 'single-1000', screen: 'desktop', display: 'single', pages: 1000, use: desktop(800, 1100), label: 'Single page, 800x1100, 1000 pages' },
+  { id: 'phone-20', screen: 'phone', display: 'single', pages: 20, use: phoneUse(PHONE),
+    label: `Phone, single page, ${PHONE.width}x${PHONE.height} at ratio ${phoneUse(PHONE).deviceScaleFactor} (mobile viewport, touch), 20 pages` },
 ];
 
 function parseArgs(argv) {
@@ -168,7 +177,7 @@ async function main() {
       const run = { rep, config: config.id, lib, loadavg: os.loadavg()[0] };
       try {
         const result = await measureOnce({
-          url, viewport: config.viewport, turns: options.turns, askedTurnMs: options.duration, turnTimeoutMs: 30000, idleMs: options.idleMs,
+          url, use: config.use, turns: options.turns, askedTurnMs: options.duration, turnTimeoutMs: 30000, idleMs: options.idleMs,
         });
         const wrong = (lib === 'conecurl' || lib === BASELINE) ? wrongWasm(result, lib, bundleDirs[lib], base) : null;
         if (wrong) throw new Error(wrong);

@@ -24,5 +24,5 @@ export async function mount(container, { urls, display, duration }) {
       for (const page of bitmaps.keys()) if (page < from || page > to) bitmaps.delete(page);
     },
   };
-  return floorBook({ urls, display, duration, width, height, surface });
+  return floorBook({ urls, display, duration, width, height, ratio, surface });
 }

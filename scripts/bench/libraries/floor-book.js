@@ -7,7 +7,8 @@
 // shades the same number of page pixels. The margins are the engine's (cpp/core/book_constants.hpp).
 import { FRAME_MARGIN, SINGLE_FRAME_MARGIN } from '../../../dist/engine-constants.js';
 
-const PAGE_ASPECT = 640 / 800;  // the bench's page images (scripts/bench/page-images.mjs)
+const PAGE_PIXELS = { width: 640, height: 800 };  // the bench's page images (scripts/bench/page-images.mjs)
+const PAGE_ASPECT = PAGE_PIXELS.width / PAGE_PIXELS.height;
 // Pages kept decoded (2D) or as textures (WebGL) around the open spread: behind it and ahead of it.
 const KEEP_BEHIND = 2;
 const KEEP_AHEAD = 5;
@@ -55,11 +56,18 @@ export const turnPages = (position, pageCount, display) => [
   ...new Set([0, Math.PI / 4, (3 * Math.PI) / 4, Math.PI].flatMap((angle) => scene(position, pageCount, display, angle).map((q) => q.page))),
 ];
 
-/** Page images decoded off the main thread (createImageBitmap) at the size they are drawn, kept near the open spread. */
+/**
+ * Page images decoded off the main thread (createImageBitmap) at the size they are drawn, in device pixels
+ * (the page's CSS size x the device pixel ratio), but never larger than the image, as conecurl's page
+ * loader (which never scales up): a phone at ratio 3 draws a page larger than the image, as does the
+ * single page at 800x1100. Kept near the open spread.
+ */
 export class PageImages {
   constructor(urls, width, height) {
     this.urls = urls;
-    this.size = { resizeWidth: Math.round(width), resizeHeight: Math.round(height), resizeQuality: 'high' }  // as conecurl's page loader;
+    this.size = width < PAGE_PIXELS.width
+      ? { resizeWidth: Math.round(width), resizeHeight: Math.round(height), resizeQuality: 'high' }
+      : {};  // drawn at the image's size or larger: decoded as it is
     this.decoded = new Map();  // page -> Promise<ImageBitmap>
   }
 
@@ -125,10 +133,10 @@ export function viewportCanvas(container) {
  * image before it is drawn (prepare(page, bitmap, images), awaited before a turn's first frame: WebGL
  * uploads there), says which pages it holds (has) and lets go of those outside a range (keep).
  */
-export async function floorBook({ urls, display, duration, width, height, surface }) {
+export async function floorBook({ urls, display, duration, width, height, ratio, surface }) {
   const pageCount = urls.length;
   const place = bookPlace(width, height, display);
-  const images = new PageImages(urls, place.pageWidth, place.pageHeight);
+  const images = new PageImages(urls, place.pageWidth * ratio, place.pageHeight * ratio);
   let position = 0;
   const restingPages = () => scene(position, pageCount, display).map((q) => q.page);
   const missing = (pages) => pages.filter((page) => !surface.has(page));

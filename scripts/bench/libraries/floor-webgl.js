@@ -81,5 +81,5 @@ export async function mount(container, { urls, display, duration }) {
       }
     },
   };
-  return floorBook({ urls, display, duration, width, height, surface });
+  return floorBook({ urls, display, duration, width, height, ratio, surface });
 }
