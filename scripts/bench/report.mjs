@@ -223,7 +223,8 @@ function evaluateTargets(runs, allConfigs, summary, ratios, loadBytes) {
   const configs = allConfigs.filter((c) => screenOf(c) === 'desktop');
   const targets = [];
   const perConfig = (metric, pick) => configs.map((c) => ({ config: c.id, value: pick(c) }));
-  const add = (id, name, limit, values, holds, note = '') => targets.push({ id, name, limit, values, holds, note });
+  // Nothing to judge (a run of the phone alone): null, "not measured", rather than a vacuous yes.
+  const add = (id, name, limit, values, holds, note = '') => targets.push({ id, name, limit, values, holds: values.length ? holds : null, note });
 
   const ratioValues = (metric) => perConfig(metric, (c) => ratios[c.id][metric]?.bestPeer?.median ?? NaN);
   const mainRatios = ratioValues('mainThreadMsPerFrame');
@@ -271,6 +272,9 @@ function evaluateTargets(runs, allConfigs, summary, ratios, loadBytes) {
 const fmt = (value, decimals) => (Number.isFinite(value) ? value.toFixed(decimals) : '–');
 const cell = (r, decimals) => (r ? (r.n > 1 && r.min !== r.max ? `${fmt(r.median, decimals)} (${fmt(r.min, decimals)}–${fmt(r.max, decimals)})` : fmt(r.median, decimals)) : '–');
 const verdict = (holds) => (holds === null ? 'not measured' : holds ? 'holds' : '**does not hold**');
+const peerMeasured = (t) => (t.values.length === 0 ? 'no desktop configuration in the run'
+  : t.values.map((v) => `${v.config}: ${typeof v.value === 'number' ? fmt(v.value, 2) : v.value}`).join('; '));
+const peerVerdict = (holds) => (holds === null ? 'not measured' : holds ? 'yes' : '**no**');
 // A target that says where its misses are explained points there when it does not hold.
 const floorVerdict = (t) => `${verdict(t.holds)}${t.holds === false && t.why ? ` (why: "${t.why}" in docs/benchmark.md)` : ''}`;
 
@@ -348,8 +352,8 @@ export function markdown({ meta, loadBytes, summary, ratios, targets, floorTarge
   lines.push('| target | limit | measured | holds |');
   lines.push('|---|---|---|---|');
   for (const t of targets) {
-    const measured = t.values.map((v) => `${v.config}: ${typeof v.value === 'number' ? fmt(v.value, 2) : v.value}`).join('; ');
-    lines.push(`| ${t.name} | ${t.limit} | ${measured}${t.note ? ` (${t.note})` : ''} | ${t.holds ? 'yes' : '**no**'} |`);
+    const measured = peerMeasured(t);
+    lines.push(`| ${t.name} | ${t.limit} | ${measured}${t.note ? ` (${t.note})` : ''} | ${peerVerdict(t.holds)} |`);
   }
   lines.push('');
   lines.push('## Load bytes (Vite production build of each library alone, minified)');
@@ -433,8 +437,8 @@ export function readmeTables({ meta, loadBytes, summary, targets, floorTargets =
   lines.push('| target | limit | measured | holds |');
   lines.push('|---|---|---|---|');
   for (const t of targets) {
-    const measured = t.values.map((v) => `${v.config}: ${typeof v.value === 'number' ? fmt(v.value, 2) : v.value}`).join('; ');
-    lines.push(`| ${t.name} | ${t.limit} | ${measured} | ${t.holds ? 'yes' : '**no**'} |`);
+    const measured = peerMeasured(t);
+    lines.push(`| ${t.name} | ${t.limit} | ${measured} | ${peerVerdict(t.holds)} |`);
   }
   return lines.join('\n');
 }

@@ -387,6 +387,12 @@ test('node: bench judges the phone configuration by its four targets and the des
   assert.equal(byId['phone-first-page'].values[0].detail, '630 vs 600 ms');
   // The targets against the peers stay the desktop's: no phone-20 value in any of them.
   for (const target of targets) assert.ok(target.values.every((v) => !String(v.config).includes('phone')), target.id);
+  // A run of the phone alone has nothing for the peer targets to judge but the load: "not measured", not a vacuous yes.
+  const alone = summarizeRuns(runs.filter((r) => r.config === 'phone-20'), [configs[1]], loadBytes);
+  assert.deepEqual(alone.targets.map((t) => [t.id, t.holds]), [['main-thread', null], ['gpu', null], ['turn', null], ['memory', null],
+    ['ready', null], ['idle', null], ['smooth', null], ['bytes', false]]);
+  assert.match(markdown({ meta: phoneFixture().meta, loadBytes, ...alone, configs: [configs[1]] }),
+    /^\| idle CPU of conecurl, renderer \+ GPU process \| <= 2% of a core \| no desktop configuration in the run \| not measured \|$/m);
 });
 
 test('node: bench report and published tables have a phone row, its targets\' verdicts with where the misses are explained, and the drawing buffers', () => {
