@@ -98,7 +98,87 @@ void BookRenderer::locate(Program& program) {
     program.known.fill(false);
 }
 
+BookRenderer::Kind BookRenderer::kindOf(const Program& program) const {
+    if (&program == &leafProgram_) return Kind::leaf;
+    if (&program == &shadowProgram_) return Kind::shadow;
+    if (&program == &stackProgram_) return Kind::stack;
+    if (&program == &flatProgram_) return Kind::flat;
+    if (&program == &receiveProgram_) return Kind::receive;
+    return Kind::composite;
+}
+
+bool BookRenderer::build(Program& program) {
+    if (program.id) return true;
+    if (!error_.empty()) return false;
+    const std::string prelude = kShaderPrelude;
+    const std::string leafVertex = std::string(shaders::cone_curl_glsl) + shaders::page_vert;
+    const std::string flatVertex = prelude + shaders::cone_curl_glsl + shaders::flat_page_vert;
+    ProgramSource source;
+    const Kind kind = kindOf(program);
+    switch (kind) {
+        case Kind::leaf:
+            source.vertex = prelude + leafVertex;
+            source.fragment = prelude + shaders::paper_light_glsl + shaders::page_frag;
+            // The drawing program itself is captured, so the readback test checks the very shader that draws.
+            source.transformFeedbackVaryings = {"vWorldPosition", "vNormal"};
+            break;
+        case Kind::shadow:
+            source.vertex = prelude + "#define SHADOW_PASS 1\n" + leafVertex;
+            source.fragment = prelude + shaders::shadow_frag;
+            break;
+        case Kind::stack:
+            source.vertex = prelude + shaders::stack_vert;
+            source.fragment = prelude + shaders::stack_frag;
+            break;
+        case Kind::flat:
+            source.vertex = flatVertex;
+            source.fragment = prelude + shaders::paper_light_glsl + shaders::flat_page_frag;
+            break;
+        case Kind::receive:
+            source.vertex = flatVertex;
+            source.fragment = prelude + shaders::shadow_receive_frag;
+            break;
+        case Kind::composite:
+            source.vertex = prelude + shaders::composite_vert;
+            source.fragment = prelude + shaders::composite_frag;
+            break;
+    }
+    program = Program{};
+    program.id = buildProgram(source, error_);
+    if (!program.id) return false;
+    locate(program);
+    // What never changes is set once, here: samplers, the light, the paper colour, the shadow's strength.
+    const float light[3] = {kLightDirection.x, kLightDirection.y, kLightDirection.z};
+    const float paper[3] = {kPaper[0] / 255.0f, kPaper[1] / 255.0f, kPaper[2] / 255.0f};
+    glUseProgram(program.id);
+    programInUse_ = program.id;
+    switch (kind) {
+        case Kind::leaf:
+            glUniform1i(program.location[uFacingTexture], 0);
+            glUniform1i(program.location[uAwayTexture], 1);
+            setUniform(program, uLightDirection, light, 3);
+            setUniform(program, uPaper, paper, 3);
+            break;
+        case Kind::flat:
+            glUniform1i(program.location[uFacingTexture], 0);
+            setUniform(program, uPaper, paper, 3);
+            break;
+        case Kind::receive: glUniform1i(program.location[uShadowMask], 2); break;
+        case Kind::composite: glUniform1i(program.location[uCache], 3); break;
+        case Kind::stack:
+            setUniform(program, uLightDirection, light, 3);
+            setUniform(program, uPaper, paper, 3);
+            break;
+        case Kind::shadow:
+            setUniform(program, uLightDirection, light, 3);
+            setUniform(program, uShadowStrength, kShadowStrength);
+            break;
+    }
+    return true;
+}
+
 void BookRenderer::useProgram(Program& program) {
+    if (!program.id && !build(program)) return;  // first use: linked now (error_ says why not)
     if (programInUse_ == program.id) return;
     glUseProgram(program.id);
     programInUse_ = program.id;
@@ -151,65 +231,8 @@ void BookRenderer::createGpuObjects() {
         glGetFloatv(kMaxTextureMaxAnisotropy, &maxAnisotropy_);
     }
 
-    const std::string vertex = std::string(shaders::cone_curl_glsl) + shaders::page_vert;
-    ProgramSource leaf;
-    leaf.vertex = kShaderPrelude + vertex;
-    leaf.fragment = std::string(kShaderPrelude) + shaders::paper_light_glsl + shaders::page_frag;
-    // The drawing program itself is captured, so the readback test checks the very shader that draws.
-    leaf.transformFeedbackVaryings = {"vWorldPosition", "vNormal"};
-    leafProgram_.id = buildProgram(leaf, error_);
-    if (!leafProgram_.id) return;
-    ProgramSource shadow;
-    shadow.vertex = std::string(kShaderPrelude) + "#define SHADOW_PASS 1\n" + vertex;
-    shadow.fragment = std::string(kShaderPrelude) + shaders::shadow_frag;
-    shadowProgram_.id = buildProgram(shadow, error_);
-    if (!shadowProgram_.id) return;
-    ProgramSource stack;
-    stack.vertex = std::string(kShaderPrelude) + shaders::stack_vert;
-    stack.fragment = std::string(kShaderPrelude) + shaders::stack_frag;
-    stackProgram_.id = buildProgram(stack, error_);
-    if (!stackProgram_.id) return;
-    const std::string flatVertex = std::string(kShaderPrelude) + shaders::cone_curl_glsl + shaders::flat_page_vert;
-    ProgramSource flat;
-    flat.vertex = flatVertex;
-    flat.fragment = std::string(kShaderPrelude) + shaders::paper_light_glsl + shaders::flat_page_frag;
-    flatProgram_.id = buildProgram(flat, error_);
-    if (!flatProgram_.id) return;
-    ProgramSource receive;
-    receive.vertex = flatVertex;
-    receive.fragment = std::string(kShaderPrelude) + shaders::shadow_receive_frag;
-    receiveProgram_.id = buildProgram(receive, error_);
-    if (!receiveProgram_.id) return;
-    ProgramSource composite;
-    composite.vertex = std::string(kShaderPrelude) + shaders::composite_vert;
-    composite.fragment = std::string(kShaderPrelude) + shaders::composite_frag;
-    compositeProgram_.id = buildProgram(composite, error_);
-    if (!compositeProgram_.id) return;
-    for (Program* program : {&leafProgram_, &shadowProgram_, &stackProgram_, &flatProgram_, &receiveProgram_, &compositeProgram_}) {
-        locate(*program);
-    }
-    // What never changes is set once, here: samplers, the light, the paper colour, the shadow's strength.
-    const float light[3] = {kLightDirection.x, kLightDirection.y, kLightDirection.z};
-    const float paper[3] = {kPaper[0] / 255.0f, kPaper[1] / 255.0f, kPaper[2] / 255.0f};
-    glUseProgram(leafProgram_.id);
-    glUniform1i(leafProgram_.location[uFacingTexture], 0);
-    glUniform1i(leafProgram_.location[uAwayTexture], 1);
-    setUniform(leafProgram_, uLightDirection, light, 3);
-    setUniform(leafProgram_, uPaper, paper, 3);
-    glUseProgram(flatProgram_.id);
-    glUniform1i(flatProgram_.location[uFacingTexture], 0);
-    setUniform(flatProgram_, uPaper, paper, 3);
-    glUseProgram(receiveProgram_.id);
-    glUniform1i(receiveProgram_.location[uShadowMask], 2);
-    glUseProgram(compositeProgram_.id);
-    glUniform1i(compositeProgram_.location[uCache], 3);
-    glUseProgram(stackProgram_.id);
-    setUniform(stackProgram_, uLightDirection, light, 3);
-    setUniform(stackProgram_, uPaper, paper, 3);
-    glUseProgram(shadowProgram_.id);
-    setUniform(shadowProgram_, uLightDirection, light, 3);
-    setUniform(shadowProgram_, uShadowStrength, kShadowStrength);
-    programInUse_ = shadowProgram_.id;
+    // The resting frame's programs now, so a missing feature fails create(); the turn's on first use.
+    if (!build(stackProgram_) || !build(flatProgram_)) return;
     // Every pass clears to transparent. Blending: the shadow mask's darkest-wins (GL_MAX, which ignores
     // the factors) and the shadow received on the resting pages, which multiplies their colour by the
     // output and keeps their alpha (GL_FUNC_ADD with these factors).

@@ -45,6 +45,8 @@ class BookRenderer {
 public:
     // Creates a WebGL2 context on the canvas found by `canvasTarget` (a CSS selector, or a name
     // registered in Emscripten's specialHTMLTargets). On failure ok() is false and error() says why.
+    // Only the resting frame's programs are linked here; a turn's are linked at their first draw (a
+    // program that fails then makes ok() false from that frame on).
     // antialias: multisampled edges (smooth curl silhouettes); a software rasterizer pays ~30% a frame for it.
     explicit BookRenderer(const std::string& canvasTarget, bool antialias = true);
     ~BookRenderer();
@@ -136,6 +138,11 @@ private:
         std::array<std::array<float, 16>, kUniformCount> value{};
         std::array<bool, kUniformCount> known{};
     };
+    // Which program a Program member is: each is compiled and linked on first use (useProgram), so a
+    // resting book links only the two its frame draws (stacks, flat pages) and a turn the others.
+    enum class Kind { leaf, shadow, stack, flat, receive, composite };
+    Kind kindOf(const Program& program) const;
+    bool build(Program& program);  // compiles, links and sets the constant uniforms; false (error_) on failure
     void locate(Program& program);
     // Sets `count` floats of uniform `u` of the program in use (1-4: a vector, 9 or 16: a matrix).
     void setUniform(Program& program, Uniform u, const float* values, int count);

@@ -498,3 +498,30 @@ test('browser: every turning frame lays the cached resting spread down: the rest
     for (const frame of result.frames) expect(frame).toEqual(result.resting);
   }
 });
+
+test('browser: a resting book links only the two programs its first frame draws, its first turn links the turning ones, and no program is linked twice (counts of linkProgram)', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const counts = await page.evaluate(async () => {
+    const linked = () => window.__counts.glByName.linkProgram ?? 0;
+    const links = [];
+    // Shadows on, then off: the turn links the leaf, its shadow and the shadow received (3), or the leaf alone.
+    for (const shadows of [true, false]) {
+      const before = linked();
+      await window.openBook({ pages: 8, display: 'double', duration: 150, startPage: 1, shadows });
+      await window.settle();
+      const resting = linked() - before;
+      if (!(await window.book.next())) throw new Error('the first turn did not land');
+      const firstTurn = linked() - before - resting;
+      if (!(await window.book.next()) || !(await window.book.prev())) throw new Error('a later turn did not land');
+      links.push({ shadows, resting, firstTurn, laterTurns: linked() - before - resting - firstTurn });
+    }
+    return links;
+  });
+  console.log(`programs linked: ${JSON.stringify(counts)}`);
+  // The stacks and the flat pages (BookRenderer::createGpuObjects); a turn the leaf, and with shadows
+  // its shadow and the shadow on the resting pages (the canvas is not multisampled here: no composite).
+  expect(counts).toEqual([
+    { shadows: true, resting: 2, firstTurn: 3, laterTurns: 0 },
+    { shadows: false, resting: 2, firstTurn: 1, laterTurns: 0 },
+  ]);
+});
