@@ -140,6 +140,7 @@ EMSCRIPTEN_BINDINGS(conecurl_renderer) {
         .function("gridErrorPixels", &BookRenderer::gridErrorPixels)
         .function("maxTextureSize", &BookRenderer::maxTextureSize)
         .function("setEdgeMarks", &bindings::setEdgeMarks)
+        .function("prepareTurn", &BookRenderer::prepareTurn)
         .function("recreateGpuObjects", &BookRenderer::recreateGpuObjects);
 #ifdef CONECURL_TEST_BINDINGS
     // The test build only: the vertex shader's output read back, and the grid's points.

@@ -177,6 +177,16 @@ bool BookRenderer::build(Program& program) {
     return true;
 }
 
+void BookRenderer::prepareTurn() {
+    if (!ok() || !makeCurrent()) return;
+    build(leafProgram_);  // each leaves its program in use (programInUse_ follows), as a frame's useProgram would
+    if (options_.shadows) {
+        build(shadowProgram_);
+        build(receiveProgram_);
+    }
+    if (canvasSamples_ > 0) build(compositeProgram_);
+}
+
 void BookRenderer::useProgram(Program& program) {
     if (!program.id && !build(program)) return;  // first use: linked now (error_ says why not)
     if (programInUse_ == program.id) return;

@@ -112,6 +112,11 @@ public:
     // Tabs and ticks on the page blocks' fore-edge (edge_marks_renderer.hpp), drawn over the stacks.
     EdgeMarksRenderer& edgeMarks() { return edgeMarks_; }
 
+    // Links the programs a turning frame draws that resting frames do not (the leaf; with shadows the
+    // shadow and the shadow received; on a multisampled canvas the composite), so the first turn does
+    // not pay for them: the JS layer calls it in idle time once the first view is shown.
+    void prepareTurn();
+
     // After a lost context is restored: recreates every GL object from CPU-side state. Page images
     // are GPU-only and must be set again (the JS layer keeps their sources).
     void recreateGpuObjects();

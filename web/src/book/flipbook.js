@@ -26,6 +26,9 @@ async function openPdfOption(options) {
   return openPdf(pdf, { workerSrc: pdfWorkerSrc });
 }
 
+// Calls `task` when the page is next idle (within a second at the latest), or soon where there is no requestIdleCallback.
+const whenIdle = (task) => (globalThis.requestIdleCallback ? requestIdleCallback(task, { timeout: 1000 }) : setTimeout(task, 50));
+
 function withoutPdfOptions(options) {
   const rest = { ...options };
   delete rest.pdf;
@@ -59,6 +62,9 @@ export class Flipbook extends BookController {
       throw await this._fail(error);
     }
     this._events.releaseSoon();  // what happened while loading the first view is heard from now on
+    // The first view is shown with the programs it draws (BookRenderer links each on first use): the
+    // ones a turn draws are linked when the page is next idle, so neither the first page nor the first turn waits.
+    whenIdle(() => { if (!this._destroyed) this._surface?.prepareTurn?.(); });
     return this;
   }
 

@@ -210,6 +210,8 @@ export interface BookRenderer {
   /** Fixed grid rows; 0 (default) chooses them from the canvas size for < 0.5 px error. */
   setGridRows(rows: number): void;
   maxTextureSize(): number;
+  /** Link the programs a turning frame draws that resting frames do not (each is otherwise linked at its first draw). */
+  prepareTurn(): void;
   /** After a context restore: rebuild every GL object (page images must be set again). */
   recreateGpuObjects(): void;
   /** Marks drawn on the page blocks' fore-edge from the next frame on: index tabs and search ticks at their pages' leaves; [] none. */

@@ -78,8 +78,7 @@ export class BookView {
   /** Textures are copies: a page's image may be closed once set (see onImagesLost). */
   get copiesImages() { return true; }
   get pageCount() { return this.book.pageCount(); }
-  /** 'single' or 'double'. */
-  get display() { return this.book.isSingle() ? 'single' : 'double'; }
+  get display() { return this.book.isSingle() ? 'single' : 'double'; }  // 'single' or 'double'
   /** Where the book settles once turns in flight land: a spread (double) or a page (single). */
   get position() { return this.book.position(); }
   lastPosition() { return this.book.lastPosition(); }
@@ -262,6 +261,7 @@ export class BookView {
   }
 
   readPixels() { return this.renderer.readPixels(); }
+  prepareTurn() { this.renderer?.prepareTurn(); }  // links now the programs a turn draws and a resting book does not
 
   /** Asks for a frame (none while the context is lost, unless parked: context-keeper.js). */
   requestRender() {
