@@ -261,7 +261,7 @@ export class BookView {
   }
 
   readPixels() { return this.renderer.readPixels(); }
-  prepareTurn() { this.renderer?.prepareTurn(); }  // links now the programs a turn draws and a resting book does not
+  prepareTurn() { if (!this._context.lost) this.renderer?.prepareTurn(); }  // links a turn's programs now (not on a lost context)
 
   /** Asks for a frame (none while the context is lost, unless parked: context-keeper.js). */
   requestRender() {
