@@ -64,7 +64,8 @@ export class Flipbook extends BookController {
     this._events.releaseSoon();  // what happened while loading the first view is heard from now on
     // The first view is shown with the programs it draws (BookRenderer links each on first use): the
     // ones a turn draws are linked when the page is next idle, so neither the first page nor the first turn waits.
-    whenIdle(() => { if (!this._destroyed) this._surface?.prepareTurn?.(); });
+    const prepare = () => { if (!this._destroyed && this._surface?.prepareTurn?.() === false) whenIdle(prepare); };
+    whenIdle(prepare);
     return this;
   }
 

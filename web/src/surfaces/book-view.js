@@ -79,17 +79,13 @@ export class BookView {
   get copiesImages() { return true; }
   get pageCount() { return this.book.pageCount(); }
   get display() { return this.book.isSingle() ? 'single' : 'double'; }  // 'single' or 'double'
-  /** Where the book settles once turns in flight land: a spread (double) or a page (single). */
-  get position() { return this.book.position(); }
+  get position() { return this.book.position(); }  // where it settles once turns land: a spread (double) or a page (single)
   lastPosition() { return this.book.lastPosition(); }
-  /** The position that shows page `page`. */
-  positionOfPage(page) { return this.book.positionOfPage(page); }
-  /** The first visible page at the settled position. */
-  firstVisiblePage() { return this.book.firstVisiblePage(); }
+  positionOfPage(page) { return this.book.positionOfPage(page); }  // the position that shows page `page`
+  firstVisiblePage() { return this.book.firstVisiblePage(); }  // at the settled position
   /** Pages drawn now: the resting ones and both sides of every leaf in flight. */
   pagesOnScreen() { return this.engine.pagesOnScreen(this.book); }
-  /** View magnification, 1 to MAX_ZOOM. */
-  get zoom() { return this.book.zoom().scale; }
+  get zoom() { return this.book.zoom().scale; }  // view magnification, 1 to MAX_ZOOM
   get maxTextureSize() { return this.renderer.maxTextureSize(); }
   get animating() { return this.book.animating(); }
   /** Frames drawn so far (the book draws only while something moves). */
@@ -261,7 +257,11 @@ export class BookView {
   }
 
   readPixels() { return this.renderer.readPixels(); }
-  prepareTurn() { if (!this._context.lost) this.renderer?.prepareTurn(); }  // links a turn's programs now (not on a lost context)
+  /** Links a turn's programs now (true), or says false while a frame is coming; a turn under way links its own. */
+  prepareTurn() {
+    if (this._frames.moving || this._context.lost || !this.renderer) return true;
+    return this._frames.pending ? false : (this.renderer.prepareTurn(), true);
+  }
 
   /** Asks for a frame (none while the context is lost, unless parked: context-keeper.js). */
   requestRender() {

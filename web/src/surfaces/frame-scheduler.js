@@ -20,6 +20,8 @@ export class FrameScheduler {
 
   /** The last frame still moved: the next one comes anyway. */
   get moving() { return this._moving; }
+  /** A frame is asked for and not yet drawn. */
+  get pending() { return this._frame !== 0; }
 
   /** Asks for a frame, unless one is asked for already or none may run now. */
   request() {
