@@ -5,7 +5,8 @@ import { directionFacts } from '../engine/direction.js';
 const TAP_SLOP = 10;          // CSS px a finger may wander and still tap
 const TAP_MAX_MS = 500;
 const SWIPE_MIN = 40;         // CSS px of travel that make a stroke a swipe, slow or fast
-const CLICK_AFTER_TOUCH_MS = 800;  // the compatibility click that follows a tap is not a second tap
+/** A click or dblclick this soon after a touch is the browser's compatibility echo of it, not a new press. */
+export const CLICK_AFTER_TOUCH_MS = 800;
 const SWIPE_DOMINANCE = 1.5;  // a swipe travels this much further along the turn than across it
 
 /**

@@ -3,10 +3,10 @@
 // dragging to pan while zoomed. It only reads the DOM; what a zoom or a pan does is the book's
 // (book/book-zoom.js, through its surface).
 import { isZoomed } from '../engine/layout.js';
+import { CLICK_AFTER_TOUCH_MS } from './tap-swipe.js';
 
 const WHEEL_ZOOM_PER_PIXEL = 0.0025;  // zoom factor exp(-deltaY * this): a notch of 100 px is about 1.28x
 const DOUBLE_CLICK_ZOOM = 2;
-const CLICK_AFTER_TOUCH_MS = 800;  // a dblclick this soon after a touch is the browser's echo of a double tap
 
 /** The scale a double-click or double tap asks for from `scale`: DOUBLE_CLICK_ZOOM, or back to 1 when zoomed. */
 export const doubleTapScale = (scale) => (isZoomed(scale) ? 1 : DOUBLE_CLICK_ZOOM);
