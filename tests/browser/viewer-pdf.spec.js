@@ -131,7 +131,9 @@ test('browser: Download and Print call the book (their cancelable events heard),
     }
   });
   const toolbar = page.getByRole('toolbar');
+  // download is heard once the PDF's bytes are at hand (it may come after a Print clicked at once): wait for each.
   await toolbar.getByRole('button', { name: 'Download' }).click();
+  await page.waitForFunction(() => window.heard.length === 1);
   await toolbar.getByRole('button', { name: 'Print' }).click();
   await page.waitForFunction(() => window.heard.length === 2);
   expect(await page.evaluate(() => window.heard)).toEqual(['download', 'print']);
