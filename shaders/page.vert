@@ -1,8 +1,9 @@
 // Leaf vertex shader: the static grid holds flat page coordinates; the cone deformation and the
 // paper's finite-difference normal are computed here from the curl uniforms, then the leaf is placed
 // in the world (spine position, mirroring for backward turns). The renderer prepends
-// "#version 300 es", precision, and cone_curl.glsl; with SHADOW_PASS defined the leaf is instead
-// flattened onto the page plane along the light, for the shadow mask.
+// "#version 300 es", precision, and cone_curl.glsl; with SHADOW_PASS defined the leaf, grown by its
+// shadow's half penumbra past its free edges, is instead flattened onto the page plane along the light,
+// for the shadow mask (shadow.frag fades it out across its edges).
 
 uniform vec3 uCurl;            // theta, apexY, rho (sanitized in C++)
 uniform vec4 uCurlTrig;        // sin theta, cos theta, sin rho, cos rho: the same for every vertex, so from C++
@@ -12,6 +13,8 @@ uniform mat4 uPageToWorld;     // rigid placement of the leaf (may mirror)
 uniform mat4 uViewProjection;
 #ifdef SHADOW_PASS
 uniform vec3 uLightDirection;  // unit, towards the light
+uniform vec2 uPageSize;
+uniform float uPenumbra;       // the shadow's half penumbra, a fraction of the page width
 #endif
 
 layout(location = 0) in vec2 aPagePoint;  // flat page coordinates: x from the spine, y along it
@@ -21,14 +24,20 @@ out vec3 vNormal;              // world normal of the +z side; also captured
 out vec2 vPagePoint;
 
 void main() {
+    vec2 q = aPagePoint;
+#ifdef SHADOW_PASS
+    // Stretched so the fore-edge, head and foot lie a half penumbra out (the spine stays where it is).
+    float grow = uPenumbra * uPageSize.x;
+    q = vec2(q.x * (1.0 + grow / uPageSize.x), (q.y - 0.5 * uPageSize.y) * (1.0 + 2.0 * grow / uPageSize.y) + 0.5 * uPageSize.y);
+#endif
     vec3 p;
     vec3 n = vec3(0.0, 0.0, 1.0);  // the shadow mask needs no normal: no neighbours to curl
     if (uLeaf.x > 0.5) {
         // A flat page is its own cone at theta = 90 deg: only the turn about the spine is left.
-        p = rotateAboutSpine(vec3(aPagePoint, 0.0), uCurlTrig.zw);
+        p = rotateAboutSpine(vec3(q, 0.0), uCurlTrig.zw);
         n = rotateAboutSpine(n, uCurlTrig.zw);
     } else {
-        p = curlPoint(aPagePoint, uCurl.y, uCurlTrig);
+        p = curlPoint(q, uCurl.y, uCurlTrig);
 #ifndef SHADOW_PASS
         // Samuel, eqs. (1)-(3): project two neighbours a small step away and cross the differences.
         vec3 ps = curlPoint(aPagePoint + vec2(uNormalStep, 0.0), uCurl.y, uCurlTrig);
@@ -40,7 +49,7 @@ void main() {
     vNormal = mat3(uPageToWorld) * n;
     vec4 world = uPageToWorld * vec4(p, 1.0);
     vWorldPosition = world.xyz;
-    vPagePoint = aPagePoint;
+    vPagePoint = q;
 #ifdef SHADOW_PASS
     // Where the light ray through this point meets the page plane: the farther up, the farther away.
     world.xy -= uLightDirection.xy * (world.z / uLightDirection.z);

@@ -35,8 +35,8 @@ std::unique_ptr<BookRenderer> createRenderer(const std::string& canvasTarget, va
     return renderer;
 }
 
-// { lighting, shadows, gutter }: booleans; missing keys keep their value. (The paper's thickness is the
-// Book's: Book.setThickness.)
+// { lighting, shadows, gutter }: booleans; movingScale: a number in (0, 1]; missing keys keep their
+// value. (The paper's thickness is the Book's: Book.setThickness.)
 void setOptions(BookRenderer& r, val options) {
     RenderOptions next = r.options();
     auto flag = [&options](const char* name, bool& out) {
@@ -48,6 +48,12 @@ void setOptions(BookRenderer& r, val options) {
     flag("lighting", next.lighting);
     flag("shadows", next.shadows);
     flag("gutter", next.gutter);
+    const val scale = options["movingScale"];
+    if (!scale.isUndefined()) {
+        const double value = scale.isNumber() ? scale.as<double>() : 0.0;
+        if (!(value > 0.0 && value <= 1.0)) js::throwError("RangeError", "movingScale must be a number above 0, at most 1");
+        next.movingScale = value;
+    }
     r.setOptions(next);
 }
 
@@ -130,6 +136,7 @@ EMSCRIPTEN_BINDINGS(conecurl_renderer) {
         .function("residentPageImages", &BookRenderer::residentPageImages)
         .function("draw", select_overload<void(const Book&)>(&BookRenderer::draw))
         .function("framesDrawn", &BookRenderer::framesDrawn)
+        .function("lastFrameScale", &BookRenderer::lastFrameScale)
         .function("restingSpreadDraws", &BookRenderer::restingSpreadDraws)
         .function("readPixels", &readPixels)
         .function("gridColumns", optional_override([](BookRenderer& r) { return r.grid().columns; }))

@@ -2,7 +2,8 @@
 // constant uniforms and samplers are set once after linking. The page grid is a static buffer
 // rebuilt only when the canvas size calls for a different resolution. What rests while leaves move
 // is drawn once into a cached texture (draw(): the resting spread), so a turning frame shades only
-// the moving leaves and the shadow they cast.
+// the moving leaves and the shadow they cast; at a movingScale below 1 it does so offscreen on fewer
+// pixels, and one scaled blit fills the canvas.
 #include "book_renderer.hpp"
 
 #include <emscripten/em_js.h>
@@ -45,7 +46,8 @@ constexpr GLenum kTextureMaxAnisotropy = 0x84FE;     // EXT_texture_filter_aniso
 constexpr GLenum kMaxTextureMaxAnisotropy = 0x84FF;
 constexpr double kNormalStepOfHeight = 1e-3;         // the math doc's finite-difference step
 constexpr float kShadowStrength = 0.45f;
-constexpr int kShadowDownscale = 2;                  // the mask is blurred anyway
+constexpr float kShadowPenumbra = 0.015f;            // half the shadow's soft edge, a fraction of the page width
+constexpr int kShadowDownscale = 2;                  // the mask's edge is soft as drawn
 constexpr int kDefaultRows = 48;                     // before the first canvas size is known
 const glm::vec3 kLightDirection = glm::normalize(glm::vec3(-0.35f, 0.45f, 1.0f));  // upper left, in front
 constexpr std::uint8_t kPaper[4] = {kPaperRed, kPaperGreen, kPaperBlue, 255};
@@ -92,7 +94,7 @@ void BookRenderer::locate(Program& program) {
     static constexpr const char* kNames[kUniformCount] = {
         "uCurl", "uCurlTrig", "uNormalStep", "uPageToWorld", "uViewProjection", "uLightDirection",
         "uFacingTexture", "uAwayTexture", "uFacingUv", "uAwayUv", "uPageSize", "uEye", "uLighting", "uGutter",
-        "uLeaf", "uShadowMask", "uShadowTexel", "uViewportInverse", "uPaper", "uShadowStrength", "uPageWidth",
+        "uLeaf", "uShadowMask", "uViewportInverse", "uPaper", "uShadowStrength", "uPenumbra",
         "uFlatLight", "uCache"};
     for (int u = 0; u < kUniformCount; ++u) program.location[u] = glGetUniformLocation(program.id, kNames[u]);
     program.known.fill(false);
@@ -172,6 +174,7 @@ bool BookRenderer::build(Program& program) {
         case Kind::shadow:
             setUniform(program, uLightDirection, light, 3);
             setUniform(program, uShadowStrength, kShadowStrength);
+            setUniform(program, uPenumbra, kShadowPenumbra);
             break;
     }
     return true;
@@ -282,6 +285,10 @@ void BookRenderer::createGpuObjects() {
     glGenFramebuffers(1, &cacheFramebuffer_);
     glGenTextures(1, &cacheTexture_);
     cacheWidth_ = cacheHeight_ = 0;
+    glGenFramebuffers(1, &scaledFramebuffer_);
+    glGenTextures(1, &scaledTexture_);
+    glGenRenderbuffers(1, &scaledDepth_);
+    scaledWidth_ = scaledHeight_ = 0;
     invalidateRestingSpread();
 }
 
@@ -294,6 +301,9 @@ void BookRenderer::destroyGpuObjects() {
     glDeleteProgram(compositeProgram_.id);
     glDeleteFramebuffers(1, &cacheFramebuffer_);
     glDeleteTextures(1, &cacheTexture_);
+    glDeleteFramebuffers(1, &scaledFramebuffer_);
+    glDeleteTextures(1, &scaledTexture_);
+    glDeleteRenderbuffers(1, &scaledDepth_);
     glDeleteBuffers(1, &stackBuffer_);
     glDeleteVertexArrays(1, &vertexArray_);
     glDeleteBuffers(1, &vertexBuffer_);
@@ -321,11 +331,14 @@ void BookRenderer::forgetGpuObjects() {
     compositeProgram_ = Program{};
     cacheFramebuffer_ = cacheTexture_ = 0;
     cacheWidth_ = cacheHeight_ = 0;
+    scaledFramebuffer_ = scaledTexture_ = scaledDepth_ = 0;
+    scaledWidth_ = scaledHeight_ = 0;
     invalidateRestingSpread();
     cachedTextures_.fill(0);
     blendEquation_ = 0;
     stackBuffer_ = 0;
     stackVertexCount_ = 0;
+    stackBox_ = WorldBox{};
     stackKey_ = StackKey{};
     programInUse_ = 0;
     boundTextures_.fill(0);
@@ -552,6 +565,7 @@ void BookRenderer::updateStacks(const Book& book) {
     ++stackGeneration_;
     const std::vector<float> mesh = stackMesh(c, bookStacks(c, key.leaves, key.thickness));
     stackVertexCount_ = static_cast<int>(mesh.size()) / kStackVertexFloats;
+    stackBox_ = WorldBox::of(mesh, kStackVertexFloats);
     if (stackVertexCount_ == 0) return;
     glBindBuffer(GL_ARRAY_BUFFER, stackBuffer_);
     glBufferData(GL_ARRAY_BUFFER, mesh.size() * sizeof(float), mesh.data(), GL_STATIC_DRAW);
@@ -621,17 +635,81 @@ void BookRenderer::ensureCacheTarget(int width, int height) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void BookRenderer::composeRestingSpread() {
-    if (canvasSamples_ == 0) {
+WorldBox BookRenderer::restingBox(const Book& book, const BookFrame& frame) const {
+    const BookConfig& c = book.config();
+    WorldBox box = stackBox_;
+    box.add(edgeMarks_.worldBox());
+    for (int i = 0; i < frame.count; ++i) {
+        const LeafDraw& leaf = frame.leaves[i];
+        if (!leaf.resting) continue;
+        const glm::mat4 pageToWorld(placeLeaf(c.binding, leaf.mirrored, c.pageHeight, leaf.flippedY).pageToWorld);
+        const float x = static_cast<float>(c.pageWidth * std::cos(leaf.curl.rho));  // rho is 0 or pi at rest
+        const float z = static_cast<float>(c.pageWidth * std::sin(leaf.curl.rho));
+        for (const float y : {0.0f, static_cast<float>(c.pageHeight)}) {
+            box.add(glm::vec3(pageToWorld * glm::vec4(0.0f, y, 0.0f, 1.0f)));
+            box.add(glm::vec3(pageToWorld * glm::vec4(x, y, z, 1.0f)));
+        }
+    }
+    return box;
+}
+
+void BookRenderer::composeRestingSpread(GLuint target) {
+    // Only the pixels that hold what rests: the rest of the target was cleared.
+    const auto [x, y, w, h] = restingRect_;
+    if (w == 0 || h == 0) return;
+    if (target != 0 || canvasSamples_ == 0) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, cacheFramebuffer_);
-        glBlitFramebuffer(0, 0, cacheWidth_, cacheHeight_, 0, 0, cacheWidth_, cacheHeight_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);  // readPixels reads the canvas
+        glBlitFramebuffer(x, y, x + w, y + h, x, y, x + w, y + h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, target);  // readPixels reads the canvas
         return;
     }
     // A multisampled drawing buffer takes no blit: one triangle over it copies each pixel's texel.
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x, y, w, h);
+    drawComposite(cacheTexture_, cacheWidth_, cacheHeight_);
+    glDisable(GL_SCISSOR_TEST);
+}
+
+void BookRenderer::drawComposite(GLuint texture, int width, int height) {
     useProgram(compositeProgram_);
-    bindTexture(3, cacheTexture_);
+    bindTexture(3, texture);
+    const float viewportInverse[2] = {1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)};
+    setUniform(compositeProgram_, uViewportInverse, viewportInverse, 2);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void BookRenderer::ensureScaledTarget(int width, int height) {
+    if (width == scaledWidth_ && height == scaledHeight_) return;
+    scaledWidth_ = width;
+    scaledHeight_ = height;
+    bindTexture(3, scaledTexture_, true);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    // Linear: scaled up, each canvas pixel blends the four texels about it.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glBindRenderbuffer(GL_RENDERBUFFER, scaledDepth_);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, scaledFramebuffer_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, scaledTexture_, 0);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, scaledDepth_);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void BookRenderer::presentScaledFrame(int width, int height) {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);
+    if (canvasSamples_ > 0) {
+        glDisable(GL_DEPTH_TEST);
+        drawComposite(scaledTexture_, width, height);
+        return;
+    }
+    // Cleared first, as in draw(): the browser's lazy clear of the canvas would wipe a blit made before.
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, scaledFramebuffer_);
+    glBlitFramebuffer(0, 0, scaledWidth_, scaledHeight_, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
 }
 
 void BookRenderer::draw(const Book& book, const BookFrame& frame) {
@@ -661,34 +739,44 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
         glClear(GL_COLOR_BUFFER_BIT);
         drawRestingSpread(book, frame, camera);
         lastViewProjection_ = camera.viewProjection;
+        lastFrameScale_ = 1.0;
         return;
     }
+    // Where the moving frame is drawn: the canvas, or at movingScale offscreen, scaled up at the end.
+    // The camera is the canvas's: the offscreen target is the canvas, stretched.
+    const int targetWidth = std::max(1, static_cast<int>(std::lround(width * options_.movingScale)));
+    const int targetHeight = std::max(1, static_cast<int>(std::lround(height * options_.movingScale)));
+    const bool scaled = targetWidth < width || targetHeight < height;
+    if (scaled) ensureScaledTarget(targetWidth, targetHeight);
+    const GLuint target = scaled ? scaledFramebuffer_ : 0;
+    lastFrameScale_ = static_cast<double>(targetWidth) / width;
     const bool shadows = options_.shadows;
     const GLsizei indexCount = static_cast<GLsizei>(grid_.indices.size());
     if (shadows) {
         // Shadow mask: every lifted leaf flattened along the light, the darkest wins where they overlap.
-        ensureShadowTarget(width, height);
+        ensureShadowTarget(targetWidth, targetHeight);
         glBindFramebuffer(GL_FRAMEBUFFER, shadowFramebuffer_);
         glViewport(0, 0, shadowWidth_, shadowHeight_);
         glClear(GL_COLOR_BUFFER_BIT);
         glEnable(GL_BLEND);
         setBlendEquation(GL_MAX);
         useProgram(shadowProgram_);
-        setUniform(shadowProgram_, uPageWidth, static_cast<float>(book.config().pageWidth));
+        const float pageSize[2] = {static_cast<float>(book.config().pageWidth), static_cast<float>(book.config().pageHeight)};
+        setUniform(shadowProgram_, uPageSize, pageSize, 2);
         for (int i = 0; i < frame.count; ++i) {
             if (frame.leaves[i].resting) continue;
             setPlacementUniforms(shadowProgram_, book, frame.leaves[i], camera);
             glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
         }
         glDisable(GL_BLEND);
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
     }
-    glViewport(0, 0, width, height);
+    ensureCacheTarget(targetWidth, targetHeight);  // before the target is bound: it binds and unbinds the cache's
+    glBindFramebuffer(GL_FRAMEBUFFER, target);
+    glViewport(0, 0, targetWidth, targetHeight);
 
-    // What rests: drawn into the canvas once, as a resting book draws it, and kept in the cache; the
+    // What rests: drawn into the target once, as a resting book draws it, and kept in the cache; the
     // frames after lay the cache down, until what rests changes (restingKey).
-    const RestingKey key = restingKey(book, frame, camera, width, height);
-    ensureCacheTarget(width, height);
+    const RestingKey key = restingKey(book, frame, camera, targetWidth, targetHeight);
     // The depth, for the moving leaves below. Cleared first: a browser clears a composited canvas
     // lazily at the frame's first clear or draw, which would wipe a blit made before it.
     glDepthMask(GL_TRUE);
@@ -704,9 +792,11 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
             invalidateRestingSpread();
         } else {
             glBindFramebuffer(GL_DRAW_FRAMEBUFFER, cacheFramebuffer_);
-            glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+            glBlitFramebuffer(0, 0, targetWidth, targetHeight, 0, 0, targetWidth, targetHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+            glBindFramebuffer(GL_FRAMEBUFFER, target);
             restingKey_ = key;
+            // Two pixels about it: the edges' antialiasing and rounding.
+            restingRect_ = pixelRect(restingBox(book, frame), camera.viewProjection, targetWidth, targetHeight, 2);
         }
         cachedTextures_.fill(0);
         for (int i = 0, n = 0; i < frame.count; ++i) {
@@ -715,19 +805,17 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
             cachedTextures_[n++] = textureFor(frame.leaves[i].backPage);
         }
     } else {
-        glClear(GL_DEPTH_BUFFER_BIT);
-        composeRestingSpread();
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        composeRestingSpread(target);
     }
     lastViewProjection_ = camera.viewProjection;
 
     if (shadows) {
-        // The shadow on the resting pages: their colour times (1 - the blurred mask), drawn over the
+        // The shadow on the resting pages: their colour times (1 - the mask), drawn over the
         // cache. Where a moving leaf covers them it is drawn over this.
         useProgram(receiveProgram_);
         bindTexture(2, shadowTexture_);
-        const float texel[2] = {1.0f / static_cast<float>(shadowWidth_), 1.0f / static_cast<float>(shadowHeight_)};
-        const float viewportInverse[2] = {1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)};
-        setUniform(receiveProgram_, uShadowTexel, texel, 2);
+        const float viewportInverse[2] = {1.0f / static_cast<float>(targetWidth), 1.0f / static_cast<float>(targetHeight)};
         setUniform(receiveProgram_, uViewportInverse, viewportInverse, 2);
         glEnable(GL_BLEND);
         setBlendEquation(GL_FUNC_ADD);
@@ -746,6 +834,7 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
     for (int i = 0; i < frame.count; ++i) {
         if (!frame.leaves[i].resting) drawLeaf(book, frame.leaves[i], camera);
     }
+    if (scaled) presentScaledFrame(width, height);
 }
 
 RgbaImage BookRenderer::readPixels() {

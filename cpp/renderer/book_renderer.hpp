@@ -2,6 +2,7 @@
 // light, gutter and shadow. It owns GL objects only; what to draw comes from Book::frame(). While
 // leaves move, what rests (stacks, resting pages, their light) is drawn once into a cached texture and
 // each frame lays it down with one blit or draw; only the moving leaves and their shadow are shaded.
+// Moving frames may be drawn at a fraction of the canvas's pixels offscreen and scaled up (movingScale).
 #pragma once
 
 #include <GLES3/gl3.h>
@@ -23,6 +24,7 @@
 #include "edge_marks_renderer.hpp"
 #include "leaf_placement.hpp"
 #include "page_grid.hpp"
+#include "world_box.hpp"
 
 namespace conecurl {
 
@@ -39,6 +41,9 @@ struct RenderOptions {
     bool lighting = true;
     bool shadows = true;
     bool gutter = true;
+    // The share of the drawing buffer's width and height a frame with moving leaves is drawn at, in
+    // (0, 1]: below 1 it is drawn offscreen and scaled up to the canvas. Resting frames are always whole.
+    double movingScale = 1.0;
 };
 
 class BookRenderer {
@@ -89,6 +94,9 @@ public:
     // The same, with the frame the caller composed already (the frame loop composes it once).
     void draw(const Book& book, const BookFrame& frame);
     int framesDrawn() const { return framesDrawn_; }
+    // The scale the last frame was drawn at: movingScale's (rounded to whole pixels) while leaves
+    // moved, 1 for a resting frame.
+    double lastFrameScale() const { return lastFrameScale_; }
     // How many times the resting spread was drawn into its cache: once when a turn starts, then again
     // only when what rests changes (a page image, a leaf that lands or lifts, size, camera, options).
     int restingSpreadDraws() const { return restingSpreadDraws_; }
@@ -133,7 +141,7 @@ private:
     enum Uniform : int {
         uCurl, uCurlTrig, uNormalStep, uPageToWorld, uViewProjection, uLightDirection, uFacingTexture,
         uAwayTexture, uFacingUv, uAwayUv, uPageSize, uEye, uLighting, uGutter, uLeaf, uShadowMask,
-        uShadowTexel, uViewportInverse, uPaper, uShadowStrength, uPageWidth, uFlatLight, uCache, kUniformCount
+        uViewportInverse, uPaper, uShadowStrength, uPenumbra, uFlatLight, uCache, kUniformCount
     };
     // A linked program, its uniform locations (looked up once: the per-frame path makes no string
     // lookups) and the value each uniform was last given, so an unchanged value costs no GL call.
@@ -173,8 +181,17 @@ private:
     static constexpr double kNoKey = -1.0e300;
     RestingKey restingKey(const Book& book, const BookFrame& frame, const Camera& camera, int width, int height) const;
     void ensureCacheTarget(int width, int height);
-    // Lays the cached resting spread over the drawing buffer: a blit, or a draw on a multisampled canvas.
-    void composeRestingSpread();
+    // Lays the cached resting spread over the target (`target`: 0 for the canvas, else the scaled
+    // frame's framebuffer): a blit, or a draw on a multisampled canvas.
+    void composeRestingSpread(GLuint target);
+    // Where what rests lies in the world: the resting pages, the stacks' faces and the marks on them.
+    WorldBox restingBox(const Book& book, const BookFrame& frame) const;
+    // The offscreen target of a scaled moving frame (colour texture and depth), then its scaling up
+    // into the canvas: a linear blit, or a draw on a multisampled canvas.
+    void ensureScaledTarget(int width, int height);
+    void presentScaledFrame(int width, int height);
+    // Copies the whole of `texture`'s level 0 over the canvas with the composite program (unit 3).
+    void drawComposite(GLuint texture, int width, int height);
     // The stacks' edge faces: their buffer is rebuilt only when what they depend on changes.
     void updateStacks(const Book& book);
     void drawStacks(const Camera& camera);
@@ -227,9 +244,17 @@ private:
     GLuint cacheTexture_ = 0;
     int cacheWidth_ = 0;
     int cacheHeight_ = 0;
+    GLuint scaledFramebuffer_ = 0;  // a moving frame drawn at movingScale, before it is scaled up
+    GLuint scaledTexture_ = 0;
+    GLuint scaledDepth_ = 0;
+    int scaledWidth_ = 0;
+    int scaledHeight_ = 0;
+    double lastFrameScale_ = 1.0;
     GLint canvasSamples_ = 0;   // the drawing buffer's samples (0: not multisampled, a blit composes)
     GLuint stackBuffer_ = 0;
     int stackVertexCount_ = 0;
+    WorldBox stackBox_;                      // where the stacks' faces lie
+    std::array<int, 4> restingRect_{};       // the cache's pixels that hold what rests: x, y, width, height
     struct StackKey {  // what the stacks' faces depend on
         StackLeaves leaves;
         double thickness = -1.0, pageWidth = 0.0, pageHeight = 0.0;

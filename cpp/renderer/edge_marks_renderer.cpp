@@ -70,6 +70,7 @@ void EdgeMarksRenderer::draw(const Book& book, const glm::mat4& viewProjection, 
         marksChanged_ = false;
         const std::vector<float> mesh = markMesh(book, marks_);
         vertexCount_ = static_cast<int>(mesh.size()) / kFloats;
+        box_ = WorldBox::of(mesh, kFloats);
         if (vertexCount_ > 0) {
             glBindBuffer(GL_ARRAY_BUFFER, buffer_);
             glBufferData(GL_ARRAY_BUFFER, mesh.size() * sizeof(float), mesh.data(), GL_DYNAMIC_DRAW);

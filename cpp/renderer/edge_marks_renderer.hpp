@@ -12,6 +12,7 @@
 #include "book.hpp"
 #include "book_stacks.hpp"
 #include "edge_marks.hpp"
+#include "world_box.hpp"
 
 namespace conecurl {
 
@@ -27,6 +28,8 @@ public:
     void draw(const Book& book, const glm::mat4& viewProjection, GLuint restoreProgram);
     const std::string& error() const { return error_; }
     int verticesDrawn() const { return vertexCount_; }
+    // Where the marks drawn last lie in the world (empty without marks).
+    WorldBox worldBox() const { return marks_.empty() || vertexCount_ == 0 ? WorldBox{} : box_; }
     void release();  // deletes its GL objects (the context is current)
     void forget();   // they died with a lost context
 
@@ -50,6 +53,7 @@ private:
     GLint viewProjection_ = -1;
     GLuint buffer_ = 0;
     int vertexCount_ = 0;
+    WorldBox box_;
 };
 
 }  // namespace conecurl
