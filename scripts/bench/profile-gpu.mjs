@@ -3,14 +3,15 @@
 // (shadow pass, lighting, grid size, canvas size), round-robin so a shared machine's load hits all
 // alike, and prints GPU-process CPU and frame interval per frame for each. Needs the bundles and
 // pages of a previous `npm run bench`.
-// Usage: node scripts/bench/profile-gpu.mjs [--config double-20] [--frames 12] [--rounds 3] [--port 8096]
-//        [--variants 0,6] (indices into VARIANTS) [--bundles bench-results/bundles] (another build of conecurl)
+// Usage: node scripts/bench/profile-gpu.mjs [--config double-20|single-20|phone-20] [--frames 12] [--rounds 3] [--port 8096]
+//        [--variants 0,6] (indices into VARIANTS) [--bundles bench-results/bundles] (another build of conecurl; its pages beside it)
 import { spawn } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import { chromium } from '@playwright/test';
 import { chromiumLaunchOptions } from '../chromium.mjs';
 import { cpuDelta, processCpu, summarize } from './metrics.mjs';
+import { PHONES, phoneUse } from '../../tests/browser/phone.js';
 
 const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
 const arg = (name, fallback) => {
@@ -22,7 +23,14 @@ const framesPerSample = Number(arg('--frames', '12'));
 const rounds = Number(arg('--rounds', '3'));
 const port = Number(arg('--port', process.env.CONECURL_BENCH_PORT || '8096'));
 const bundles = arg('--bundles', 'bench-results/bundles');
-const [display, pages] = config.split('-');
+const CONFIGS = {  // as scripts/bench/run.mjs measures them
+  'double-20': { display: 'double', use: { viewport: { width: 1600, height: 1100 }, deviceScaleFactor: 1 } },
+  'single-20': { display: 'single', use: { viewport: { width: 800, height: 1100 }, deviceScaleFactor: 1 } },
+  'phone-20': { display: 'single', use: phoneUse(PHONES['phone-portrait']) },
+};
+if (!CONFIGS[config]) throw new Error(`profile-gpu: unknown config ${config} (${Object.keys(CONFIGS).join(', ')})`);
+const { display, use } = CONFIGS[config];
+const pages = '20';
 if (!fs.existsSync(path.join(root, bundles, 'conecurl.js'))) throw new Error(`profile-gpu: ${bundles}/conecurl.js is missing; run npm run bench once first`);
 
 // Each variant: [name, setup, teardown], evaluated in the page with `view` (BookView) in scope.
@@ -34,6 +42,7 @@ const VARIANTS = [
   ['grid 12 rows (coarse mesh)', 'view.renderer.setGridRows(12)', 'view.renderer.setGridRows(0)'],
   ['canvas at half size (1/4 pixels)', "document.getElementById('book').style.cssText = 'width:50%;height:50%'",
     "document.getElementById('book').style.cssText = ''"],
+  ['moving frames at scale 1/2 (1/4 pixels)', 'view.renderer.setOptions({ movingScale: 0.5 })', 'view.renderer.setOptions({ movingScale: 1 })'],
   ['resting spread, redrawn', 'window.__rest = true', 'window.__rest = false'],
   ['no drawing (rAF only)', 'window.__skip = true', 'window.__skip = false'],
 ];
@@ -48,10 +57,9 @@ const server = spawn(process.execPath, [path.join(root, 'scripts/serve.mjs'), '-
 await new Promise((resolve) => setTimeout(resolve, 500));
 const browser = await chromium.launch(chromiumLaunchOptions());
 try {
-  const viewport = display === 'double' ? { width: 1600, height: 1100 } : { width: 800, height: 1100 };
-  const page = await browser.newPage({ viewport, deviceScaleFactor: 1 });
+  const page = await (await browser.newContext(use)).newPage();
   const cdp = await browser.newBrowserCDPSession();
-  const query = new URLSearchParams({ lib: 'conecurl', pages, display, duration: '600', bundles: `/${bundles}`, images: '/bench-results/pages' });
+  const query = new URLSearchParams({ lib: 'conecurl', pages, display, duration: '600', bundles: `/${bundles}`, images: `/${path.dirname(bundles)}/pages` });
   await page.goto(`http://127.0.0.1:${port}/scripts/bench/harness.html?${query}`);
   await page.evaluate(async () => { while (!window.bench) await new Promise((r) => setTimeout(r, 5)); await window.bench.ready(); });
   await page.evaluate(async () => { const book = await window.bench.mounted(); await book.turn(); await book.turn(); });

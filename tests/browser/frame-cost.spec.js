@@ -499,6 +499,47 @@ test('browser: every turning frame lays the cached resting spread down: the rest
   }
 });
 
+test('browser: the cached resting spread is laid down over its own rectangle only, and the frame it makes is the frame that drew the spread, pixel for pixel: double and single, thick stacks with tabs and ticks, zoomed, whole and at half scale', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  for (const display of ['double', 'single']) {
+    const result = await page.evaluate(async (display) => {
+      await window.openBook({ pages: 60, display, startPage: 20, thickness: 0.012 });
+      await window.settle();
+      const view = window.book.surface;
+      const marks = [{ page: 3, kind: 'tab' }, { page: 45, kind: 'tab' }, { page: 12, kind: 'tick' }, { page: 50, kind: 'tick' }];
+      const compared = [];
+      for (const [zoom, scale] of [[1, 1], [1, 0.5], [1.6, 1]]) {
+        if (zoom !== 1) view.zoomAbout(zoom, 200, 150);
+        view.renderer.setOptions({ movingScale: scale });
+        view.showTurn('forward', 0.3);  // the camera holds still from here: the spread is kept at its next drawing
+        view.setEdgeMarks(marks);  // marks (again): the next frame draws the spread
+        const spread = view.renderer.restingSpreadDraws();
+        view.showTurn('forward', 0.3);
+        const drawn = view.readPixels();
+        view.showTurn('forward', 0.3);
+        const laid = view.readPixels();
+        let differing = 0;
+        let covered = 0;
+        for (let i = 0; i < drawn.data.length; i += 4) {
+          covered += drawn.data[i + 3] > 0 ? 1 : 0;
+          for (let c = 0; c < 4; c++) {
+            if (drawn.data[i + c] !== laid.data[i + c]) { differing++; break; }
+          }
+        }
+        compared.push({ zoom, scale, spreadDraws: view.renderer.restingSpreadDraws() - spread, differing, covered });
+      }
+      return compared;
+    }, display);
+    console.log(`${display}: ${JSON.stringify(result)}`);
+    for (const { zoom, scale, spreadDraws, differing, covered } of result) {
+      const name = `${display}, zoom ${zoom}, scale ${scale}`;
+      expect(spreadDraws, `${name}: the first frame drew the spread, the second laid the cache down`).toBe(1);
+      expect(covered, name).toBeGreaterThan(10000);
+      expect(differing, name).toBe(0);
+    }
+  }
+});
+
 test('browser: a book\'s first view links only the two programs it draws, idle time then links the turning ones, and no turn links any (counts of linkProgram)', async ({ page }) => {
   await openReady(page, FIXTURE);
   const counts = await page.evaluate(async () => {

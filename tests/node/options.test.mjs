@@ -40,6 +40,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     muted: 'true or false',
     rememberPage: 'a non-empty string (the key it is kept under)',
     antialias: "'auto', true or false",
+    resolution: "'auto', 'full' or a positive number of device pixels per CSS pixel",
     on: 'an object of listeners by event name (ready, progress, pageerror, turnstart, turned, turncancel, resize, zoom, sharpened, link, pageschange, error, searchchange, fullscreenchange, download, print, passagelink, displaychange, middletap)',
     outline: 'an array of { title, page, children? }',
     download: 'a URL string',
@@ -71,6 +72,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     muted: ['true', 0, undefined],
     rememberPage: ['', '  ', 3, null, true],
     antialias: ['AUTO', 'on', 1, null, NaN],
+    resolution: ['Auto', 'half', 0, -1.5, NaN, Infinity, '1.5', null, true],
     on: [null, [], () => {}, { turnd: () => {} }, { turned: 'log' }, { ready: null }],
     outline: [null, {}, 'toc', 3],
     download: ['', '  ', 3, null, true],
@@ -122,7 +124,7 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses(null, 'options must be an object, got null');
   refuses('pages', 'options must be an object, got "pages"');
   refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, minPageWidth, direction, startPage, duration, schedule, center, hardCovers, "
-    + 'lighting, shadows, gutter, thickness, loadWindow, wasmUrl, label, fallback, hash, autoplay, sound, muted, rememberPage, antialias, turnArea, on, outline, download, edgeMarks, controls, labels, textLayer)');
+    + 'lighting, shadows, gutter, thickness, loadWindow, wasmUrl, label, fallback, hash, autoplay, sound, muted, rememberPage, antialias, resolution, turnArea, on, outline, download, edgeMarks, controls, labels, textLayer)');
   refuses({ pages, antialias: 'yes' }, "option 'antialias' must be 'auto', true or false, got \"yes\"");
   refuses({ pages, startPage: 3 }, "option 'startPage' must be below the page count 3, got 3");
   // A value whose own toString throws or is huge is described, not called.
@@ -132,13 +134,16 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses({ pages, display: 'x'.repeat(500) }, `option 'display' must be 'single', 'double' or 'auto', got "${'x'.repeat(57)}..."`);
 });
 
-test('node: setOptions takes only lighting, shadows, gutter, thickness, display, minPageWidth, sound and muted, checked; flip options are { animate: boolean }', () => {
+test('node: setOptions takes only lighting, shadows, gutter, thickness, resolution, display, minPageWidth, sound and muted, checked; flip options are { animate: boolean }', () => {
   assert.deepEqual(checkLiveOptions({ lighting: false }, pages), { lighting: false });
   assert.deepEqual(checkLiveOptions({ minPageWidth: 150 }, pages), { minPageWidth: 150 });
   assert.throws(() => checkLiveOptions({ minPageWidth: -1 }, pages), /option 'minPageWidth' must be a positive number of CSS pixels, got -1/);
   assert.deepEqual(checkLiveOptions({ display: 'single' }, pages), { display: 'single' });
   assert.throws(() => checkLiveOptions({ display: 'triple' }, pages), /option 'display' must be 'single', 'double' or 'auto'/);
-  assert.throws(() => checkLiveOptions({ direction: 'rtl' }, pages), /option 'direction' cannot change on a live book \(only lighting, shadows, gutter, thickness, display, minPageWidth, sound, muted\)/);
+  assert.throws(() => checkLiveOptions({ direction: 'rtl' }, pages), /option 'direction' cannot change on a live book \(only lighting, shadows, gutter, thickness, resolution, display, minPageWidth, sound, muted\)/);
+  assert.deepEqual(checkLiveOptions({ resolution: 1.5 }, pages), { resolution: 1.5 });
+  assert.deepEqual(checkLiveOptions({ resolution: 'full' }, pages), { resolution: 'full' });
+  assert.throws(() => checkLiveOptions({ resolution: 0 }, pages), /option 'resolution' must be 'auto', 'full' or a positive number of device pixels per CSS pixel, got 0/);
   assert.deepEqual(checkLiveOptions({ sound: true, muted: true }, pages), { sound: true, muted: true });
   assert.throws(() => checkLiveOptions({ muted: 'yes' }, pages), /option 'muted' must be true or false, got "yes"/);
   assert.deepEqual(checkLiveOptions({ thickness: 0.01 }, pages), { thickness: 0.01 });

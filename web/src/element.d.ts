@@ -19,7 +19,7 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
  * element a live HTML page shown through a named slot), display, min-page-width, direction, start-page, duration,
  * schedule, center, hard-covers, lighting, shadows, gutter, hash, sound, muted, fallback
  * ("true"/"false"), thickness ("true"/"false"/a number), autoplay ("true"/"false"/the milliseconds
- * between turns), antialias ("auto"/"true"/"false"), turn-area ("page"/"edges"/"corners"/"none"),
+ * between turns), antialias ("auto"/"true"/"false"), resolution ("auto"/"full"/a number), turn-area ("page"/"edges"/"corners"/"none"),
  * label (the book's name for screen readers), load-window, remember-page, wasm-url, pdf, pdf-worker-src,
  * outline (the table of contents as JSON; the property also keeps the array), download (a URL), edge-marks ("true"/"false").
  * controls (bare or "true": the toolbar; its parts as an object through the property), labels (the
@@ -67,6 +67,7 @@ export class ConeFlipbookElement extends HTMLElement {
   gutter: FlipbookOptions['gutter'];
   thickness: FlipbookOptions['thickness'];
   antialias: FlipbookOptions['antialias'];
+  resolution: FlipbookOptions['resolution'];
   loadWindow: FlipbookOptions['loadWindow'];
   hash: FlipbookOptions['hash'];
   /** `{ interval: 3000 }` is kept as given; true, false or a number of milliseconds set the attribute. */

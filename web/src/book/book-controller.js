@@ -134,14 +134,14 @@ export class BookController extends EventTarget {
   }
 
   /**
-   * Switches lighting, shadows, gutter shading, thickness and display on a live book (same surface, same page);
+   * Switches lighting, shadows, gutter shading, thickness, resolution and display on a live book (same surface, same page);
    * other options need a new book.
    */
   setOptions(options) {
     this._alive();
     Object.assign(this._settings, checkLiveOptions(options, this._settings.pages));
-    const { lighting, shadows, gutter, thickness } = this._settings;
-    this._surface.setOptions({ lighting, shadows, gutter, thickness });
+    const { lighting, shadows, gutter, thickness, resolution } = this._settings;
+    this._surface.setOptions({ lighting, shadows, gutter, thickness, resolution });
     if ('display' in options || 'minPageWidth' in options) this._relayout();
     this._sound.update();
   }

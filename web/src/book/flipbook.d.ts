@@ -142,6 +142,14 @@ export interface FlipbookOptions {
    */
   antialias?: 'auto' | boolean;
   /**
+   * How sharp frames with moving leaves are drawn (a resting book is always drawn at the screen's full
+   * device pixel ratio). 'auto' (default): while a leaf moves, frames that come late (a 60 Hz screen's
+   * frame missed) lower the drawing's scale, down to 1.5 device pixels per CSS pixel, and frames on time
+   * raise it again; on a screen of ratio 1.5 or less nothing changes. 'full': always the screen's ratio.
+   * A number: that many device pixels per CSS pixel while leaves move (at most the screen's). Live.
+   */
+  resolution?: 'auto' | 'full' | number;
+  /**
    * Listeners by event name, registered before anything happens. Without them, events of the first
    * view (its page errors, progress, ready) are still heard: what happens while create() runs is
    * delivered just after it resolves, to listeners added right after `await Flipbook.create(...)`.
@@ -472,8 +480,8 @@ export class BookController extends EventTarget {
   removePages(from: number, count?: number): Promise<PagesChangeDetail>;
   /** Puts `page` in the place of page `index`, as insertPages applies; a page on screen shows its old image until the new one is ready. */
   replacePage(index: number, page: PageSource | HTMLElement | PageEntry): Promise<PagesChangeDetail>;
-  /** Switches the effects, the thickness, the display (and minPageWidth) or the sound on a live book (same page); any other option is a TypeError (it needs a new book). */
-  setOptions(options: Pick<FlipbookOptions, 'lighting' | 'shadows' | 'gutter' | 'thickness' | 'display' | 'minPageWidth' | 'sound' | 'muted'>): void;
+  /** Switches the effects, the thickness, the resolution, the display (and minPageWidth) or the sound on a live book (same page); any other option is a TypeError (it needs a new book). */
+  setOptions(options: Pick<FlipbookOptions, 'lighting' | 'shadows' | 'gutter' | 'thickness' | 'resolution' | 'display' | 'minPageWidth' | 'sound' | 'muted'>): void;
   /** The page sound is muted (the `muted` option); setting it is setOptions({ muted }) (TypeError unless a boolean). */
   muted: boolean;
   /** What the page sound is doing, a snapshot for tools and tests; null after destroy(). */

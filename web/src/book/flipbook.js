@@ -122,6 +122,7 @@ export class Flipbook extends BookController {
       shadows: settings.shadows,
       gutter: settings.gutter,
       thickness: settings.thickness,
+      resolution: settings.resolution,
     });
     this._contextLease.attach(view);
     return view;

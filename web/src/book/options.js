@@ -4,6 +4,7 @@ import { BOOK_EVENTS } from './book-events.js';
 import { DIRECTIONS } from '../engine/direction.js';
 import { AUTO_MIN_PAGE_WIDTH, MAX_LEAF_THICKNESS, MAX_PAGES } from '../engine/layout.js';
 import { TURN_AREAS } from '../input/turn-area.js';
+import { checkResolution } from '../surfaces/moving-resolution.js';
 
 const BOOLEAN = (v) => typeof v === 'boolean' || 'true or false';
 export { MAX_PAGES };  // the engine's Book refuses more (cpp/core/book_constants.hpp)
@@ -38,6 +39,8 @@ const OPTION_CHECKS = {
   muted: BOOLEAN,
   rememberPage: (v) => (typeof v === 'string' && v.trim() !== '') || 'a non-empty string (the key it is kept under)',
   antialias: (v) => typeof v === 'boolean' || v === 'auto' || "'auto', true or false",
+  // frame (issue 29): how sharp frames with moving leaves are drawn (surfaces/moving-resolution.js).
+  resolution: checkResolution,
   turnArea: (v) => TURN_AREAS.includes(v) || TURN_AREAS.map((a) => `'${a}'`).join(', ').replace(/, ([^,]*)$/, ' or $1'),
   on: (v) => (isPlainEntry(v) && Object.entries(v).every(([type, f]) => BOOK_EVENTS.includes(type) && typeof f === 'function'))
     || `an object of listeners by event name (${BOOK_EVENTS.join(', ')})`,
@@ -63,12 +66,12 @@ export const CREATE_OPTIONS = [...OPTION_NAMES, ...PDF_OPTIONS];
 export const DEFAULTS = {
   display: 'auto', minPageWidth: AUTO_MIN_PAGE_WIDTH, direction: 'ltr', startPage: 0, duration: 1000, schedule: 'paper', center: true, hardCovers: false,
   lighting: true, shadows: true, gutter: true, thickness: true, loadWindow: 4, label: 'Book', fallback: true, hash: false,
-  autoplay: false, sound: false, muted: false, antialias: 'auto',
+  autoplay: false, sound: false, muted: false, antialias: 'auto', resolution: 'auto',
   controls: false,
   textLayer: true,
 };
 /** Options a live book takes through setOptions(); the others need a new book. */
-export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter', 'thickness', 'display', 'minPageWidth', 'sound', 'muted'];
+export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter', 'thickness', 'resolution', 'display', 'minPageWidth', 'sound', 'muted'];
 const PAGE_ENTRY_KEYS = ['src', 'html', 'alt', 'hard', 'zoomSrc', 'links'];
 const PAGE_SOURCES = 'a URL string, HTMLImageElement, HTMLCanvasElement, ImageBitmap, Blob, '
   + 'a function returning one of these (or a Promise of one), or an HTML element (an HTML page)';

@@ -24,6 +24,12 @@ function parseAntialias(raw, attribute) {
   if (value === undefined) throw attributeError(attribute, '"auto", "true" or "false"', raw);
   return value;
 }
+function parseResolution(raw, attribute) {
+  if (raw === 'auto' || raw === 'full') return raw;
+  const value = Number(raw);
+  if (raw.trim() !== '' && Number.isFinite(value)) return value;  // its range is checked with the options
+  throw attributeError(attribute, '"auto", "full" or device pixels per CSS pixel', raw);
+}
 function parseThickness(raw, attribute) {
   if (flag(raw) !== undefined) return flag(raw);
   const value = Number(raw);
@@ -82,6 +88,7 @@ export const ATTRIBUTES = {
   'remember-page': ['rememberPage', parseText],
   'wasm-url': ['wasmUrl', parseText],
   antialias: ['antialias', parseAntialias],
+  resolution: ['resolution', parseResolution],
   'turn-area': ['turnArea', parseText],
   label: ['label', parseText],
   fallback: ['fallback', parseBoolean],

@@ -163,6 +163,12 @@ export interface RenderOptions {
   lighting?: boolean;
   shadows?: boolean;
   gutter?: boolean;
+  /**
+   * The share of the drawing buffer's width and height a frame with moving leaves is drawn at, in
+   * (0, 1] (default 1): below 1 it is drawn offscreen at that scale and scaled up to the canvas (fewer
+   * pixels shaded while a leaf moves). Resting frames are always drawn whole. RangeError outside (0, 1].
+   */
+  movingScale?: number;
 }
 
 /** The WebGL2 renderer of a book. Call delete() to release its context. */
@@ -188,6 +194,8 @@ export interface BookRenderer {
   residentPageImages(): number;
   draw(book: Book): void;
   framesDrawn(): number;
+  /** The scale the last frame was drawn at: movingScale's (to whole pixels) while leaves moved, 1 at rest. */
+  lastFrameScale(): number;
   /**
    * How many times the resting spread (stacks, resting pages, their light) was drawn into its cache:
    * once as a turn starts, then only when what rests changes (a page image, a leaf landing or lifting,

@@ -13,6 +13,8 @@ export interface BookViewOptions extends LoadEngineOptions, RenderOptions,
   direction?: 'ltr' | 'rtl' | 'vertical';
   /** Multisampled edges (the WebGL context's antialias); default true. */
   antialias?: boolean;
+  /** How sharp frames with moving leaves are drawn: 'auto' (default), 'full' or device px per CSS px (FlipbookOptions.resolution). */
+  resolution?: 'auto' | 'full' | number;
 }
 
 /** The size setPageImage uploads a width x height image at (see its `cover`). */

@@ -2,7 +2,8 @@
 // FrameLoop (the clock), one call into the engine per frame. It is the book controller's WebGL surface
 // and the public lower layer (docs/engine.md): member by member a few lines over the engine's objects
 // (engine-objects.js) and the view's parts: the frames (frame-scheduler.js), the page textures
-// (page-textures.js), the lost context (context-keeper.js), the canvas's sizes (canvas-size.js).
+// (page-textures.js), the lost context (context-keeper.js), the canvas's sizes (canvas-size.js), the
+// sharpness of moving frames (moving-resolution.js).
 import { loadEngine } from '../engine/load-engine.js';
 import { TURN_REFUSED } from '../engine/layout.js';
 import { uploadSizeFor } from '../pages/texture-upload.js';
@@ -11,6 +12,7 @@ import { FrameScheduler } from './frame-scheduler.js';
 import { PageTextures } from './page-textures.js';
 import { ContextKeeper } from './context-keeper.js';
 import { CanvasSize } from './canvas-size.js';
+import { MovingResolution } from './moving-resolution.js';
 
 export { uploadSizeFor };
 
@@ -41,6 +43,7 @@ export class BookView {
     /** The book's share of the page's WebGL contexts (context-budget.js), told when the view wants to draw. */
     this.contextLease = null;
     this._poseFrom = null;  // the settled position showTurn() poses from
+    this._resolution = new MovingResolution(options.resolution ?? 'auto');
     this._frames = new FrameScheduler({
       runs: () => Boolean(this.renderer) && this._context.clockRuns,
       tick: (now) => this._tick(now),
@@ -119,9 +122,7 @@ export class BookView {
    */
   restingRect() {
     const { width, height } = this.fitCanvas();
-    const r = this.book.restingRect(width, height);  // drawing-buffer pixels, from the engine's camera
-    const toCss = this._size.cssPerPixel(width);
-    return { x: r.x * toCss, y: r.y * toCss, width: r.width * toCss, height: r.height * toCss };
+    return this._size.toCss(this.book.restingRect(width, height), width);  // from the engine's camera
   }
 
   /**
@@ -131,9 +132,7 @@ export class BookView {
    */
   openPagePlaces() {
     const { width, height } = this.fitCanvas();
-    const toCss = this._size.cssPerPixel(width);
-    return this.book.openPagePlaces(width, height).map(({ page, turned, x, y, width: w, height: h }) => (
-      { page, turned, x: x * toCss, y: y * toCss, width: w * toCss, height: h * toCss }));
+    return this.book.openPagePlaces(width, height).map((place) => this._size.toCss(place, width));
   }
 
   /**
@@ -157,9 +156,7 @@ export class BookView {
   edgeMarkPlaces() {
     if (!this._edgeMarks?.length) return [];
     const { width, height } = this.fitCanvas();
-    const toCss = this._size.cssPerPixel(width);
-    return this.book.edgeMarkPlaces(this._edgeMarks, width, height).map(({ x, y, width: w, height: h, ...mark }) => (
-      { ...mark, x: x * toCss, y: y * toCss, width: w * toCss, height: h * toCss }));
+    return this.book.edgeMarkPlaces(this._edgeMarks, width, height).map((place) => this._size.toCss(place, width));
   }
 
   /**
@@ -183,9 +180,10 @@ export class BookView {
     this.requestRender();
   }
 
-  /** { lighting, shadows, gutter } (the renderer's) and thickness (the book's: its stacks' depth, hence its layout). */
-  setOptions({ thickness, ...effects }) {
+  /** lighting, shadows, gutter (the renderer's), thickness (the book's stacks), resolution (moving-resolution.js). */
+  setOptions({ thickness, resolution, ...effects }) {
     if (thickness !== undefined) this.book.setThickness(thickness);
+    if (resolution !== undefined) this._resolution.setting = resolution;
     this.renderer.setOptions(effects);
     this.requestRender();
   }
@@ -321,6 +319,8 @@ export class BookView {
   _tick(now) {
     const drawing = !this._context.lost;
     if (drawing) this._size.fitIfStale();
+    const scale = drawing ? this._resolution.nextScale(now, this._frames.moving, window.devicePixelRatio || 1) : null;
+    if (scale !== null) this.renderer.setOptions({ movingScale: scale });  // only when it changes
     return this._loop.tick(now, drawing);
   }
 

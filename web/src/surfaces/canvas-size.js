@@ -40,6 +40,12 @@ export class CanvasSize {
   /** CSS pixels per pixel of a drawing buffer `bufferWidth` wide. */
   cssPerPixel(bufferWidth) { return this._canvas.clientWidth / bufferWidth; }
 
+  /** `rect` ({ x, y, width, height, ...others }) in a buffer `bufferWidth` wide, in CSS pixels (others kept). */
+  toCss(rect, bufferWidth) {
+    const k = this.cssPerPixel(bufferWidth);
+    return { ...rect, x: rect.x * k, y: rect.y * k, width: rect.width * k, height: rect.height * k };
+  }
+
   /** The drawing-buffer pixel under a viewport point, and the buffer's size (fitted first). */
   bufferPixel(clientX, clientY) {
     const box = this._canvas.getBoundingClientRect();

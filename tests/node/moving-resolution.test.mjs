@@ -1,0 +1,87 @@
+// Node tests of the `resolution` option's adaptation (web/src/surfaces/moving-resolution.js), fed
+// frame times by hand: late frames lower the moving frames' scale to the floor, frames on time raise
+// it step by step, a pause between turns is not a late frame, and fixed settings never adapt.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { MovingResolution, RESOLUTION_FLOOR } from '../../web/src/surfaces/moving-resolution.js';
+
+/** Feeds frames `interval` ms apart from `start` (all moving unless `moving` is false); returns each answer. */
+function feed(resolution, { start = 0, interval, count, ratio = 3, moving = true }) {
+  const answers = [];
+  for (let i = 0; i < count; i++) answers.push(resolution.nextScale(start + i * interval, moving, ratio));
+  return answers;
+}
+
+test('node: resolution auto on a screen of ratio 1.5 or less never changes the scale, however late the frames', () => {
+  for (const ratio of [1, 1.25, RESOLUTION_FLOOR]) {
+    const resolution = new MovingResolution('auto');
+    assert.deepEqual(feed(resolution, { interval: 200, count: 20, ratio }), Array(20).fill(null));
+    assert.equal(resolution.scale, 1);
+  }
+});
+
+test('node: resolution auto at ratio 3 lowers the scale after two late frames in a row, to 1.5 device px per CSS px at the lowest', () => {
+  const resolution = new MovingResolution('auto');
+  // The first moving frame has no interval; the next is one late frame (not enough); the third lowers.
+  const answers = feed(resolution, { interval: 100, count: 8 });
+  assert.deepEqual(answers, [null, null, 0.5, null, null, null, null, null]);
+  assert.equal(resolution.scale, RESOLUTION_FLOOR / 3);
+});
+
+test('node: resolution auto lowers a little late frame a little: to the scale whose pixels would have fit, halving at most', () => {
+  for (const interval of [21, 25, 40]) {
+    const resolution = new MovingResolution('auto');
+    assert.equal(feed(resolution, { interval, count: 3, ratio: 6 })[2], Math.sqrt((1000 / 60) / interval));
+  }
+  const slow = new MovingResolution('auto');
+  assert.equal(feed(slow, { interval: 500, count: 3, ratio: 6 })[2], 0.5);
+  // Frames on time (up to 1.1 frames of 60 Hz) or a little late but under 1.25 frames lower nothing.
+  assert.deepEqual(feed(new MovingResolution('auto'), { interval: 20, count: 50 }), Array(50).fill(null));
+});
+
+test('node: resolution auto raises the scale a step (x1.2) after 45 frames on time, up to the screen ratio', () => {
+  const resolution = new MovingResolution('auto');
+  feed(resolution, { interval: 100, count: 3 });
+  assert.equal(resolution.scale, 0.5);
+  const onTime = feed(resolution, { start: 1000, interval: 1000 / 60, count: 46 });
+  // The first of these frames follows a 100 ms gap from the last late one (late, but alone), then 45 on time.
+  assert.deepEqual(onTime.filter((a) => a !== null), [0.6]);
+  assert.equal(onTime.indexOf(0.6), 45);
+  feed(resolution, { start: 2000, interval: 1000 / 60, count: 1000 });
+  assert.equal(resolution.scale, 1);
+});
+
+test('node: resolution auto does not take the pause between two turns (no moving frame) for a late frame', () => {
+  const resolution = new MovingResolution('auto');
+  const answers = [];
+  for (let turn = 0; turn < 5; turn++) {
+    answers.push(...feed(resolution, { start: turn * 2000, interval: 1000 / 60, count: 30 }));
+    answers.push(resolution.nextScale(turn * 2000 + 1000, false, 3));  // resting frames between turns
+  }
+  assert.ok(answers.every((a) => a === null));
+  assert.equal(resolution.scale, 1);
+});
+
+test("node: resolution 'full' and a number are fixed: the scale is set on the first frame, moving or not, and never adapts", () => {
+  const full = new MovingResolution('full');
+  assert.deepEqual(feed(full, { interval: 300, count: 10 }), Array(10).fill(null));
+  const fixed = new MovingResolution(1.5);
+  assert.equal(fixed.nextScale(0, false, 3), 0.5);
+  assert.deepEqual(feed(fixed, { start: 10, interval: 300, count: 10 }), Array(10).fill(null));
+  assert.equal(fixed.nextScale(5000, true, 2), 0.75);  // the screen's ratio changed (a zoom)
+  const above = new MovingResolution(4);
+  assert.equal(above.nextScale(0, true, 3), null);  // never sharper than the screen
+  assert.equal(above.scale, 1);
+});
+
+test('node: changing the setting live takes effect at the next frame: a fixed scale to auto climbs back from there', () => {
+  const resolution = new MovingResolution(1.5);
+  assert.equal(resolution.nextScale(0, true, 3), 0.5);
+  resolution.setting = 'full';
+  assert.equal(resolution.nextScale(16, true, 3), 1);
+  resolution.setting = 1.5;
+  assert.equal(resolution.nextScale(32, true, 3), 0.5);
+  resolution.setting = 'auto';
+  const answers = feed(resolution, { start: 48, interval: 1000 / 60, count: 46 });
+  assert.deepEqual(answers.filter((a) => a !== null), [0.6]);
+});
