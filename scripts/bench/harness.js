@@ -89,12 +89,14 @@ window.bench = {
   },
   /**
    * What the page draws into: the device pixel ratio and every canvas on screen with its drawing buffer
-   * (px) and CSS size, so the report can say which library draws at the device's ratio (none: a DOM book).
+   * (px) and CSS size, so the report can say which library draws at the device's ratio (none: a DOM book);
+   * for conecurl, the device px per CSS px its frames with a moving leaf were drawn at last (movingRatio).
    */
-  drawing() {
+  async drawing() {
     const canvases = [...document.querySelectorAll('canvas')].filter((canvas) => canvas.clientWidth > 0 && canvas.clientHeight > 0)
       .map((canvas) => ({ width: canvas.width, height: canvas.height, cssWidth: canvas.clientWidth, cssHeight: canvas.clientHeight }));
-    return { devicePixelRatio: window.devicePixelRatio, canvases };
+    const { book } = await started;
+    return { devicePixelRatio: window.devicePixelRatio, canvases, movingRatio: book.movingRatio?.() };
   },
   /** Library-specific figures (conecurl: wasm heap, resident page textures). */
   async stats() {

@@ -298,10 +298,12 @@ export function floorTargetTable(floorTargets) {
 export function drawingText(drawing) {
   if (!drawing) return '–';
   if (drawing.canvases.length === 0) return 'no canvas (DOM, composited by the browser)';
+  const moving = drawing.movingRatio < drawing.devicePixelRatio - 0.01
+    ? `, frames with a moving leaf drawn at ${fmt(drawing.movingRatio, 2)} px per CSS px after the turns (resolution 'auto')` : '';
   return drawing.canvases.map((c) => {
     const ratio = c.cssWidth > 0 ? c.width / c.cssWidth : NaN;
     const below = ratio < drawing.devicePixelRatio - 0.01 ? `, below the device's ${drawing.devicePixelRatio}` : '';
-    return `${c.width}x${c.height} px for ${c.cssWidth}x${c.cssHeight} CSS px (ratio ${fmt(ratio, 2)}${below})`;
+    return `${c.width}x${c.height} px for ${c.cssWidth}x${c.cssHeight} CSS px (ratio ${fmt(ratio, 2)}${below}${moving})`;
   }).join(' + ');
 }
 

@@ -13,6 +13,8 @@ export async function mount(container, { urls, display, duration, extra = {} }) 
     async turn() {
       if (!(await book.next())) throw new Error(`conecurl: could not turn forward from page ${book.page}`);
     },
+    /** Device px per CSS px the frames with a moving leaf are drawn at now (`resolution: 'auto'` adapts it). */
+    movingRatio: () => (book.surface?.movingScale ?? 1) * window.devicePixelRatio,
     stats() {
       return { wasmHeapBytes: memory.buffer.byteLength, pageTextures: book.residentPages.length, page: book.page };
     },

@@ -61,6 +61,8 @@ export class BookView {
   readonly animating: boolean;
   /** Frames drawn so far: the book draws only while something moves or changes. */
   readonly framesDrawn: number;
+  /** The share of the drawing buffer's width and height frames with moving leaves are drawn at now (the `resolution` option); 1 at rest too. */
+  readonly movingScale: number;
   /**
    * Uploads a page image, scaled down (never up, aspect kept) to fit MAX_TEXTURE_SIZE and, with
    * `cover`, to the smallest size that still covers cover.width x cover.height pixels.

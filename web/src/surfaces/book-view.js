@@ -91,8 +91,8 @@ export class BookView {
   get zoom() { return this.book.zoom().scale; }  // view magnification, 1 to MAX_ZOOM
   get maxTextureSize() { return this.renderer.maxTextureSize(); }
   get animating() { return this.book.animating(); }
-  /** Frames drawn so far (the book draws only while something moves). */
-  get framesDrawn() { return this.renderer.framesDrawn(); }
+  get framesDrawn() { return this.renderer.framesDrawn(); }  // so far: the book draws only while something moves
+  get movingScale() { return this._resolution.scale; }  // of the buffer's size, frames with moving leaves are drawn at
   /** Turns asked for that wait for a leaf still in flight. */
   get queuedTurns() { return this._loop.queuedTurns(); }
   /** The WebGL context is lost and not yet restored: turns in flight are paused. */
