@@ -1,12 +1,19 @@
-// Copies a texture over the whole canvas (used where a blit cannot write: a multisampled canvas): the
-// cached resting spread, texel for pixel (its filter is nearest), so every sample of the pixel gets the
-// cached, already resolved colour; or a moving frame drawn at a smaller scale, filtered up (linear).
+// Lays a texture over the canvas's pixels with a triangle: the cached resting spread each frame of a
+// turn, darkened by the lifted leaves' shadow (the mask's alpha, one bilinear tap: its edge is soft as
+// drawn, shadow.frag), so the shadow costs no pass of its own; or, with no shadow, a moving frame drawn
+// at a smaller scale, filtered up to the canvas (linear). Colour is multiplied, alpha kept.
 
 uniform sampler2D uCache;
-uniform vec2 uViewportInverse;  // 1 / canvas size: gl_FragCoord to texture coordinates
+uniform sampler2D uShadowMask;
+uniform vec2 uViewportInverse;  // 1 / target size: gl_FragCoord to texture coordinates (cache and mask alike)
+uniform float uShadowStrength;  // 1: darken by the mask; 0: copy
 
 out vec4 outColor;
 
 void main() {
-    outColor = texture(uCache, gl_FragCoord.xy * uViewportInverse);
+    vec2 at = gl_FragCoord.xy * uViewportInverse;
+    vec4 color = texture(uCache, at);
+    // A branch, not a product: a copy reads one texture (a software rasterizer pays for each).
+    if (uShadowStrength > 0.5) color.rgb *= 1.0 - texture(uShadowMask, at).a;
+    outColor = color;
 }

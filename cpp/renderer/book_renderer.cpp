@@ -105,7 +105,6 @@ BookRenderer::Kind BookRenderer::kindOf(const Program& program) const {
     if (&program == &shadowProgram_) return Kind::shadow;
     if (&program == &stackProgram_) return Kind::stack;
     if (&program == &flatProgram_) return Kind::flat;
-    if (&program == &receiveProgram_) return Kind::receive;
     return Kind::composite;
 }
 
@@ -136,10 +135,6 @@ bool BookRenderer::build(Program& program) {
             source.vertex = flatVertex;
             source.fragment = prelude + shaders::paper_light_glsl + shaders::flat_page_frag;
             break;
-        case Kind::receive:
-            source.vertex = flatVertex;
-            source.fragment = prelude + shaders::shadow_receive_frag;
-            break;
         case Kind::composite:
             source.vertex = prelude + shaders::composite_vert;
             source.fragment = prelude + shaders::composite_frag;
@@ -165,8 +160,10 @@ bool BookRenderer::build(Program& program) {
             glUniform1i(program.location[uFacingTexture], 0);
             setUniform(program, uPaper, paper, 3);
             break;
-        case Kind::receive: glUniform1i(program.location[uShadowMask], 2); break;
-        case Kind::composite: glUniform1i(program.location[uCache], 3); break;
+        case Kind::composite:
+            glUniform1i(program.location[uCache], 3);
+            glUniform1i(program.location[uShadowMask], 2);
+            break;
         case Kind::stack:
             setUniform(program, uLightDirection, light, 3);
             setUniform(program, uPaper, paper, 3);
@@ -183,11 +180,8 @@ bool BookRenderer::build(Program& program) {
 void BookRenderer::prepareTurn() {
     if (!ok() || !makeCurrent()) return;
     build(leafProgram_);  // each leaves its program in use (programInUse_ follows), as a frame's useProgram would
-    if (options_.shadows) {
-        build(shadowProgram_);
-        build(receiveProgram_);
-    }
-    if (canvasSamples_ > 0) build(compositeProgram_);
+    if (options_.shadows) build(shadowProgram_);
+    if (options_.shadows || canvasSamples_ > 0) build(compositeProgram_);
 }
 
 void BookRenderer::useProgram(Program& program) {
@@ -297,7 +291,6 @@ void BookRenderer::destroyGpuObjects() {
     glDeleteProgram(shadowProgram_.id);
     glDeleteProgram(stackProgram_.id);
     glDeleteProgram(flatProgram_.id);
-    glDeleteProgram(receiveProgram_.id);
     glDeleteProgram(compositeProgram_.id);
     glDeleteFramebuffers(1, &cacheFramebuffer_);
     glDeleteTextures(1, &cacheTexture_);
@@ -327,7 +320,6 @@ void BookRenderer::forgetGpuObjects() {
     shadowProgram_ = Program{};
     stackProgram_ = Program{};
     flatProgram_ = Program{};
-    receiveProgram_ = Program{};
     compositeProgram_ = Program{};
     cacheFramebuffer_ = cacheTexture_ = 0;
     cacheWidth_ = cacheHeight_ = 0;
@@ -653,28 +645,37 @@ WorldBox BookRenderer::restingBox(const Book& book, const BookFrame& frame) cons
     return box;
 }
 
-void BookRenderer::composeRestingSpread(GLuint target) {
-    // Only the pixels that hold what rests: the rest of the target was cleared.
+void BookRenderer::composeRestingSpread(GLuint target, bool shadows, int width, int height) {
+    // On a multisampled canvas one triangle covers it all (the cache is clear outside what rests),
+    // over the depth cleared alone: SwiftShader left such a canvas blank where a colour clear came
+    // before the triangle. Elsewhere only the pixels that hold what rests, the rest cleared.
+    const bool multisampled = target == 0 && canvasSamples_ > 0;
+    glClear((multisampled ? 0 : GL_COLOR_BUFFER_BIT) | GL_DEPTH_BUFFER_BIT);
     const auto [x, y, w, h] = restingRect_;
-    if (w == 0 || h == 0) return;
-    if (target != 0 || canvasSamples_ == 0) {
+    if (!multisampled && (w == 0 || h == 0)) return;
+    if (!shadows && !multisampled) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, cacheFramebuffer_);
         glBlitFramebuffer(x, y, x + w, y + h, x, y, x + w, y + h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, target);  // readPixels reads the canvas
         return;
     }
-    // A multisampled drawing buffer takes no blit: one triangle over it copies each pixel's texel.
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(x, y, w, h);
-    drawComposite(cacheTexture_, cacheWidth_, cacheHeight_);
+    // The shadow darkens what rests as it is laid down: one triangle, one pass, no blending. (A
+    // multisampled drawing buffer takes no blit either: the triangle copies each pixel's texel.)
+    if (!multisampled) {
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(x, y, w, h);
+    }
+    if (shadows) bindTexture(2, shadowTexture_);
+    drawComposite(cacheTexture_, width, height, shadows);
     glDisable(GL_SCISSOR_TEST);
 }
 
-void BookRenderer::drawComposite(GLuint texture, int width, int height) {
+void BookRenderer::drawComposite(GLuint texture, int width, int height, bool shadowed) {
     useProgram(compositeProgram_);
     bindTexture(3, texture);
     const float viewportInverse[2] = {1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)};
     setUniform(compositeProgram_, uViewportInverse, viewportInverse, 2);
+    setUniform(compositeProgram_, uShadowStrength, shadowed ? 1.0f : 0.0f);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
@@ -702,7 +703,7 @@ void BookRenderer::presentScaledFrame(int width, int height) {
     glViewport(0, 0, width, height);
     if (canvasSamples_ > 0) {
         glDisable(GL_DEPTH_TEST);
-        drawComposite(scaledTexture_, width, height);
+        drawComposite(scaledTexture_, width, height, false);
         return;
     }
     // Cleared first, as in draw(): the browser's lazy clear of the canvas would wipe a blit made before.
@@ -774,29 +775,28 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, targetWidth, targetHeight);
 
-    // What rests: drawn into the target once, as a resting book draws it, and kept in the cache; the
-    // frames after lay the cache down, until what rests changes (restingKey).
+    // What rests: drawn into the target once, as a resting book draws it, and copied into the cache;
+    // every frame lays the cache down (the shadow on it), until what rests changes (restingKey).
     const RestingKey key = restingKey(book, frame, camera, targetWidth, targetHeight);
     // The depth, for the moving leaves below. Cleared first: a browser clears a composited canvas
     // lazily at the frame's first clear or draw, which would wipe a blit made before it.
     glDepthMask(GL_TRUE);
+    bool laid = false;  // what rests is on the target already, as it is to be shown
     if (key != restingKey_) {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         drawRestingSpread(book, frame, camera);
         ++restingSpreadDraws_;
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, cacheFramebuffer_);
+        glBlitFramebuffer(0, 0, targetWidth, targetHeight, 0, 0, targetWidth, targetHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBindFramebuffer(GL_FRAMEBUFFER, target);
+        // Two pixels about it: the edges' antialiasing and rounding.
+        restingRect_ = pixelRect(restingBox(book, frame), camera.viewProjection, targetWidth, targetHeight, 2);
         // While the camera moves (a closed book centring as it opens) every frame draws the spread
         // anew: it is kept only once the camera holds still for a frame.
-        const bool cameraMoving = camera.viewProjection != lastViewProjection_;
-        lastViewProjection_ = camera.viewProjection;
-        if (cameraMoving) {
+        if (camera.viewProjection != lastViewProjection_) {
             invalidateRestingSpread();
         } else {
-            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, cacheFramebuffer_);
-            glBlitFramebuffer(0, 0, targetWidth, targetHeight, 0, 0, targetWidth, targetHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-            glBindFramebuffer(GL_FRAMEBUFFER, target);
             restingKey_ = key;
-            // Two pixels about it: the edges' antialiasing and rounding.
-            restingRect_ = pixelRect(restingBox(book, frame), camera.viewProjection, targetWidth, targetHeight, 2);
         }
         cachedTextures_.fill(0);
         for (int i = 0, n = 0; i < frame.count; ++i) {
@@ -804,28 +804,10 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
             cachedTextures_[n++] = textureFor(frame.leaves[i].frontPage);
             cachedTextures_[n++] = textureFor(frame.leaves[i].backPage);
         }
-    } else {
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        composeRestingSpread(target);
+        laid = !shadows;  // with the shadow it is laid down again below, darkened
     }
+    if (!laid) composeRestingSpread(target, shadows, targetWidth, targetHeight);
     lastViewProjection_ = camera.viewProjection;
-
-    if (shadows) {
-        // The shadow on the resting pages: their colour times (1 - the mask), drawn over the
-        // cache. Where a moving leaf covers them it is drawn over this.
-        useProgram(receiveProgram_);
-        bindTexture(2, shadowTexture_);
-        const float viewportInverse[2] = {1.0f / static_cast<float>(targetWidth), 1.0f / static_cast<float>(targetHeight)};
-        setUniform(receiveProgram_, uViewportInverse, viewportInverse, 2);
-        glEnable(GL_BLEND);
-        setBlendEquation(GL_FUNC_ADD);
-        for (int i = 0; i < frame.count; ++i) {
-            if (!frame.leaves[i].resting) continue;
-            setPlacementUniforms(receiveProgram_, book, frame.leaves[i], camera);
-            glDrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
-        }
-        glDisable(GL_BLEND);
-    }
 
     // The moving leaves, over everything that rests (they lie above the page plane, nearer the eye).
     // Depth is tested only among them: where leaves overlap each other, or a curl over its own leaf.

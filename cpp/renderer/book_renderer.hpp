@@ -153,7 +153,7 @@ private:
     };
     // Which program a Program member is: each is compiled and linked on first use (useProgram), so a
     // resting book links only the two its frame draws (stacks, flat pages) and a turn the others.
-    enum class Kind { leaf, shadow, stack, flat, receive, composite };
+    enum class Kind { leaf, shadow, stack, flat, composite };
     Kind kindOf(const Program& program) const;
     bool build(Program& program);  // compiles, links and sets the constant uniforms; false (error_) on failure
     void locate(Program& program);
@@ -182,16 +182,18 @@ private:
     RestingKey restingKey(const Book& book, const BookFrame& frame, const Camera& camera, int width, int height) const;
     void ensureCacheTarget(int width, int height);
     // Lays the cached resting spread over the target (`target`: 0 for the canvas, else the scaled
-    // frame's framebuffer): a blit, or a draw on a multisampled canvas.
-    void composeRestingSpread(GLuint target);
+    // frame's framebuffer), over its rectangle: with the shadow, a draw that darkens it by the mask;
+    // without, a blit (a draw on a multisampled canvas, which takes no blit).
+    void composeRestingSpread(GLuint target, bool shadows, int width, int height);
     // Where what rests lies in the world: the resting pages, the stacks' faces and the marks on them.
     WorldBox restingBox(const Book& book, const BookFrame& frame) const;
     // The offscreen target of a scaled moving frame (colour texture and depth), then its scaling up
     // into the canvas: a linear blit, or a draw on a multisampled canvas.
     void ensureScaledTarget(int width, int height);
     void presentScaledFrame(int width, int height);
-    // Copies the whole of `texture`'s level 0 over the canvas with the composite program (unit 3).
-    void drawComposite(GLuint texture, int width, int height);
+    // Lays `texture` over the bound target's `width` x `height` pixels with the composite program
+    // (unit 3), darkened by the shadow mask (unit 2) when `shadowed`.
+    void drawComposite(GLuint texture, int width, int height, bool shadowed);
     // The stacks' edge faces: their buffer is rebuilt only when what they depend on changes.
     void updateStacks(const Book& book);
     void drawStacks(const Camera& camera);
@@ -233,8 +235,7 @@ private:
     Program shadowProgram_;
     Program stackProgram_;
     Program flatProgram_;       // resting pages (flat_page.*)
-    Program receiveProgram_;    // the shadow multiplied onto the cached resting pages
-    Program compositeProgram_;  // the cache onto a multisampled canvas
+    Program compositeProgram_;  // the cache laid down with the shadow on it; a scaled frame onto a multisampled canvas
     int stackGeneration_ = 0;   // counts rebuilds of the stacks' buffer, for the resting key
     int restingSpreadDraws_ = 0;
     RestingKey restingKey_{};
