@@ -1,6 +1,7 @@
 // Node tests of the `resolution` option's adaptation (web/src/surfaces/moving-resolution.js), fed
-// frame times by hand: late frames lower the moving frames' scale to the floor, frames on time raise
-// it step by step, a pause between turns is not a late frame, and fixed settings never adapt.
+// frame times by hand: late frames lower the moving frames' scale to the floor, a cut that does not
+// make frames sooner is taken back, frames on time raise the scale step by step, a pause between
+// turns is not a late frame, and fixed settings never adapt.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { MovingResolution, RESOLUTION_FLOOR } from '../../web/src/surfaces/moving-resolution.js';
@@ -20,12 +21,31 @@ test('node: resolution auto on a screen of ratio 1.5 or less never changes the s
   }
 });
 
-test('node: resolution auto at ratio 3 lowers the scale after two late frames in a row, to 1.5 device px per CSS px at the lowest', () => {
+test('node: resolution auto at ratio 3 lowers the scale after two late frames in a row, to 1.5 device px per CSS px at the lowest, and keeps it when frames come sooner', () => {
   const resolution = new MovingResolution('auto');
   // The first moving frame has no interval; the next is one late frame (not enough); the third lowers.
-  const answers = feed(resolution, { interval: 100, count: 8 });
-  assert.deepEqual(answers, [null, null, 0.5, null, null, null, null, null]);
+  assert.deepEqual(feed(resolution, { interval: 100, count: 3 }), [null, null, 0.5]);
   assert.equal(resolution.scale, RESOLUTION_FLOOR / 3);
+  // At the lower scale frames come in 40 ms instead of 100: the cut paid, it stays (and 40 ms frames,
+  // still late, cut no further: the floor is reached).
+  assert.deepEqual(feed(resolution, { start: 240, interval: 40, count: 20 }), Array(20).fill(null));
+  assert.equal(resolution.scale, 0.5);
+});
+
+test('node: resolution auto takes back a cut after which frames come no sooner (the first frame after it aside), and tries none for 300 frames', () => {
+  const resolution = new MovingResolution('auto');
+  const answers = feed(resolution, { interval: 100, count: 8 });
+  // Cut at the third frame; five frames after it, the four judged as late as before: back to 1.
+  assert.deepEqual(answers, [null, null, 0.5, null, null, null, null, 1]);
+  const held = feed(resolution, { start: 800, interval: 100, count: 299 });
+  assert.deepEqual(held.filter((a) => a !== null), []);
+  const after = feed(resolution, { start: 800 + 299 * 100, interval: 100, count: 4 });
+  assert.deepEqual(after.filter((a) => a !== null), [0.5]);
+  // A cut that pays only a little (frames 95% as long) is taken back too.
+  const little = new MovingResolution('auto');
+  feed(little, { interval: 100, count: 3 });
+  const judged = feed(little, { start: 300, interval: 95, count: 5 });
+  assert.deepEqual(judged.filter((a) => a !== null), [1]);
 });
 
 test('node: resolution auto lowers a little late frame a little: to the scale whose pixels would have fit, halving at most', () => {
@@ -43,10 +63,10 @@ test('node: resolution auto raises the scale a step (x1.2) after 45 frames on ti
   const resolution = new MovingResolution('auto');
   feed(resolution, { interval: 100, count: 3 });
   assert.equal(resolution.scale, 0.5);
-  const onTime = feed(resolution, { start: 1000, interval: 1000 / 60, count: 46 });
-  // The first of these frames follows a 100 ms gap from the last late one (late, but alone), then 45 on time.
+  const onTime = feed(resolution, { start: 1000, interval: 1000 / 60, count: 60 });
+  // The first five frames judge the cut (sooner: kept), then 45 on time raise it.
   assert.deepEqual(onTime.filter((a) => a !== null), [0.6]);
-  assert.equal(onTime.indexOf(0.6), 45);
+  assert.equal(onTime.indexOf(0.6), 49);
   feed(resolution, { start: 2000, interval: 1000 / 60, count: 1000 });
   assert.equal(resolution.scale, 1);
 });

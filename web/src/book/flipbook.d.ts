@@ -144,8 +144,8 @@ export interface FlipbookOptions {
   /**
    * How sharp frames with moving leaves are drawn (a resting book is always drawn at the screen's full
    * device pixel ratio). 'auto' (default): while a leaf moves, frames that come late (a 60 Hz screen's
-   * frame missed) lower the drawing's scale, down to 1.5 device pixels per CSS pixel, and frames on time
-   * raise it again; on a screen of ratio 1.5 or less nothing changes. 'full': always the screen's ratio.
+   * frame missed) lower the drawing's scale, down to 1.5 device pixels per CSS pixel, kept only if frames
+   * then come sooner; frames on time raise it again; on a screen of ratio 1.5 or less nothing changes. 'full': always the screen's ratio.
    * A number: that many device pixels per CSS pixel while leaves move (at most the screen's). Live.
    */
   resolution?: 'auto' | 'full' | number;

@@ -1,7 +1,9 @@
 // How sharp a frame with moving leaves is drawn (the `resolution` option): at a device pixel ratio of 3
 // a canvas has 9 times the pixels of ratio 1, so while leaves move the renderer may draw fewer and
-// scale them up. 'auto' lowers the scale when frames come late and raises it when they come on time;
-// a resting book is always drawn whole (the renderer's movingScale applies to moving frames only).
+// scale them up. 'auto' lowers the scale when frames come late, keeps the lower scale only if frames
+// then come sooner (where scaling up costs what the fewer pixels save, as on a software rasterizer,
+// it goes back and waits before trying again), and raises it when they come on time; a resting book
+// is always drawn whole (the renderer's movingScale applies to moving frames only).
 
 /** Device pixels per CSS pixel that 'auto' goes down to while leaves move (never above the screen's). */
 export const RESOLUTION_FLOOR = 1.5;
@@ -12,6 +14,9 @@ const LATE_FRAMES = 2;                // late in a row before lowering: a turn's
 const ON_TIME_FRAMES = 45;            // on time in a row before raising a step: about 3/4 s of moving frames
 const RAISE = 1.2;                    // a step up, in scale
 const LOWEST_CUT = 0.5;               // one step down at most halves the scale
+const TRIAL_FRAMES = 4;               // frames judged after a cut (the first one after it, which draws the spread again, is not)
+const PAID = 0.9;                     // a cut is kept if those frames' median interval is at most this share of the late ones'
+const HOLD_FRAMES = 300;              // moving frames without a cut after one that did not pay
 
 /** The `resolution` option's values: 'auto', 'full', or device pixels per CSS pixel while leaves move. */
 export function checkResolution(value) {
@@ -26,13 +31,18 @@ export class MovingResolution {
     this._scale = 1;       // the share of the drawing buffer's width and height a moving frame is drawn at
     this._last = null;     // the previous moving frame's time
     this._late = 0;        // late frames in a row
+    this._lateIntervals = [];
     this._onTime = 0;      // on-time frames in a row
+    this._trial = null;    // after a cut: { from: the scale before, baseline: the late median, intervals after it }
+    this._hold = 0;        // moving frames left before another cut may be tried
   }
 
   get setting() { return this._setting; }
   set setting(value) {
     this._setting = value;
-    this._late = this._onTime = 0;
+    this._late = this._onTime = this._hold = 0;
+    this._lateIntervals = [];
+    this._trial = null;
   }
 
   /** The scale moving frames are drawn at now, in (0, 1]. */
@@ -59,18 +69,43 @@ export class MovingResolution {
 
   // 'auto': one interval between two moving frames, judged against a 60 Hz screen.
   _adapt(interval, lowest) {
+    if (this._hold > 0) this._hold--;
+    if (this._trial) return this._judge(interval);
     if (interval > LATE_MS) {
       this._onTime = 0;
+      this._lateIntervals.push(interval);
       if (++this._late < LATE_FRAMES) return this._scale;
+      const late = this._lateIntervals;
       this._late = 0;
+      this._lateIntervals = [];
+      if (this._hold > 0 || this._scale <= lowest) return this._scale;
       // Pixels cost in proportion: the scale that would have fit the frame (a late one: below 0.9).
       const cut = Math.max(LOWEST_CUT, Math.sqrt(FRAME_MS / interval));
+      this._trial = { from: this._scale, baseline: median(late), intervals: [] };
       return Math.max(lowest, this._scale * cut);
     }
     this._late = 0;
+    this._lateIntervals = [];
     if (interval > ON_TIME_MS || this._scale >= 1) return this._scale;
     if (++this._onTime < ON_TIME_FRAMES) return this._scale;
     this._onTime = 0;
     return Math.min(1, this._scale * RAISE);
   }
+
+  // After a cut: keep it if frames came sooner, else go back to the scale before and hold off.
+  _judge(interval) {
+    const trial = this._trial;
+    trial.intervals.push(interval);
+    if (trial.intervals.length <= TRIAL_FRAMES) return this._scale;
+    this._trial = null;
+    if (median(trial.intervals.slice(1)) <= PAID * trial.baseline) return this._scale;
+    this._hold = HOLD_FRAMES;
+    return trial.from;
+  }
+}
+
+function median(values) {
+  const sorted = [...values].sort((a, b) => a - b);
+  const middle = sorted.length >> 1;
+  return sorted.length % 2 ? sorted[middle] : (sorted[middle - 1] + sorted[middle]) / 2;
 }
