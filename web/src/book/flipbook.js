@@ -68,7 +68,7 @@ export class Flipbook extends BookController {
     // ones a turn draws are linked when the page is next idle, so neither the first page nor the first turn waits.
     const prepare = () => { if (!this._destroyed && this._surface?.prepareTurn?.() === false) whenIdle(prepare); };
     whenIdle(prepare);
-    whenIdle(() => this._letProbeGo());
+    whenIdle(() => contextBudget().releaseDiscarded());  // a probe's context given up (_prepareCanvas)
     return this;
   }
 
@@ -80,15 +80,8 @@ export class Flipbook extends BookController {
   destroy() {
     if (this._destroyed) return;
     if (!this._surface) this._probed?.getExtension('WEBGL_lose_context')?.loseContext();  // no renderer came to take it
-    this._letProbeGo();
     super.destroy();
     this._contextLease.dispose();
-  }
-
-  // The probe's context on the canvas given up in software (_prepareCanvas) is lost.
-  _letProbeGo() {
-    this._discarded?.getExtension('WEBGL_lose_context')?.loseContext();
-    this._discarded = null;
   }
 
   // create() failed. Without WebGL2 or the engine the pages can still be shown: unless the option
@@ -116,14 +109,15 @@ export class Flipbook extends BookController {
   // Room in the page's context budget, then the canvas's context. antialias 'auto' (smooth edges unless WebGL
   // runs in software, where multisampling costs ~30% a frame) is found out by the page's first book, on its own
   // canvas with the context it keeps on a GPU (software-gl.js); in software that context is multisampled, so
-  // the book takes a fresh canvas, whose context the renderer makes, and lets the probe's go once the first
-  // view is shown (losing a context can block for tens of ms). A known verdict (or true, false) needs no probe.
+  // the book takes a fresh canvas, whose context the renderer makes, and gives the probe's to the budget to lose
+  // when its place is wanted or the page is idle (losing one can block for tens of ms). A known verdict (or
+  // true, false) needs no probe.
   _prepareCanvas() {
     this._contextLease.admit();
     if (this._settings.antialias !== 'auto' || knownSoftwareWebGL() !== null) return;
     this._probed = probeWebGL(this._canvas);  // on a GPU, the renderer's context to be
     if (!knownSoftwareWebGL()) return;
-    this._discarded = this._probed;
+    contextBudget().discard(this._probed);
     this._probed = null;
     this._contextLease.dispose();
     this._replaceCanvas();
