@@ -3,7 +3,7 @@
 // and uploaded, first draw), from timestamps an init script takes around the browser calls that do each,
 // and any performance.mark()s the page made. docs/benchmark.md "Where the first page's time goes".
 // Usage: node scripts/bench/startup.mjs [--lib conecurl] [--configs double-20,phone-20] [--reps 5] [--port 8097]
-//        [--no-bundle] (reuse bench-results/startup/bundles)
+//        [--no-bundle] (reuse bench-results/startup/bundles) [--rows] (also each run's figures, one JSON line a config)
 import { spawn } from 'node:child_process';
 import path from 'node:path';
 import { chromium } from '@playwright/test';
@@ -123,6 +123,8 @@ try {
         await browser.close();
       }
     }
+    // --rows: each run's figures as one JSON line, to pool runs of several invocations (before and after alternated).
+    if (process.argv.includes('--rows')) console.log(`rows ${lib} ${id} ${JSON.stringify(rows)}`);
     const med = (f) => {
       const values = rows.map(f).filter(Number.isFinite).sort((a, b) => a - b);
       return values.length ? values[Math.floor(values.length / 2)].toFixed(0).padStart(5) : '    -';

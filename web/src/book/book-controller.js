@@ -8,7 +8,7 @@ import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { BookTurns } from './book-turns.js';
 import {
   attachBookInput, followSurface, loadCompanions, loadEdgeMarks, loadTextLayer, makeHtmlPages, makeLinkLayer, makeLivePages,
-  makePageStore, makeZoom, openingPageOf, startCompanions, watchBookSize,
+  makePageStore, makeZoom, openingPageOf, prefetchOpening, startCompanions, watchBookSize,
 } from './book-wiring.js';
 import { attachViewer, makeDocumentApi } from './document-wiring.js';
 import { MAX_ZOOM, displayFor, openPages } from '../engine/layout.js';
@@ -50,14 +50,9 @@ export class BookController extends EventTarget {
   pageState(index) { return this._store.pageState(index); }
   /** The first visible page at the settled position (after destroy(), where the book was left). */
   get page() { return this._surface ? this._surface.firstVisiblePage() : (this._finalPage ?? 0); }
-  get display() {
-    return this._surface?.display ?? this._finalDisplay ?? (this._settings.display === 'single' ? 'single' : 'double');
-  }
+  get display() { return this._surface?.display ?? this._finalDisplay ?? (this._settings.display === 'single' ? 'single' : 'double'); }
   /** The pages open at the settled position, as the live region announces them. */
-  get openPages() {
-    if (!this._surface) return [this.page];
-    return openPages(this._surface.position, this.pageCount, this._surface.display);
-  }
+  get openPages() { return this._surface ? openPages(this._surface.position, this.pageCount, this._surface.display) : [this.page]; }
   /** The focusable element the book made in its container (holds the canvas). */
   get element() { return this._shell.root; }
   /** What draws the book: a BookView (WebGL2) or a CanvasSurface (still pages); null after destroy(). */
@@ -84,10 +79,8 @@ export class BookController extends EventTarget {
   openPagePlaces() { return this._surface.openPagePlaces(); }
   /** Resolves once no page is loading (and no click waits to see if it is a double-click). */
   whenIdle() {
-    if (this._input?.pendingClick) {
-      return new Promise((resolve) => setTimeout(resolve, this._input.clickWaitMs + 20)).then(() => this.whenIdle());
-    }
-    return this._store.whenIdle();
+    if (!this._input?.pendingClick) return this._store.whenIdle();
+    return new Promise((resolve) => setTimeout(resolve, this._input.clickWaitMs + 20)).then(() => this.whenIdle());
   }
 
   next() { return this._turns.turn('forward'); }
@@ -207,27 +200,33 @@ export class BookController extends EventTarget {
 
   // ---- building: the subclass makes the surface ----------------------------------------------
 
-  /** The surface for `display` on this._canvas (Flipbook: a BookView; StaticBook: a CanvasSurface). */
+  /** The surface for `display` on this._canvas, or a promise of it (Flipbook: a BookView; StaticBook: a CanvasSurface). */
   _makeSurface() { throw new Error('conecurl: BookController is abstract: use Flipbook or StaticBook'); }
+  /** Readies the canvas before the layers over it are laid in (Flipbook: its WebGL context; it may _replaceCanvas()). */
+  _prepareCanvas() {}
 
   /** Whether turns on this surface animate (a still surface cuts to the next spread). */
   _animates() { return this._surface.kind === 'webgl' && !this._reducedMotion?.matches; }
 
   async _build() {
     // HTML pages live over the canvas while they lie open (html-pages.js, loaded only for books that have them).
-    const HtmlPages = this._pages.some((entry) => entry.html) ? (await import('../layers/html-pages.js')).HtmlPages : null;
-    if (HtmlPages && !this._destroyed) this._mountHtml(HtmlPages);
+    const htmlPages = this._pages.some((entry) => entry.html) ? import('../layers/html-pages.js') : null;
     this._controls = await attachViewer(this, this._port);  // the toolbar first: the book fits the rest of its box
-    this._text = await loadTextLayer(this._port, this._links.element);  // a PDF's selectable text, under the links
-    if (this._text) this._layers.splice(this._layers.indexOf(this._links), 0, this._text);
     // Page memory, autoplay, the page sound and the edge marks: imported only when the options ask.
     const [companionModules, EdgeMarks] = await Promise.all([loadCompanions(this._settings), loadEdgeMarks(this._settings)]);
     const { width, height } = this._shell.root.getBoundingClientRect();
     this._layoutSize = { width, height };
-    this._surface = this._makeSurface(displayFor(this._settings.display, this._layoutSize, this._settings));
+    const display = displayFor(this._settings.display, this._layoutSize, this._settings);
+    const opening = openingPageOf(companionModules, this._settings, this.pageCount);
+    prefetchOpening(this._port, display, opening);  // fetched and decoded while the surface is made
+    this._prepareCanvas();
+    if (htmlPages && !this._destroyed) this._mountHtml((await htmlPages).HtmlPages);
+    this._text = await loadTextLayer(this._port, this._links.element);  // a PDF's selectable text, under the links
+    if (this._text) this._layers.splice(this._layers.indexOf(this._links), 0, this._text);
+    this._surface = await this._makeSurface(display);
     followSurface(this._port);  // the pages a moving leaf shows, images lost with a context
     if (EdgeMarks) this._layers.push(new EdgeMarks(this, this._port));  // tabs and ticks on the fore-edge
-    this._surface.jumpTo(this._surface.positionOfPage(openingPageOf(companionModules, this._settings, this.pageCount)));
+    this._surface.jumpTo(this._surface.positionOfPage(opening));
     this._input = attachBookInput(this._port);
     this._stopWatchingSize = watchBookSize(this._port, this._layoutSize);
     this._showOpenPages();
@@ -238,6 +237,12 @@ export class BookController extends EventTarget {
     await this.whenIdle();
     this._emit('ready', { page: this.page });
     this._doc.indexInBackground();  // a PDF's text, for search, in idle time from now on
+  }
+
+  // The book draws on a fresh canvas in place of its own (Flipbook: the context its canvas was given is not the one wanted).
+  _replaceCanvas() {
+    this._port.canvas = this._canvas = this._shell.replaceCanvas();
+    this._zoom = makeZoom(this._port);  // the only part that holds the canvas before the layers are laid in
   }
 
   // The HTML pages' layer, under the links.
@@ -271,10 +276,7 @@ export class BookController extends EventTarget {
       layoutLayers: () => this._layoutLayers(),
       hideLayers: () => this._hideLayers(),
       refitSoon: () => this._refitSoon(),
-      resized: (size) => {
-        this._layoutSize = size;
-        this._relayout();
-      },
+      resized: (size) => { this._layoutSize = size; this._relayout(); },
       attachHtml: (HtmlPages) => this._mountHtml(HtmlPages),
       followLink: (link, event) => this._onLink(link, event),
       flushEvents: () => this._events.flush(),
@@ -307,9 +309,7 @@ export class BookController extends EventTarget {
     for (const layer of this._layers) layer.place(places);
   }
 
-  _hideLayers() {
-    for (const layer of this._layers) layer.hide();
-  }
+  _hideLayers() { for (const layer of this._layers) layer.hide(); }
 
   _onLink(link, event) {
     const detail = { page: link.page, href: link.href, toPage: link.toPage };

@@ -82,6 +82,13 @@ export function createShell(container, { label, direction }) {
   return {
     root,
     canvas,
+    /** A fresh canvas (no context) in the present one's place, with its attributes and style; returns it. */
+    replaceCanvas() {
+      const fresh = this.canvas.cloneNode(false);
+      this.canvas.replaceWith(fresh);
+      this.canvas = fresh;
+      return fresh;
+    },
     /**
      * Shows the open pages: `pages` are their indices, `alts` their alt text (or undefined). Text
      * only ever goes in as textContent: alt strings come from the page author.

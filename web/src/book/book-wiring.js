@@ -9,6 +9,7 @@ import { PageStore } from '../pages/page-store.js';
 import { createLinkLayer } from '../layers/link-layer.js';
 import { turnsAt } from '../input/turn-area.js';
 import { attachInput } from '../input/book-input.js';
+import { positionOfPage } from '../engine/layout.js';
 
 /**
  * What the parts may ask of the book: the controller makes it once, in `_makePort`.
@@ -234,6 +235,16 @@ const NO_COMPANIONS = Object.freeze({ memory: null, autoplay: null, sound: null 
 /** The page the book opens at: the address's or the remembered page when asked for, else `startPage`. */
 export function openingPageOf(companions, settings, pageCount) {
   return companions.memory ? companions.memory.openingPage(settings, pageCount) : settings.startPage;
+}
+
+/**
+ * The pages the first view shows at page `opening` in `display`, and their neighbours, asked for before the
+ * surface is made (a WebGL context, the longest step of a first view): their fetch and decode run meanwhile,
+ * sized for the canvas as it is laid out now; the store's first update() takes them up. @param {BookPort} book
+ */
+export function prefetchOpening(book, display, opening) {
+  const size = { width: book.canvas.clientWidth, height: book.canvas.clientHeight };
+  book.store().prefetch(size, display, positionOfPage(opening, book.pageCount(), display));
 }
 
 /**

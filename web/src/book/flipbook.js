@@ -6,7 +6,7 @@ import { BookView } from '../surfaces/book-view.js';
 import { BookController } from './book-controller.js';
 import { describeValue, hardPageIndices, validateOptions } from './options.js';
 import { contextBudget } from '../surfaces/context-budget.js';
-import { softwareWebGL } from '../surfaces/software-gl.js';
+import { knownSoftwareWebGL, probeWebGL } from '../surfaces/software-gl.js';
 
 // Failures after which a book can still be shown, as still pages: Flipbook.create falls back on these.
 const FALLBACK_CODES = ['webgl2-unavailable', 'engine-unavailable'];
@@ -53,10 +53,12 @@ export class Flipbook extends BookController {
   }
 
   // Loads the engine and builds the first view (BookController's _build and _events, reached through
-  // `this`, as a subclass does); resolves with the book once its pages have loaded or failed.
+  // `this`, as a subclass does); resolves with the book once its pages have loaded or failed. The engine
+  // loads while the first view's pages are asked for and its context is made: _makeSurface waits for it.
   async _open() {
     try {
-      this._engine = await loadEngine(this._settings.wasmUrl ? { wasmUrl: this._settings.wasmUrl } : {});
+      this._engine = loadEngine(this._settings.wasmUrl ? { wasmUrl: this._settings.wasmUrl } : {});
+      this._engine.catch(() => {});  // a failure is thrown where it is awaited
       await this._build();
     } catch (error) {
       throw await this._fail(error);
@@ -66,6 +68,7 @@ export class Flipbook extends BookController {
     // ones a turn draws are linked when the page is next idle, so neither the first page nor the first turn waits.
     const prepare = () => { if (!this._destroyed && this._surface?.prepareTurn?.() === false) whenIdle(prepare); };
     whenIdle(prepare);
+    whenIdle(() => contextBudget().releaseDiscarded());  // a probe's context given up (_prepareCanvas)
     return this;
   }
 
@@ -76,6 +79,7 @@ export class Flipbook extends BookController {
 
   destroy() {
     if (this._destroyed) return;
+    if (!this._surface) this._probed?.getExtension('WEBGL_lose_context')?.loseContext();  // no renderer came to take it
     super.destroy();
     this._contextLease.dispose();
   }
@@ -102,11 +106,30 @@ export class Flipbook extends BookController {
     return error;
   }
 
-  _makeSurface(display) {
+  // Room in the page's context budget, then the canvas's context. antialias 'auto' (smooth edges unless WebGL
+  // runs in software, where multisampling costs ~30% a frame) is found out by the page's first book, on its own
+  // canvas with the context it keeps on a GPU (software-gl.js); in software that context is multisampled, so
+  // the book takes a fresh canvas, whose context the renderer makes, and gives the probe's to the budget to lose
+  // when its place is wanted or the page is idle (losing one can block for tens of ms). A known verdict (or
+  // true, false) needs no probe.
+  _prepareCanvas() {
+    this._contextLease.admit();
+    if (this._settings.antialias !== 'auto' || knownSoftwareWebGL() !== null) return;
+    this._probed = probeWebGL(this._canvas);  // on a GPU, the renderer's context to be
+    if (!knownSoftwareWebGL()) return;
+    contextBudget().discard(this._probed);
+    this._probed = null;
+    this._contextLease.dispose();
+    this._replaceCanvas();
+    this._contextLease = contextBudget().lease(this._canvas);
+    this._contextLease.admit();
+  }
+
+  async _makeSurface(display) {
+    const engine = await this._engine;
     const settings = this._settings;
     const hardPages = hardPageIndices(this._pages, settings.hardCovers);
-    this._contextLease.admit();  // room in the page's context budget before the renderer makes one
-    const view = new BookView(this._engine, this._canvas, {
+    const view = new BookView(engine, this._canvas, {
       pageCount: this.pageCount,
       // A PDF's pages keep their shape; image books use the engine's default page.
       ...(settings.pageAspect ? { pageWidth: settings.pageAspect, pageHeight: 1 } : {}),
@@ -116,8 +139,7 @@ export class Flipbook extends BookController {
       turnSeconds: settings.duration / 1000,
       schedule: settings.schedule,
       center: settings.center,
-      // 'auto': smooth edges unless WebGL runs in software, where multisampling costs ~30% a frame.
-      antialias: settings.antialias === 'auto' ? !softwareWebGL() : settings.antialias,
+      antialias: settings.antialias === 'auto' ? !knownSoftwareWebGL() : settings.antialias,  // see _prepareCanvas
       lighting: settings.lighting,
       shadows: settings.shadows,
       gutter: settings.gutter,

@@ -2,10 +2,11 @@
 // loaded or failed (and why), the images kept for the pages near the open spread (a bounded cache, the
 // least recently wanted let go first), their sizes for the screen, and sharper images when zoomed in.
 import { loadPage, pageFailure } from './page-loader.js';
-import { PageCache } from './page-residency.js';
+import { EarlyLoads } from './early-loads.js';
+import { PageCache, wantedPages } from './page-residency.js';
 import { uploadSizeFor } from './texture-upload.js';
 import { directionFacts } from '../engine/direction.js';
-import { isZoomed, splicePageMap } from '../engine/layout.js';
+import { isZoomed, openPages, restingRect, splicePageMap } from '../engine/layout.js';
 
 const TEXTURE_OVERSAMPLE = 1.5;  // images up to this many pixels per device pixel of the page on screen
 const REFIT_RATIO = 1.25;        // a kept image is handed over again only when this far off the size wanted
@@ -31,6 +32,7 @@ export class PageStore {
     this._owned = new Set();   // images made here (ImageBitmaps from URLs and Blobs): closed when let go
     this._cache = new PageCache(settings.loadWindow, entries.length);
     this._abort = new AbortController();  // fetches still running when the book is destroyed stop
+    this._early = new EarlyLoads(this._abort.signal);  // the opening pages, asked for before the surface exists
     this._reloads = new Map();  // page entry -> its reload running now (by entry: indices move as pages are spliced)
     this._closed = false;
   }
@@ -52,28 +54,37 @@ export class PageStore {
    */
   update() {
     if (this._closed) return;
-    const open = this._hooks.openPages();
-    const wanted = this._cache.want({
-      onScreen: this._hooks.surface().pagesOnScreen(),
-      first: open[0],
-      last: open[open.length - 1],
-      loadWindow: this._settings.loadWindow,
-      pageCount: this.entries.length,
-    });
+    const wanted = this._cache.want(this._viewAt(this._hooks.surface().pagesOnScreen(), this._hooks.openPages()));
     for (const page of wanted) if (this._cache.stateOf(page) === 'idle') this._load(page);
+    this._early.drop();  // asked for early and not wanted now
     this._releaseExcess();
+  }
+
+  // What the cache is told of a view: the pages on screen, the open spread's first and last.
+  _viewAt(onScreen, open) {
+    return { onScreen, first: open[0], last: open[open.length - 1], loadWindow: this._settings.loadWindow, pageCount: this.entries.length };
+  }
+
+  /** Before the surface exists: starts loading what its first update() will want at `position`, sized for a
+   * `display` view of a canvas of `size` CSS px (layout.js, as the engine), to fetch and decode meanwhile. */
+  prefetch(size, display, position) {
+    const open = openPages(position, this.entries.length, display);
+    const { direction, pageAspect } = this._settings;
+    const cover = this._coverOf(restingRect(size, { display, direction, pageAspect }), display, 1);
+    const pages = wantedPages({ ...this._viewAt(open, open), capacity: this._cache.capacity });
+    this._early.start(pages.map((page) => [page, this.entries[page]]), cover);
   }
 
   /** A page's size on screen in CSS px at zoom 1 (restingRect is the zoomed picture of both pages). */
   pageCssSize() {
     const surface = this._hooks.surface();
-    const full = surface.restingRect();
-    const spread = surface.display === 'single' ? 1 : 2;
-    const { vertical } = directionFacts(this._settings.direction);
-    return {
-      width: (vertical ? full.width : full.width / spread) / surface.zoom,
-      height: (vertical ? full.height / spread : full.height) / surface.zoom,
-    };
+    return this._pageOf(surface.restingRect(), surface.display, surface.zoom);
+  }
+
+  // One page's share of `full`, the rect of both pages of a spread (or the one page), at zoom 1.
+  _pageOf(full, display, zoom) {
+    const [spread, { vertical }] = [display === 'single' ? 1 : 2, directionFacts(this._settings.direction)];
+    return { width: full.width / (vertical ? 1 : spread) / zoom, height: full.height / (vertical ? spread : 1) / zoom };
   }
 
   /**
@@ -82,8 +93,13 @@ export class PageStore {
    * pixels: memory stays bounded).
    */
   cover({ zoomed = false } = {}) {
-    const { width, height } = this.pageCssSize();
-    const scale = (globalThis.devicePixelRatio || 1) * TEXTURE_OVERSAMPLE * (zoomed ? this._hooks.surface().zoom : 1);
+    const surface = this._hooks.surface();
+    return this._coverOf(surface.restingRect(), surface.display, surface.zoom, zoomed ? surface.zoom : 1);
+  }
+
+  _coverOf(full, display, zoom, magnified = 1) {
+    const { width, height } = this._pageOf(full, display, zoom);
+    const scale = (globalThis.devicePixelRatio || 1) * TEXTURE_OVERSAMPLE * magnified;
     return { width: Math.ceil(width * scale), height: Math.ceil(height * scale) };
   }
 
@@ -187,6 +203,7 @@ export class PageStore {
     if (this._closed) return;
     this._closed = true;
     this._abort.abort();
+    this._early.drop();
     for (const image of this._owned) image.close?.();
     this._owned.clear();
     this._images.clear();
@@ -213,9 +230,11 @@ export class PageStore {
     const entry = this.entries[index];
     try {
       // A function makes its page only when the page is wanted (drawn, fetched or rendered on
-      // demand), told the size in device pixels the page is drawn at.
-      const { image, owned, natural } = await loadPage(entry.src,
-        { index, size: this.cover(), signal: this._abort.signal });
+      // demand), told the size in device pixels the page is drawn at. Asked for early (prefetch), taken up.
+      const cover = this.cover();
+      const early = this._early.take(entry, cover);
+      const { image, owned, natural } = (early && await early)
+        ?? await loadPage(entry.src, { index, size: cover, signal: this._abort.signal });
       if (owned) this._owned.add(image);
       index = this._closed ? -1 : this._indexOf(entry, index);
       if (index < 0 || this._cache.stateOf(index) !== 'loading'

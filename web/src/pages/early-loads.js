@@ -1,0 +1,55 @@
+// The opening pages, asked for before the book's surface exists: making it (a WebGL context) is the longest
+// step of a first view, and their fetch and off-thread decode run meanwhile. PageStore takes them up.
+import { loadPage } from './page-loader.js';
+import { MAX_IMAGE_SIZE, naturalSize, uploadSizeFor } from './texture-upload.js';
+
+const SAME_SIZE = 0.99;  // within 1 % of the size wanted is that size (as texture-upload.js)
+
+// Only a fetch and a decode off the main thread are started early: a page function may draw on the main
+// thread, which is busy making the context then (and a function is told its size, which the surface knows best).
+const isEncoded = (source) => typeof source === 'string' || (typeof Blob !== 'undefined' && source instanceof Blob);
+
+const closeOwned = ({ image, owned }) => { if (owned) image.close?.(); };
+
+export class EarlyLoads {
+  /** @param {AbortSignal} signal  the store's: fetches stop when the book is destroyed */
+  constructor(signal) {
+    this._signal = signal;
+    this._loads = new Map();  // page entry -> loadPage's promise
+  }
+
+  /** Starts loading each page of `pages` ([index, entry]) whose source is a URL or a Blob, decoded to cover `cover`. */
+  start(pages, cover) {
+    for (const [index, entry] of pages) {
+      if (!isEncoded(entry.src) || this._loads.has(entry)) continue;
+      const load = loadPage(entry.src, { index, size: cover, signal: this._signal });
+      load.catch(() => {});  // a failure is reported by the load that takes it up
+      this._loads.set(entry, load);
+    }
+  }
+
+  /**
+   * The early load of `entry` as loadPage resolves (or rejects), or null where none was started. Taken
+   * synchronously: the store's next update() finds it gone. An image decoded smaller than `cover` now
+   * wants (the surface lays the page out larger than guessed) is let go, and null is returned: loaded anew.
+   */
+  take(entry, cover) {
+    const load = this._loads.get(entry);
+    if (!load) return null;
+    this._loads.delete(entry);
+    return load.then((result) => {
+      const have = naturalSize(result.image);
+      const from = result.natural ?? have;
+      const wanted = uploadSizeFor(from.width, from.height, { cover, maxTextureSize: MAX_IMAGE_SIZE });
+      if (have.width >= wanted.width * SAME_SIZE && have.height >= wanted.height * SAME_SIZE) return result;
+      closeOwned(result);
+      return null;
+    });
+  }
+
+  /** Loads not taken are let go: their images closed as they land. */
+  drop() {
+    for (const load of this._loads.values()) load.then(closeOwned, () => {});
+    this._loads.clear();
+  }
+}
