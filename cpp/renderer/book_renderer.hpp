@@ -181,6 +181,9 @@ private:
     static constexpr double kNoKey = -1.0e300;
     RestingKey restingKey(const Book& book, const BookFrame& frame, const Camera& camera, int width, int height) const;
     void ensureCacheTarget(int width, int height);
+    // Gives `texture` (bound at `unit`) width x height of RGBA8, `filter`ed and clamped, and attaches it
+    // as the colour of `framebuffer`, which is left bound.
+    void colorTarget(GLuint framebuffer, int unit, GLuint texture, int width, int height, GLint filter);
     // Lays the cached resting spread over the target (`target`: 0 for the canvas, else the scaled
     // frame's framebuffer), over its rectangle: with the shadow, a draw that darkens it by the mask;
     // without, a blit (a draw on a multisampled canvas, which takes no blit).

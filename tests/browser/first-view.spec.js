@@ -68,20 +68,26 @@ test('browser: a book asks for the pages of its first view (the open spread and 
   expect(result.decodes).toBe(result.resident.length);    // and decoded once, at the size the surface draws it
 });
 
+// In the page: the fixture's book, then a second book beside it; the WebGL contexts made after the first.
+async function openTwoBooks() {
+  await window.openBook({ pages: 4, display: 'double' });
+  const first = window.__contexts.length;
+  const other = document.createElement('div');
+  other.style.cssText = 'width: 640px; height: 400px';
+  document.body.append(other);
+  const second = await window.Flipbook.create(other, { pages: [window.makeNumberedPage(0), window.makeNumberedPage(1)] });
+  return { first, books: [window.book, second] };
+}
+
 test('browser: on a GPU, antialias \'auto\' makes one WebGL context per book, on its own canvas, multisampled (counts of contexts made)', async ({ page }) => {
   await page.addInitScript(reportGpu);
   await page.addInitScript(logFirstView);
   await openReady(page, FIXTURE);
-  const result = await page.evaluate(async () => {
-    await window.openBook({ pages: 4, display: 'double' });
-    const first = window.__contexts.length;
-    const other = document.createElement('div');
-    other.style.cssText = 'width: 640px; height: 400px';
-    document.body.append(other);
-    const second = await window.Flipbook.create(other, { pages: [window.makeNumberedPage(0), window.makeNumberedPage(1)] });
+  const result = await page.evaluate(async (openTwo) => {
+    const { first, books } = await new Function(`return (${openTwo})`)()();  // eslint-disable-line no-new-func
     const drawnOn = (book) => book.element.querySelector('canvas').getContext('webgl2').getContextAttributes().antialias;
-    return { first, both: window.__contexts.length, antialias: [drawnOn(window.book), drawnOn(second)] };
-  });
+    return { first, both: window.__contexts.length, antialias: books.map(drawnOn) };
+  }, openTwoBooks.toString());
   expect(result.first).toBe(1);  // the probe's context is the renderer's
   expect(result.both).toBe(2);
   expect(result.antialias).toEqual([true, true]);
@@ -90,21 +96,16 @@ test('browser: on a GPU, antialias \'auto\' makes one WebGL context per book, on
 test('browser: in software, antialias \'auto\' leaves the book\'s canvas without multisampling: the first book of a page makes two contexts (the probe\'s is let go once the first view is shown), later books one (counts)', async ({ page }) => {
   await page.addInitScript(logFirstView);
   await openReady(page, FIXTURE);
-  const result = await page.evaluate(async () => {
-    await window.openBook({ pages: 4, display: 'double' });
-    const first = window.__contexts.length;
-    const other = document.createElement('div');
-    other.style.cssText = 'width: 640px; height: 400px';
-    document.body.append(other);
-    const second = await window.Flipbook.create(other, { pages: [window.makeNumberedPage(0), window.makeNumberedPage(1)] });
+  const result = await page.evaluate(async (openTwo) => {
+    const { first, books: [one, two] } = await new Function(`return (${openTwo})`)()();  // eslint-disable-line no-new-func
     const drawnOn = (book) => book.element.querySelector('canvas').getContext('webgl2');
     return {
       first,
       both: window.__contexts.length,
-      antialias: [drawnOn(window.book), drawnOn(second)].map((gl) => gl.getContextAttributes().antialias),
-      sameContexts: drawnOn(window.book) === window.__contexts[1] && drawnOn(second) === window.__contexts[2],
+      antialias: [drawnOn(one), drawnOn(two)].map((gl) => gl.getContextAttributes().antialias),
+      sameContexts: drawnOn(one) === window.__contexts[1] && drawnOn(two) === window.__contexts[2],
     };
-  });
+  }, openTwoBooks.toString());
   expect(result.first).toBe(2);
   expect(result.both).toBe(3);
   expect(result.antialias).toEqual([false, false]);
