@@ -404,6 +404,33 @@ test('browser: the More menu by keyboard: a menu button in the roving focus; Ent
   expect(await seriousViolations(page)).toEqual([]);
 });
 
+test('browser: the toolbar fitting itself again to a new width keeps the focus: More stays focused, and a control that moves into the menu gives focus to More', async ({ page }) => {
+  await page.setViewportSize({ width: 360, height: 600 });
+  await page.evaluate(() => Object.assign(document.getElementById('container').style, { width: '340px', height: '500px' }));
+  await openViewer(page, 12, { controls: { download: true, print: true }, outline: OUTLINE, labels: { more: 'Plus' } });
+  const more = page.getByRole('button', { name: 'Plus' });
+  // The toolbar's ResizeObserver fits it in the frame after its width changed: two frames later it has.
+  const resize = (width) => page.evaluate(async (width) => {
+    document.getElementById('container').style.width = `${width}px`;
+    for (let i = 0; i < 2; i++) await new Promise((resolve) => requestAnimationFrame(resolve));
+  }, width);
+  await more.focus();
+  await resize(330);
+  await expect(more).toBeVisible();
+  expect(await more.evaluate((button) => button === document.activeElement)).toBe(true);
+  // A control still on the toolbar keeps the focus; one that moves into the menu hands it to More.
+  const toolbar = page.getByRole('toolbar');
+  const zoomIn = toolbar.getByRole('button', { name: 'Zoom in' });
+  await resize(500);
+  await expect(zoomIn).toBeVisible();
+  await zoomIn.focus();
+  await resize(480);
+  expect(await zoomIn.evaluate((button) => button === document.activeElement)).toBe(true);
+  await resize(260);
+  await expect(zoomIn).toBeHidden();
+  expect(await more.evaluate((button) => button === document.activeElement)).toBe(true);
+});
+
 test.describe('a 390x844 phone', () => {
   // Not isMobile: the fixture has no viewport meta, so a mobile browser would lay it out 980 px wide.
   test.use({ viewport: { width: 390, height: 844 }, deviceScaleFactor: 1, hasTouch: true });

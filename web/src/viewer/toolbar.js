@@ -110,6 +110,9 @@ export function createToolbar(labels, parts, actions, { fullscreenKey = 'fullscr
   let moved = [];
   function fit() {
     if (element.clientWidth === 0) return;
+    // A control hidden while the row is measured loses focus: it goes back to it once the fit is done
+    // (or to More, where the control moved into the menu).
+    const focused = [...Object.values(buttons), menu.button].find((control) => control === document.activeElement);
     const movable = OVERFLOW_ORDER.filter(present);
     for (const part of movable) setShown(part, true);
     if (buttons.fullscreen) buttons.fullscreen.hidden = reading;
@@ -125,6 +128,7 @@ export function createToolbar(labels, parts, actions, { fullscreenKey = 'fullscr
     }
     const names = moved.flatMap(buttonsOf);
     menu.show(Object.keys(menu.items).filter((name) => names.includes(name)));  // in toolbar order
+    if (focused && document.activeElement !== focused) (focused.hidden ? menu.button : focused).focus();
     focus.refresh();
   }
   const watch = typeof ResizeObserver === 'function' ? new ResizeObserver(() => fit()) : null;
