@@ -30,8 +30,7 @@ export class MovingResolution {
     this._setting = setting;
     this._scale = 1;       // the share of the drawing buffer's width and height a moving frame is drawn at
     this._last = null;     // the previous moving frame's time
-    this._late = 0;        // late frames in a row
-    this._lateIntervals = [];
+    this._late = [];       // the intervals of the late frames in a row
     this._onTime = 0;      // on-time frames in a row
     this._trial = null;    // after a cut: { from: the scale before, baseline: the late median, intervals after it }
     this._hold = 0;        // moving frames left before another cut may be tried
@@ -40,8 +39,8 @@ export class MovingResolution {
   get setting() { return this._setting; }
   set setting(value) {
     this._setting = value;
-    this._late = this._onTime = this._hold = 0;
-    this._lateIntervals = [];
+    this._onTime = this._hold = 0;
+    this._late = [];
     this._trial = null;
   }
 
@@ -73,19 +72,17 @@ export class MovingResolution {
     if (this._trial) return this._judge(interval);
     if (interval > LATE_MS) {
       this._onTime = 0;
-      this._lateIntervals.push(interval);
-      if (++this._late < LATE_FRAMES) return this._scale;
-      const late = this._lateIntervals;
-      this._late = 0;
-      this._lateIntervals = [];
+      this._late.push(interval);
+      if (this._late.length < LATE_FRAMES) return this._scale;
+      const late = this._late;
+      this._late = [];
       if (this._hold > 0 || this._scale <= lowest) return this._scale;
       // Pixels cost in proportion: the scale that would have fit the frame (a late one: below 0.9).
       const cut = Math.max(LOWEST_CUT, Math.sqrt(FRAME_MS / interval));
       this._trial = { from: this._scale, baseline: median(late), intervals: [] };
       return Math.max(lowest, this._scale * cut);
     }
-    this._late = 0;
-    this._lateIntervals = [];
+    this._late = [];
     if (interval > ON_TIME_MS || this._scale >= 1) return this._scale;
     if (++this._onTime < ON_TIME_FRAMES) return this._scale;
     this._onTime = 0;
