@@ -49,7 +49,7 @@ function publicMembers(Class, { statics = false } = {}) {
 
 test('node: docs/api.md names every option, every option with a default, and every event as inline code', () => {
   const spans = new Set(inlineCode(read('docs/api.md')));
-  const options = [...new Set([...OPTION_NAMES, ...Object.keys(DEFAULTS), 'pdf', 'pdfWorkerSrc'])];
+  const options = [...new Set([...OPTION_NAMES, ...Object.keys(DEFAULTS), 'pdf', 'pdfWorkerSrc', 'document'])];
   assert.ok(options.length > 20 && BOOK_EVENTS.length > 10, 'the lists read from the modules look empty');
   const missing = [...options.map((name) => `option ${name}`), ...BOOK_EVENTS.map((name) => `event ${name}`)]
     .filter((entry) => !spans.has(entry.split(' ')[1]));

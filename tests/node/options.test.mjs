@@ -103,7 +103,7 @@ test('node: pages must be a non-empty array of page sources; each entry is check
   refuses({ pages: [{ alt: 'no source' }] }, `option 'pages[0].src' must be ${sources}; got undefined`);
   refuses({ pages: [{ src: 'a.png', alt: 5 }] }, "option 'pages[0].alt' must be a string (the page's text for screen readers); got 5");
   refuses({ pages: [{ src: 'a.png', hard: 'yes' }] }, "option 'pages[0].hard' must be true or false; got \"yes\"");
-  refuses({ pages: [{ src: 'a.png', title: 'x' }] }, "option 'pages[0]' has an unknown key 'title' (allowed: src, html, alt, hard, zoomSrc, links)");
+  refuses({ pages: [{ src: 'a.png', title: 'x' }] }, "option 'pages[0]' has an unknown key 'title' (allowed: src, html, alt, hard, zoomSrc, thumbSrc, links)");
   refuses({ pages: [{ src: 'a.png', zoomSrc: () => 'b.png' }] },
     "option 'pages[0].zoomSrc' must be a URL, HTMLImageElement, HTMLCanvasElement, ImageBitmap or Blob; got a function");
   refuses({ pages: [{ src: 'a.png', links: {} }] }, "option 'pages[0].links' must be an array of { rect, href } or { rect, page }; got an object");
@@ -168,10 +168,10 @@ test('node: turnArea is one of page, edges, corners, none; its default is edges 
 });
 
 test('node: a PDF book (validateOptions told pdf) turns from the edges by default while its text layer is on; textLayer is a boolean, default true', () => {
-  assert.equal(validateOptions({ pages: ['a.jpg'] }, { pdf: true }).turnArea, 'edges');
-  assert.equal(validateOptions({ pages: ['a.jpg'] }, { pdf: true }).textLayer, true);
-  assert.equal(validateOptions({ pages: ['a.jpg'], textLayer: false }, { pdf: true }).turnArea, 'page');
-  assert.equal(validateOptions({ pages: ['a.jpg'], turnArea: 'page' }, { pdf: true }).turnArea, 'page');
+  assert.equal(validateOptions({ pages: ['a.jpg'] }, { document: true }).turnArea, 'edges');
+  assert.equal(validateOptions({ pages: ['a.jpg'] }, { document: true }).textLayer, true);
+  assert.equal(validateOptions({ pages: ['a.jpg'], textLayer: false }, { document: true }).turnArea, 'page');
+  assert.equal(validateOptions({ pages: ['a.jpg'], turnArea: 'page' }, { document: true }).turnArea, 'page');
   assert.equal(validateOptions({ pages: ['a.jpg'] }).turnArea, 'page');  // an image book has no text layer
   assert.throws(() => validateOptions({ pages: ['a.jpg'], textLayer: 'yes' }),
     { name: 'TypeError', message: 'conecurl: option \'textLayer\' must be true or false, got "yes"' });

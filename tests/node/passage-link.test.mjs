@@ -2,7 +2,7 @@
 // what a link writes, a book reads back; malformed addresses are no passage.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { hashPassage, passageUrl } from '../../web/src/book/page-memory.js';
+import { hashPassage, passageUrl } from '../../web/src/document/passage-address.js';
 import { passageText } from '../../web/src/layers/text-layer.js';
 
 test('node: a passage link round-trips through its address: page from 1 in the link, from 0 when read; any text, & and # included', () => {

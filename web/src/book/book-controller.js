@@ -10,7 +10,7 @@ import {
   attachBookInput, followSurface, loadCompanions, loadEdgeMarks, loadTextLayer, makeHtmlPages, makeLinkLayer, makeLivePages,
   makePageStore, makeZoom, openingPageOf, prefetchOpening, startCompanions, watchBookSize,
 } from './book-wiring.js';
-import { attachViewer, makeDocumentApi } from './document-wiring.js';
+import { attachViewer, makeDocumentApi } from '../document/document-wiring.js';
 import { MAX_ZOOM, displayFor, openPages } from '../engine/layout.js';
 
 const REFIT_DELAY_MS = 150;  // images are fitted to a new size or zoom once it has come to rest
@@ -19,15 +19,16 @@ export class BookController extends EventTarget {
   /**
    * @param {HTMLElement} container
    * @param {object} settings  checked options with defaults (options.js validateOptions)
-   * @param {object|null} pdf  an open PDF whose pages are the book's (pdf-pages.js): the book owns it
+   * @param {object|null} doc  an open document whose pages are the book's (a PDF: pages/pdf-pages.js; a
+   *   published one: document/published-document.js): the book owns it
    */
-  constructor(container, settings, pdf = null) {
+  constructor(container, settings, doc = null) {
     super();
     this._container = container;
     this._settings = settings;
-    this._pdf = pdf;
+    this._document = doc;
     // Entries as given (a PDF's fill in their alt and links as their pages render), links in one form.
-    this._pages = pageEntries(settings.pages, { copy: !pdf });
+    this._pages = pageEntries(settings.pages, { copy: !doc });
     this._events = new BookEvents(this, settings.on);  // `on` listeners first; events of create() held
     this._destroyed = false;
     this._surface = null;
@@ -186,8 +187,8 @@ export class BookController extends EventTarget {
     this._events.drop();
     this._store.close();
     this._doc.stop();
-    this._pdf?.destroy();
-    this._pdf = null;
+    this._document?.destroy();
+    this._document = null;
     for (const layer of this._layers) layer.remove();
     this._input?.stop();
     this._stopWatchingSize?.();
@@ -280,8 +281,8 @@ export class BookController extends EventTarget {
       attachHtml: (HtmlPages) => this._mountHtml(HtmlPages),
       followLink: (link, event) => this._onLink(link, event),
       flushEvents: () => this._events.flush(),
-      pdf: () => Boolean(this._pdf),
-      pdfDocument: () => this._pdf,
+      isDocument: () => Boolean(this._document),
+      document: () => this._document,
       container: this._container,
       addLayer: (layer) => this._layers.push(layer),
       decorate: (index, image) => this._doc.decorate(index, image),

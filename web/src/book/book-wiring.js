@@ -39,8 +39,9 @@ import { positionOfPage } from '../engine/layout.js';
  * @property {(HtmlPages: Function) => void} attachHtml  mounts the HTML pages' layer
  * @property {(link: object, event: Event) => void} followLink
  * @property {() => void} flushEvents  events held while create() runs go out now
- * @property {() => boolean} pdf  the book's pages are a PDF's
- * @property {() => object|null} pdfDocument  the open PDF (pdf-pages.js openPdf: page(), textContent(), pdfjs), or null
+ * @property {() => boolean} isDocument  the book's pages are a document's (a PDF, or a published one)
+ * @property {() => object|null} document  the open document (pages/pdf-pages.js openPdf, document/published-document.js
+ *   openPublished: pageText(), outline(), downloadUrl()), or null
  * @property {HTMLElement} container  the element the book was made in (fullscreen takes it)
  * @property {(layer: object) => void} addLayer  an overlay layer made later (search hits), laid and removed with the others
  * @property {(index: number, image: object) => object} decorate  the image the surface gets for a page (search marks drawn in)
@@ -66,7 +67,7 @@ export function makePageStore(book) {
     emit: book.emit,
     // A source may have learned its page's text and links while making it (a PDF page). Not while a
     // leaf moves or is lifted by a hover hint: the landing, or the hint's end, shows them again.
-    decorate: book.decorate,  // search marks drawn into the page's image (book-search.js)
+    decorate: book.decorate,  // search marks drawn into the page's image (document/book-search.js)
     onOpenPageLoaded: (index) => {
       if (!book.surface().animating && book.openPages().includes(index)) book.showOpenPages();
     },
@@ -81,28 +82,28 @@ export function makeLinkLayer(book) {
   });
 }
 
-/** The edge marks' layer (edge-marks.js), imported only for a book that shows them (`edgeMarks`, on with `controls`). */
+/** The edge marks' layer (document/edge-marks.js), imported only for a book that shows them (`edgeMarks`, on with `controls`). */
 export async function loadEdgeMarks(settings) {
-  return settings.edgeMarks ? (await import('./edge-marks.js')).EdgeMarks : null;
+  return settings.edgeMarks ? (await import('../document/edge-marks.js')).EdgeMarks : null;
 }
 
 /**
- * A PDF's selectable text (text-layer.js, imported only for PDF books with `textLayer`), laid in under
+ * A document's selectable text (text-layer.js, imported only for PDF and published books with `textLayer`), laid in under
  * `before` (the links); its passage button copies a link and says so (`passagelink`). Null for other
  * books, and once destroyed.
  * @param {BookPort} book
  */
 export async function loadTextLayer(book, before) {
-  if (!book.pdf() || !book.settings.textLayer) return null;
+  if (!book.isDocument() || !book.settings.textLayer) return null;
   const { createTextLayer } = await import('../layers/text-layer.js');
   if (book.destroyed()) return null;
   return createTextLayer(book.root, {
-    pdf: book.pdfDocument(),
+    doc: book.document(),
     canvas: book.canvas,
     before,
     onPassage: (passage) => {
       // The link copied by passage-link.js, imported at the first passage a reader asks for.
-      import('./passage-link.js').then(({ sharePassage }) => sharePassage(passage))
+      import('../document/passage-link.js').then(({ sharePassage }) => sharePassage(passage))
         .then((detail) => { if (!book.destroyed()) book.emit('passagelink', detail); });
     },
   });
@@ -137,7 +138,7 @@ export async function makeLivePages(book) {
     html: book.html,
     attachHtml: book.attachHtml,
     page: book.page,
-    pdf: book.pdf,
+    isDocument: book.isDocument,
     alive: book.alive,
     shown: book.showOpenPages,
     emit: book.emit,

@@ -4,16 +4,29 @@
 import { loadEngine } from '../engine/load-engine.js';
 import { BookView } from '../surfaces/book-view.js';
 import { BookController } from './book-controller.js';
-import { describeValue, hardPageIndices, validateOptions } from './options.js';
+import { DOCUMENT_OPTIONS, describeValue, hardPageIndices, validateOptions } from './options.js';
 import { contextBudget } from '../surfaces/context-budget.js';
 import { knownSoftwareWebGL, probeWebGL } from '../surfaces/software-gl.js';
 
 // Failures after which a book can still be shown, as still pages: Flipbook.create falls back on these.
 const FALLBACK_CODES = ['webgl2-unavailable', 'engine-unavailable'];
 
-// `pdf` (a URL, ArrayBuffer or Uint8Array) instead of `pages`: pdf.js is imported only then.
-async function openPdfOption(options) {
-  if (options === null || typeof options !== 'object' || !('pdf' in options)) return null;
+// The book's document in place of `pages`: `pdf` (a URL, ArrayBuffer or Uint8Array; pdf.js is imported
+// only then) or `document` (a published document's book.json URL: conecurl publish wrote it).
+async function openDocumentOption(options) {
+  if (options === null || typeof options !== 'object') return null;
+  if ('document' in options) {
+    const { document: url } = options;
+    if (!(typeof url === 'string' && url.trim() !== '') && !(url instanceof URL)) {
+      throw new TypeError(`conecurl: option 'document' must be the URL of a published document's book.json, got ${describeValue(url)}`);
+    }
+    for (const other of ['pages', 'pdf', 'pdfWorkerSrc']) {
+      if (other in options) throw new TypeError(`conecurl: option '${other}' cannot be given with 'document' (the document's pages are the book)`);
+    }
+    const { openPublished } = await import('../document/published-document.js');
+    return openPublished(String(url));
+  }
+  if (!('pdf' in options)) return null;
   const { pdf, pdfWorkerSrc } = options;
   if (!(typeof pdf === 'string' || pdf instanceof ArrayBuffer || pdf instanceof Uint8Array)) {
     throw new TypeError(`conecurl: option 'pdf' must be a URL string, an ArrayBuffer or a Uint8Array, got ${describeValue(pdf)}`);
@@ -22,17 +35,19 @@ async function openPdfOption(options) {
   if (pdfWorkerSrc !== undefined && typeof pdfWorkerSrc !== 'string') {
     throw new TypeError(`conecurl: option 'pdfWorkerSrc' must be a URL string, got ${describeValue(pdfWorkerSrc)}`);
   }
-  const { openPdf } = await import('../pages/pdf-pages.js');
+  const { openPdf } = await import('../document/pdf-pages.js');
   return openPdf(pdf, { workerSrc: pdfWorkerSrc });
 }
 
 // Calls `task` when the page is next idle (within a second at the latest), or soon where there is no requestIdleCallback.
 const whenIdle = (task) => (globalThis.requestIdleCallback ? requestIdleCallback(task, { timeout: 1000 }) : setTimeout(task, 50));
 
-function withoutPdfOptions(options) {
-  const rest = { ...options };
-  delete rest.pdf;
-  delete rest.pdfWorkerSrc;
+// The options of a book over a document: its pages in place of the option that named it; its title is
+// the book's label unless one was given.
+function documentOptions(options, doc) {
+  const rest = { ...options, pages: doc.pages };
+  for (const name of DOCUMENT_OPTIONS) delete rest[name];
+  if (doc.title && rest.label === undefined) rest.label = doc.title;
   return rest;
 }
 
@@ -40,16 +55,16 @@ export class Flipbook extends BookController {
   /** @param {HTMLElement} container @param {object} options  See flipbook.d.ts. */
   static async create(container, options) {
     if (!(container instanceof HTMLElement)) throw new TypeError('conecurl: container must be an HTMLElement');
-    const pdf = await openPdfOption(options);
+    const doc = await openDocumentOption(options);
     let settings;
     try {
-      settings = validateOptions(pdf ? { ...withoutPdfOptions(options), pages: pdf.pages } : options, { pdf: Boolean(pdf) });
+      settings = validateOptions(doc ? documentOptions(options, doc) : options, { document: Boolean(doc) });
     } catch (error) {
-      pdf?.destroy();
+      doc?.destroy();
       throw error;
     }
-    if (pdf) settings.pageAspect = pdf.aspect;  // page shape from the PDF's first page
-    return new this(container, settings, pdf)._open();  // `this`: subclasses get their own instances
+    if (doc) settings.pageAspect = doc.aspect;  // page shape from the document's first page
+    return new this(container, settings, doc)._open();  // `this`: subclasses get their own instances
   }
 
   // Loads the engine and builds the first view (BookController's _build and _events, reached through
@@ -72,8 +87,8 @@ export class Flipbook extends BookController {
     return this;
   }
 
-  constructor(container, settings, pdf = null) {
-    super(container, settings, pdf);
+  constructor(container, settings, doc = null) {
+    super(container, settings, doc);
     this._contextLease = contextBudget().lease(this._canvas);  // many books on a page share the WebGL contexts
   }
 
@@ -89,16 +104,16 @@ export class Flipbook extends BookController {
   // Then `error` is dispatched (subclasses such as <cone-flipbook> hear it) and create rejects.
   async _fail(error) {
     const canFallBack = this._settings.fallback && FALLBACK_CODES.includes(error && error.code);
-    const pdf = canFallBack ? this._pdf : null;
-    if (canFallBack) this._pdf = null;  // the fallback shows the same PDF
+    const doc = canFallBack ? this._document : null;
+    if (canFallBack) this._document = null;  // the fallback shows the same document
     this.destroy();
     if (canFallBack) {
       try {
         // Loaded only now: books that have WebGL2 never download the fallback.
         const { openStaticBook } = await import('./static-book.js');
-        error.fallback = await openStaticBook(this._container, this._settings, pdf);
+        error.fallback = await openStaticBook(this._container, this._settings, doc);
       } catch (fallbackError) {
-        pdf?.destroy();
+        doc?.destroy();
         error.fallbackError = fallbackError;
       }
     }

@@ -7,7 +7,7 @@ import { MAX_PAGES, checkPage, describeValue, hardPageIndices, pageEntries } fro
 export class LivePages {
   /**
    * @param {{ entries: object[], store: object, surface: () => object, html: () => object|null,
-   *           attachHtml: (HtmlPages: Function) => void, page: () => number, hardCovers: boolean, pdf: () => boolean,
+   *           attachHtml: (HtmlPages: Function) => void, page: () => number, hardCovers: boolean, isDocument: () => boolean,
    *           alive: () => void, shown: () => void, emit: (type: string, detail: object) => void,
    *           flushEvents: () => void }} book
    */
@@ -65,7 +65,7 @@ export class LivePages {
   // `pageCount`), none an HTML element shown already.
   _changeable(method) {
     this._book.alive();
-    if (this._book.pdf()) throw new Error(`conecurl: ${method}: a PDF book's pages are its PDF's; they cannot change on a live book`);
+    if (this._book.isDocument()) throw new Error(`conecurl: ${method}: a PDF book's pages are its PDF's; they cannot change on a live book`);
   }
 
   _entries(method, pages, name, pageCount) {

@@ -5,6 +5,9 @@ import { DIRECTIONS } from '../engine/direction.js';
 import { AUTO_MIN_PAGE_WIDTH, MAX_LEAF_THICKNESS, MAX_PAGES } from '../engine/layout.js';
 import { TURN_AREAS } from '../input/turn-area.js';
 import { checkResolution } from '../surfaces/moving-resolution.js';
+import { describeValue } from '../engine/describe-value.js';
+
+export { describeValue };  // the options' errors show values so; other layers import it from engine/
 
 const BOOLEAN = (v) => typeof v === 'boolean' || 'true or false';
 export { MAX_PAGES };  // the engine's Book refuses more (cpp/core/book_constants.hpp)
@@ -57,12 +60,15 @@ const OPTION_CHECKS = {
   // textlayer (issue 23): a PDF book's selectable text over its flat pages.
   textLayer: BOOLEAN,
 };
-/** Every option validateOptions() knows (Flipbook.create also takes pdf and pdfWorkerSrc in place of pages). */
+/** Every option validateOptions() knows (Flipbook.create also takes a document in place of pages: DOCUMENT_OPTIONS). */
 export const OPTION_NAMES = Object.keys(OPTION_CHECKS);
-/** The options of a PDF book, in place of `pages`: Flipbook.create checks them (flipbook.js) and opens the PDF. */
-export const PDF_OPTIONS = ['pdf', 'pdfWorkerSrc'];
+/**
+ * The options of a book over a document, in place of `pages`: a PDF (`pdf`, `pdfWorkerSrc`) or a
+ * published document (`document`). Flipbook.create checks them (flipbook.js) and opens the document.
+ */
+export const DOCUMENT_OPTIONS = ['pdf', 'pdfWorkerSrc', 'document'];
 /** Every option Flipbook.create takes: FlipbookOptions in flipbook.d.ts (tests/node/typings.test.mjs checks it). */
-export const CREATE_OPTIONS = [...OPTION_NAMES, ...PDF_OPTIONS];
+export const CREATE_OPTIONS = [...OPTION_NAMES, ...DOCUMENT_OPTIONS];
 export const DEFAULTS = {
   display: 'auto', minPageWidth: AUTO_MIN_PAGE_WIDTH, direction: 'ltr', startPage: 0, duration: 1000, schedule: 'paper', center: true, hardCovers: false,
   lighting: true, shadows: true, gutter: true, thickness: true, loadWindow: 4, label: 'Book', fallback: true, hash: false,
@@ -72,24 +78,9 @@ export const DEFAULTS = {
 };
 /** Options a live book takes through setOptions(); the others need a new book. */
 export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter', 'thickness', 'resolution', 'display', 'minPageWidth', 'sound', 'muted'];
-const PAGE_ENTRY_KEYS = ['src', 'html', 'alt', 'hard', 'zoomSrc', 'links'];
+const PAGE_ENTRY_KEYS = ['src', 'html', 'alt', 'hard', 'zoomSrc', 'thumbSrc', 'links'];
 const PAGE_SOURCES = 'a URL string, HTMLImageElement, HTMLCanvasElement, ImageBitmap, Blob, '
   + 'a function returning one of these (or a Promise of one), or an HTML element (an HTML page)';
-
-/**
- * A value as an error message shows it: short, never the value's own toString (which may throw or
- * be huge), strings quoted so an empty one is visible.
- */
-export function describeValue(value) {
-  if (typeof value === 'string') return JSON.stringify(value.length > 60 ? `${value.slice(0, 57)}...` : value);
-  if (typeof value === 'number' || typeof value === 'boolean' || value === null || value === undefined) return String(value);
-  if (typeof value === 'bigint') return `${value}n`;
-  if (typeof value === 'symbol') return 'a symbol';
-  if (typeof value === 'function') return 'a function';
-  if (Array.isArray(value)) return `an array of ${value.length}`;
-  const name = Object.getPrototypeOf(value)?.constructor?.name;
-  return name && name !== 'Object' ? `a ${name}` : 'an object';
-}
 
 function isPageImage(src) {
   return (typeof src === 'string' && src !== '') || src instanceof Blob
@@ -138,9 +129,11 @@ export function checkPage(page, name, pageCount, kind = 'option') {
   if (page.hard !== undefined && typeof page.hard !== 'boolean') {
     throw new TypeError(`conecurl: ${kind} '${name}.hard' must be true or false; got ${describeValue(page.hard)}`);
   }
-  if (page.zoomSrc !== undefined && !isPageImage(page.zoomSrc)) {
-    throw new TypeError(`conecurl: ${kind} '${name}.zoomSrc' must be a URL, HTMLImageElement, HTMLCanvasElement, ImageBitmap or Blob; `
-      + `got ${describeValue(page.zoomSrc)}`);
+  for (const key of ['zoomSrc', 'thumbSrc']) {
+    if (page[key] !== undefined && !isPageImage(page[key])) {
+      throw new TypeError(`conecurl: ${kind} '${name}.${key}' must be a URL, HTMLImageElement, HTMLCanvasElement, ImageBitmap or Blob; `
+        + `got ${describeValue(page[key])}`);
+    }
   }
   if (page.links !== undefined) checkLinks(page.links, `${name}.links`, pageCount, kind);
 }
@@ -167,10 +160,10 @@ function checkLinks(links, where, pageCount, kind) {
 
 /**
  * Checks a book's options and returns them with the defaults filled in. Throws a TypeError naming
- * the first bad option (or page entry) and what it allows. `pdf`: the pages are a PDF's (Flipbook.create
- * opened it), so its text layer is on unless `textLayer: false`.
+ * the first bad option (or page entry) and what it allows. `document`: the pages are a document's (a PDF
+ * or a published one, Flipbook.create opened it), so its text layer is on unless `textLayer: false`.
  */
-export function validateOptions(options, { pdf = false } = {}) {
+export function validateOptions(options, { document = false } = {}) {
   if (options === null || typeof options !== 'object') {
     throw new TypeError(`conecurl: options must be an object, got ${describeValue(options)}`);
   }
@@ -191,7 +184,7 @@ export function validateOptions(options, { pdf = false } = {}) {
   // on their content is theirs. Not a PDF's text on a coarse pointer: a finger selects by a long press,
   // so a tap or a drag anywhere on the page may turn it (and a tap on a word reaches the book, text-layer.js).
   const hasHtml = Array.from(options.pages, (page) => isHtmlPage(page) || (isPlainEntry(page) && page.html !== undefined)).some(Boolean);
-  const hasText = pdf && (options.textLayer ?? DEFAULTS.textLayer);
+  const hasText = document && (options.textLayer ?? DEFAULTS.textLayer);
   // edgeMarks: on with the controls unless given.
   const coarse = Boolean(globalThis.matchMedia?.('(pointer: coarse)').matches);
   const settings = { ...DEFAULTS, turnArea: hasHtml || (hasText && !coarse) ? 'edges' : 'page', edgeMarks: Boolean(options.controls), ...options };
@@ -225,7 +218,7 @@ function checkOutline(entries, where, pageCount) {
 const oneLinkForm = (l) => ({ rect: l.rect, href: l.href ?? '#', toPage: l.page, title: l.title });
 
 /**
- * The page entries of checked options: every page as { src, alt?, hard?, zoomSrc?, links? } (or { html, ... }), links
+ * The page entries of checked options: every page as { src, alt?, hard?, zoomSrc?, thumbSrc?, links? } (or { html, ... }), links
  * in one form { rect, href, toPage, title }. Entries without links stay the objects given (a PDF's
  * fill in their alt and links as their pages render) unless `copy`: each entry its own object, so the
  * same page given twice is two entries (pages spliced on a live book are followed by their entries).

@@ -1,32 +1,11 @@
 // Where a book opens and what remembers its page: `hash: true` keeps #page=N (N counted from 1) in the
 // address, so a link opens the book there and the back and forward buttons turn it; `rememberPage:
 // 'key'` keeps the page in localStorage and opens there next time. The address wins over the memory.
-// A passage link, #page=N&text=..., opens the book at page N and marks the text there as a search hit.
-const HASH = /^#page=(\d+)(?:&text=([^&]*))?$/;
+// A passage link, #page=N&text=..., opens the book at page N and marks the text there as a search hit
+// (the address's form: document/passage-address.js).
+import { hashPage, hashPassage } from '../document/passage-address.js';
+
 const storageKey = (key) => `conecurl:page:${key}`;
-
-function hashPage() {
-  const match = HASH.exec(globalThis.location?.hash ?? '');
-  return match ? Number(match[1]) - 1 : null;
-}
-
-/** The passage the address names (#page=N&text=...): { page (from 0), text }, or null. */
-export function hashPassage(hash = globalThis.location?.hash ?? '') {
-  const match = HASH.exec(hash);
-  if (!match || match[2] === undefined) return null;
-  let text;
-  try {
-    text = decodeURIComponent(match[2]).trim();
-  } catch {
-    return null;  // a malformed escape is no passage
-  }
-  return text ? { page: Number(match[1]) - 1, text } : null;
-}
-
-/** The link to a passage on page `page` (from 0): this document's address with #page=N&text=... */
-export function passageUrl(page, text, location = globalThis.location) {
-  return `${location.origin}${location.pathname}${location.search}#page=${page + 1}&text=${encodeURIComponent(text)}`;
-}
 
 /**
  * Marks the passage the address names with the book's search (search() and showHit(), the hit on the

@@ -40,9 +40,9 @@ export class StaticBook extends BookController {
 }
 
 /**
- * A StaticBook from options already checked (Flipbook's fallback); `pdf` is a PDF document the book
- * now owns. Resolves once the open pages have loaded or failed.
+ * A StaticBook from options already checked (Flipbook's fallback); `doc` is a document (a PDF, a
+ * published one) the book now owns. Resolves once the open pages have loaded or failed.
  */
-export async function openStaticBook(container, settings, pdf = null, Class = StaticBook) {
-  return new Class(container, settings, pdf)._open();
+export async function openStaticBook(container, settings, doc = null, Class = StaticBook) {
+  return new Class(container, settings, doc)._open();
 }

@@ -1,14 +1,16 @@
-// A PDF book's selectable text: pdf.js's TextLayer (transparent spans over the words) laid over each
+// A document's selectable text (a PDF's, a published one's): transparent spans over the words, laid
+// out from the page's text record (document/format.js) as pdf.js's TextLayer lays them, over each
 // open page while it lies flat, so a reader selects and copies text with mouse or touch and a screen
 // reader reads the page in order; a press on text selects and never turns (the spans sit above the
 // canvas, whose listeners never see it), and a selection offers "Copy link to this passage".
-// Loaded (a dynamic import) only for PDF books with the `textLayer` option on.
+// Loaded (a dynamic import) only for PDF and published books with the `textLayer` option on.
 /** The passage button's text (the viewer's labels may replace it later). */
 export const PASSAGE_LINK_LABEL = 'Copy link to this passage';
 const PASSAGE_MAX_CHARS = 300;  // a link carries at most this much of the selection (search finds its start)
 
 // pdf.js's own rules for its text layer (pdfjs-dist web/pdf_viewer.css, `.textLayer`), as facts under
-// our class: spans placed in % of the page, sized by --total-scale-factor (CSS px per PDF unit) times
+// our class (the spans are ours, placed as pdf.js places its own): spans placed in % of the page,
+// sized by --total-scale-factor (CSS px per PDF unit) times
 // the item's --font-height, stretched by --scale-x to the word's width, transparent, selectable. Our
 // additions: the layer takes no presses itself (only its spans, and the whole page while a selection is
 // being dragged, so the drag never lands on the canvas), and the passage button.
@@ -75,17 +77,60 @@ export function passageText(text) {
   return space > PASSAGE_MAX_CHARS / 2 ? cut.slice(0, space) : cut;
 }
 
+let measurer = null;
+/** The width of `text` in `family` at 100 px (a span is stretched to its word's width on the page). */
+function measure(text, family) {
+  measurer ??= (typeof OffscreenCanvas === 'function' ? new OffscreenCanvas(1, 1) : document.createElement('canvas')).getContext('2d');
+  measurer.font = `100px ${family}`;
+  return measurer.measureText(text).width;
+}
+
+/**
+ * The spans of a page's text record, as pdf.js's TextLayer makes them: each piece at its baseline less
+ * its ascent, in % of the page; its font height in page units (the layer's --total-scale-factor turns
+ * them into CSS px); stretched to its width on the page; turned with its baseline. A line's end is a <br>.
+ */
+function spansOf(record) {
+  const out = [];
+  for (const item of record.items) {
+    const [a, b, c, d, e, f] = item.tx;
+    const angle = Math.atan2(b, a);
+    const height = Math.hypot(c, d);
+    const ascent = height * item.ascent;
+    const left = angle === 0 ? e : e + ascent * Math.sin(angle);
+    const top = angle === 0 ? f - ascent : f - ascent * Math.cos(angle);
+    const span = document.createElement('span');
+    span.textContent = item.str;
+    span.setAttribute('role', 'presentation');
+    span.style.left = `${(100 * left) / record.width}%`;
+    span.style.top = `${(100 * top) / record.height}%`;
+    span.style.fontFamily = item.family;
+    span.style.setProperty('--font-height', `${height.toFixed(2)}px`);
+    if (angle !== 0) span.style.setProperty('--rotate', `${angle * (180 / Math.PI)}deg`);
+    const natural = (measure(item.str, item.family) * height) / 100;
+    if (natural > 0 && item.width > 0) span.style.setProperty('--scale-x', String(item.width / natural));
+    out.push(span);
+    if (record.text[item.end] === '\n') {
+      const br = document.createElement('br');
+      br.setAttribute('role', 'presentation');
+      out.push(br);
+    }
+  }
+  return out;
+}
+
 /**
  * The text layer: one element `data-text-layer` (and `data-page`) per open page, over its place.
  * Only the spans take presses: a mouse press on a word selects (the canvas never sees it; a touch on
  * one is handed to the canvas too, a finger selects by a long press), a press between words is the canvas's, where `turnArea` rules (a PDF book's default, 'edges', keeps the page's inside
  * for selecting). The wheel over a word is handed to the canvas (it zooms there).
  * @param {HTMLElement} root  the book's element; the layer goes in it, over the canvas, before `before`
- * @param {{ pdf: { pdfjs: object, page: (index: number) => Promise<object>, textContent: (index: number) => Promise<object> },
+ * @param {{ doc: { pageText: (index: number) => Promise<object> },
  *           canvas: HTMLCanvasElement, before?: Element|null, onPassage: (passage: { page: number, text: string }) => void }} book
+ *   doc: the book's document, whose pageText(index) is the page's record (document/format.js)
  *   onPassage: the passage button was used on a selection of page `page`'s text
  */
-export function createTextLayer(root, { pdf, canvas, before = null, onPassage }) {
+export function createTextLayer(root, { doc, canvas, before = null, onPassage }) {
   const layer = document.createElement('div');
   layer.className = 'conecurl-text-layers';
   layer.style.cssText = 'position:absolute;inset:0;pointer-events:none;overflow:hidden';
@@ -98,7 +143,7 @@ export function createTextLayer(root, { pdf, canvas, before = null, onPassage })
   button.textContent = PASSAGE_LINK_LABEL;
   button.hidden = true;
 
-  const pages = new Map();  // page index -> { element, place, size (the page in PDF units), textLayer }
+  const pages = new Map();  // page index -> { element, place, size (the page in its record's units) }
   let shownKey = '';
   let removed = false;
   let passage = null;  // { page, text } the button offers
@@ -181,27 +226,23 @@ export function createTextLayer(root, { pdf, canvas, before = null, onPassage })
     button.hidden = true;
   }
 
-  // Page `index`'s layer, built once it is open (pdf.js lays out its spans from the page's text).
-  function pageLayer(index, place) {
+  // Page `index`'s layer, built once it is open, from the page's text record.
+  function pageLayer(index) {
     const element = document.createElement('div');
     element.className = 'conecurl-text-layer';
     element.dataset.textLayer = '';
     element.dataset.page = String(index);
-    const entry = { element, place: null, size: null, textLayer: null };
-    Promise.all([pdf.page(index), pdf.textContent(index)]).then(([proxy, text]) => {
+    const entry = { element, place: null, size: null };
+    Promise.resolve().then(() => doc.pageText(index)).then((record) => {
       if (removed) return;
-      entry.size = { width: text.width, height: text.height };
-      const viewport = proxy.getViewport({ scale: Math.max(0.1, place.width / text.width) });
-      const textLayer = new pdf.pdfjs.TextLayer({ textContentSource: text.content, container: element, viewport });
-      entry.textLayer = textLayer;
-      return textLayer.render().then(() => {
-        const end = document.createElement('div');
-        end.className = 'endOfContent';
-        element.append(end);
-        if (entry.place) fit(entry);  // pdf.js set its own size on the element: ours is the page's place
-      });
+      entry.size = { width: record.width, height: record.height };
+      element.append(...spansOf(record));
+      const end = document.createElement('div');
+      end.className = 'endOfContent';
+      element.append(end);
+      if (entry.place) fit(entry);
     }).catch(() => {
-      // A page whose text pdf.js cannot read shows no text layer; the page itself still shows.
+      // A page whose text cannot be read shows no text layer; the page itself still shows.
     });
     return entry;
   }
@@ -226,16 +267,12 @@ export function createTextLayer(root, { pdf, canvas, before = null, onPassage })
       if (key === shownKey) return;
       shownKey = key;
       const open = new Set(places.map((p) => p.page));
-      for (const [index, entry] of pages) {
-        if (open.has(index)) continue;
-        entry.textLayer?.cancel();  // a layer still being laid out for a page no longer open
-        pages.delete(index);
-      }
+      for (const index of pages.keys()) if (!open.has(index)) pages.delete(index);
       const laid = [];
       for (const place of places) {
         let entry = pages.get(place.page);
         if (!entry) {
-          entry = pageLayer(place.page, place);
+          entry = pageLayer(place.page);
           pages.set(place.page, entry);
         }
         entry.place = place;
@@ -261,9 +298,7 @@ export function createTextLayer(root, { pdf, canvas, before = null, onPassage })
     },
     remove() {
       removed = true;
-      for (const entry of pages.values()) entry.textLayer?.cancel();
       pages.clear();
-      pdf.pdfjs.TextLayer.cleanup?.();  // pdf.js's measuring canvases go, unless another layer is being laid out
       document.removeEventListener('selectionchange', onSelection);
       document.removeEventListener('pointerup', stopSelecting);
       document.removeEventListener('pointercancel', stopSelecting);

@@ -1,10 +1,11 @@
 // The text of a book's pages for search: case and diacritics folded (with a map back to the original
-// text), PDF pages indexed once in the background and kept, HTML pages read from their elements, and
-// each hit's rectangles (one per line) as fractions of its page.
+// text), a document's pages (a PDF's, a published one's) indexed once in the background and kept, HTML
+// pages read from their elements, and each hit's rectangles (one per line) as fractions of its page.
 //
-// What runs where: pdf.js parses each page's content stream and extracts its text in its worker
-// (page.getTextContent() is a message to it); only the folding, the matching and the geometry of the
-// hits run here on the main thread, page by page in idle time, never inside a turn's frame.
+// What runs where: for a PDF, pdf.js parses each page's content stream and extracts its text in its
+// worker; a published document's text files are fetched. Only the folding, the matching and the geometry
+// of the hits run here on the main thread, page by page in idle time, never inside a turn's frame.
+import { emptyPageText } from './format.js';
 
 const MARKS = /\p{M}/gu;
 const SNIPPET_SIDE = 20;  // characters of context on each side of a hit (~40 in all)
@@ -85,7 +86,7 @@ export function rectsByLine(rects) {
   return lines.sort((a, b) => a.y - b.y || a.x - b.x).map((l) => [l.x, l.y, l.w, l.h]);
 }
 
-// ---- PDF pages ----------------------------------------------------------------------------------
+// ---- a document's pages ----------------------------------------------------------------------------------
 
 let measurer = null;
 /** Width of `text` in `family` at 100 px: to place a hit inside a text item by its glyphs, not its character count. */
@@ -95,34 +96,8 @@ function measure(text, family) {
   return measurer.measureText(text).width;
 }
 
-/**
- * A PDF page as search reads it: its text (items joined, a line break where pdf.js ends a line) and,
- * for each item, where it starts and ends in that text and where it lies on the page.
- */
-async function readPdfPage(pdf, index) {
-  const [{ content }, page] = await Promise.all([pdf.textContent(index), pdf.page(index)]);
-  const viewport = page.getViewport({ scale: 1 });
-  const { Util } = pdf.pdfjs;
-  let text = '';
-  const items = [];
-  for (const item of content.items) {
-    if (typeof item.str !== 'string') continue;  // marked-content boundaries carry no text
-    const start = text.length;
-    text += item.str;
-    if (item.str.length > 0) {
-      const style = content.styles[item.fontName] ?? {};
-      // The item's baseline start and size in the page's viewport (y down), as pdf.js's TextLayer places it.
-      const tx = Util.transform(viewport.transform, item.transform);
-      items.push({ start, end: text.length, str: item.str, tx, width: item.width * viewport.scale,
-        family: style.fontFamily, ascent: style.ascent || 0.8, descent: style.descent || -0.2 });
-    }
-    if (item.hasEOL) text += '\n';
-  }
-  return { text, items, width: viewport.width, height: viewport.height };
-}
-
 /** The rectangles (fractions of the page, one per line) of the original text range [start, end). */
-function pdfRects(record, start, end) {
+function recordRects(record, start, end) {
   const rects = [];
   for (const item of record.items) {
     if (item.end <= start || item.start >= end) continue;
@@ -157,20 +132,23 @@ const whenIdle = (callback) => (typeof requestIdleCallback === 'function'
   : setTimeout(callback, 16));
 const cancelIdle = (id) => (typeof cancelIdleCallback === 'function' ? cancelIdleCallback(id) : clearTimeout(id));
 
-/** An open PDF's text, each page read once (pdf-pages.js textContent) and kept, for every later search. */
-export class PdfTextIndex {
-  /** @param {object} pdf  the open PDF (pdf-pages.js openPdf) @param {number} pageCount */
-  constructor(pdf, pageCount) {
-    this._pdf = pdf;
+/**
+ * A document's text (a PDF's through pdf.js, or a published one's text files), each page's record
+ * (format.js) read once and kept, for every later search.
+ */
+export class TextIndex {
+  /** @param {{ pageText: (index: number) => Promise<object> }} doc  the book's document @param {number} pageCount */
+  constructor(doc, pageCount) {
+    this._doc = doc;
     this._pages = new Array(pageCount);  // page -> Promise of its record
     this._next = 0;
     this._idle = 0;
     this._stopped = false;
   }
 
-  /** Page `index`'s record, read now if the background has not reached it yet (a page pdf.js cannot read has no text). */
+  /** Page `index`'s record, read now if the background has not reached it yet (a page whose text cannot be read has none). */
   page(index) {
-    this._pages[index] ??= readPdfPage(this._pdf, index).catch(() => ({ text: '', items: [], width: 1, height: 1 }));
+    this._pages[index] ??= Promise.resolve().then(() => this._doc.pageText(index)).catch(() => emptyPageText());
     return this._pages[index];
   }
 
@@ -195,7 +173,7 @@ export class PdfTextIndex {
     const record = await this.page(index);
     record.fold ??= foldText(record.text);  // folded once, kept with the page's text for later searches
     return matches(record.text, query, record.fold).map(([start, end]) => ({
-      page: index, snippet: snippetOf(record.text, start, end), rects: pdfRects(record, start, end),
+      page: index, snippet: snippetOf(record.text, start, end), rects: recordRects(record, start, end),
     }));
   }
 

@@ -5,7 +5,7 @@
  * The document API (issue 23): outline(), search() and its marks, pageThumbnail(), fullscreen,
  * download() and print(), each module imported on first use; a PDF's text is indexed in the background
  * once the book is open (indexInBackground). `controller` is the book, for its events.
- * @param {import('./book-wiring.js').BookPort} book
+ * @param {import('../book/book-wiring.js').BookPort} book
  */
 export function makeDocumentApi(controller, book) {
   let search = null;
@@ -15,15 +15,15 @@ export function makeDocumentApi(controller, book) {
   let stopFollowingFullscreen = null;
   let stopped = false;
   const documentModule = () => import('./book-document.js');
-  const pdfIndex = async () => {
-    const pdf = book.pdfDocument();
-    if (!pdf) return null;
-    const { PdfTextIndex } = await import('../pages/text-index.js');
-    return (textIndex ??= new PdfTextIndex(pdf, book.pageCount()));
+  const documentIndex = async () => {
+    const doc = book.document();
+    if (!doc) return null;
+    const { TextIndex } = await import('./text-index.js');
+    return (textIndex ??= new TextIndex(doc, book.pageCount()));
   };
   const searcher = () => (searchLoading ??= import('./book-search.js').then(({ BookSearch }) => {
     book.alive();
-    return (search = new BookSearch(book, pdfIndex));
+    return (search = new BookSearch(book, documentIndex));
   }));
   const drawer = async () => {
     const { PageThumbnails } = await import('./page-thumbnails.js');
@@ -48,16 +48,16 @@ export function makeDocumentApi(controller, book) {
     },
     download: async () => {
       book.alive();
-      return (await documentModule()).downloadDocument(controller, book.root, book.settings, book.pdfDocument());
+      return (await documentModule()).downloadDocument(controller, book.root, book.settings, book.document());
     },
     print: async () => {
       book.alive();
       const draw = (index, size) => drawer().then((t) => t.draw(index, size));
       return (await documentModule()).printDocument(controller, book.pageCount(), draw);
     },
-    /** After the book opened: a PDF's text read page by page in idle time, for the first search. */
+    /** After the book opened: a document's text read page by page in idle time, for the first search. */
     indexInBackground: () => {
-      if (book.pdfDocument()) pdfIndex().then((index) => { if (!stopped) index?.startBackground(); }).catch(() => {});
+      if (book.document()) documentIndex().then((index) => { if (!stopped) index?.startBackground(); }).catch(() => {});
     },
     stop: () => {
       stopped = true;
@@ -70,12 +70,12 @@ export function makeDocumentApi(controller, book) {
 /**
  * The viewer (the `controls` option): its module loaded only now, attached to `controller` through its
  * public API as conecurl/viewer's attachControls is; null without `controls` or once destroyed.
- * @param {import('./book-wiring.js').BookPort} book
+ * @param {import('../book/book-wiring.js').BookPort} book
  */
 export async function attachViewer(controller, book) {
   const { controls, labels } = book.settings;
   if (!controls) return null;
   const { attachControls } = await import('../viewer/attach-controls.js');
   if (book.destroyed()) return null;
-  return attachControls(controller, { controls, labels, pdf: book.pdf() });
+  return attachControls(controller, { controls, labels, pdf: book.isDocument() });
 }

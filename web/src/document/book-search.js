@@ -1,12 +1,12 @@
-// A book's search: search() over its pages' text (pages/text-index.js: a PDF's text indexed once,
+// A book's search: search() over its pages' text (text-index.js: a document's text indexed once,
 // HTML pages read live), showHit() turning to a hit and marking it, clearSearch(), and the
 // `searchchange` event. Marks are drawn into the pages' images (pages/marked-page.js, through the page
 // store's `decorate` hook) and laid over the flat pages as elements (layers/search-hits.js).
-// Made by the book's first search(), showHit() or clearSearch(); a PDF's index starts after the book opens.
-import { foldQuery, htmlPageHits } from '../pages/text-index.js';
+// Made by the book's first search(), showHit() or clearSearch(); a document's index starts after the book opens.
+import { foldQuery, htmlPageHits } from './text-index.js';
 import { markedPageImage } from '../pages/marked-page.js';
 import { createSearchHitsLayer } from '../layers/search-hits.js';
-import { describeValue } from './options.js';
+import { describeValue } from '../engine/describe-value.js';
 
 const sameHit = (a, b) => a.page === b.page && JSON.stringify(a.rects) === JSON.stringify(b.rects);
 const abortError = () => new DOMException('conecurl: the search was aborted', 'AbortError');
@@ -29,12 +29,12 @@ function checkHit(hit, pageCount) {
 
 export class BookSearch {
   /**
-   * @param {import('./book-wiring.js').BookPort} book  the controller's port
-   * @param {() => object|null} pdfIndex  the PDF's text index (made once, shared with later searches)
+   * @param {import('../book/book-wiring.js').BookPort} book  the controller's port
+   * @param {() => Promise<object|null>} documentIndex  the document's text index (made once, shared with later searches)
    */
-  constructor(book, pdfIndex) {
+  constructor(book, documentIndex) {
     this._book = book;
-    this._pdfIndex = pdfIndex;
+    this._documentIndex = documentIndex;
     this._query = '';
     this._hits = [];
     this._current = null;
@@ -67,10 +67,10 @@ export class BookSearch {
       const aborted = abortedBy(signal);
       aborted.catch(() => {});
       const { entries } = this._book;
-      const index = await this._pdfIndex();
+      const index = await this._documentIndex();
       const pages = entries.length;
-      // PDF pages not yet indexed are asked for all at once: pdf.js's worker reads them in turn while
-      // the pages already read are matched here.
+      // Pages not yet indexed are asked for all at once (pdf.js's worker reads them in turn, a published
+      // document's text files are fetched) while the pages already read are matched here.
       if (index) for (let page = 0; page < pages; page++) index.page(page);
       for (let page = 0; page < pages; page++) {
         if (signal?.aborted) throw abortError();

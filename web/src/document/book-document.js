@@ -1,5 +1,5 @@
 // What a reader does with the whole document: fullscreen (the Fullscreen API on the book's container,
-// so a toolbar in it goes along), download (the `download` option's URL, else the PDF) and print (the
+// so a toolbar in it goes along), download (the `download` option's URL, else the document's PDF) and print (the
 // pages rendered to images in a hidden frame). download and print first fire a cancelable event, so a
 // host can do it its own way. Loaded by the first call of any of them.
 
@@ -42,23 +42,20 @@ export async function toggleFullscreen(container, force) {
 }
 
 /**
- * The URL download() fetches: the `download` option, else a PDF book's URL, else its bytes as a Blob
- * URL (`made`: revoke it when done); null when the book has nothing to download.
+ * The URL download() fetches: the `download` option, else the document's (a PDF's URL or bytes as a
+ * Blob URL, `made`: revoke it when done; a published document's PDF); null when there is nothing to download.
  */
-async function downloadUrl(settings, pdf) {
+async function downloadUrl(settings, doc) {
   if (settings.download) return { url: settings.download, made: false };
-  if (!pdf) return null;
-  if (pdf.url) return { url: pdf.url, made: false };
-  const bytes = await pdf.doc.getData();
-  return { url: URL.createObjectURL(new Blob([bytes], { type: 'application/pdf' })), made: true };
+  return doc ? doc.downloadUrl() : null;
 }
 
 /**
  * Fires the cancelable `download` event ({ url }) on `target`; unless a listener prevented it, the
  * browser downloads the URL through an <a download>. Resolves false when prevented or nothing to download.
  */
-export async function downloadDocument(target, root, settings, pdf) {
-  const found = await downloadUrl(settings, pdf);
+export async function downloadDocument(target, root, settings, doc) {
+  const found = await downloadUrl(settings, doc);
   if (!found) return false;
   const proceed = target.dispatchEvent(new CustomEvent('download', { detail: { url: found.url }, cancelable: true }));
   if (proceed) {

@@ -1,7 +1,7 @@
 // Links to a passage: the passage button of the text layer (text-layer.js) hands over a selection; its
-// link (#page=N&text=..., page-memory.js reads it back) goes to the clipboard, and the book says so
+// link (#page=N&text=..., passage-address.js) goes to the clipboard, and the book says so
 // with a `passagelink` event the host can hear (to show a toast, or share the link its own way).
-import { passageUrl } from './page-memory.js';
+import { passageUrl } from './passage-address.js';
 
 /**
  * Puts `text` on the clipboard: the Clipboard API where the page may use it, else a hidden textarea's

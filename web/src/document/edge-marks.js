@@ -8,7 +8,7 @@ export class EdgeMarks {
   /**
    * @param {EventTarget & { outline?: () => Promise<Array<{ title: string, page: number }>>, showHit?: (hit: object) => Promise<void> }} controller
    *   the book, through its public API
-   * @param {import('./book-wiring.js').BookPort} book
+   * @param {import('../book/book-wiring.js').BookPort} book
    */
   constructor(controller, book) {
     this._controller = controller;

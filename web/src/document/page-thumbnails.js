@@ -1,14 +1,16 @@
 // Page thumbnails (pageThumbnail()): a page drawn small from its own source, for a thumbnails panel:
-// an image decoded at about the size asked (pages/page-loader.js), a PDF page rendered by pdf.js at that
+// its small image (`thumbSrc`, a published document has one) or an image decoded at about the size
+// asked (pages/page-loader.js), a PDF page rendered by pdf.js at that
 // size (its entry's source function), a live HTML page as a numbered placeholder. Never through the
 // page store: the book's textures and kept images are not touched. A few at a time, so a panel asking
 // for forty does not hold up the pages the book itself is loading.
 import { loadPage } from '../pages/page-loader.js';
 import { PAPER } from '../engine/layout.js';
-import { describeValue } from './options.js';
+import { describeValue } from '../engine/describe-value.js';
 
 const AT_ONCE = 3;          // thumbnails drawn at the same time
 const MAX_SIDE = 4096;      // the largest thumbnail side taken
+const FROM_THUMB = 512;     // a thumbnail at most this wide is drawn from the page's thumbSrc, when it has one
 
 export class PageThumbnails {
   /** @param {{ entries: object[], pageCount: () => number, alive: () => void }} book  the controller's port */
@@ -57,7 +59,8 @@ export class PageThumbnails {
     try {
       // A source function (a PDF page) is told the size wanted and renders at it; an encoded image is
       // decoded at about that size. Height 1 when not given: the width decides.
-      loaded = await loadPage(entry.src, { index, size: { width, height: height ?? 1 } });
+      const src = entry.thumbSrc && width <= FROM_THUMB ? entry.thumbSrc : entry.src;
+      loaded = await loadPage(src, { index, size: { width, height: height ?? 1 } });
     } catch (error) {
       throw new Error(`conecurl: pageThumbnail(${index}): the page could not be drawn (${error?.message ?? error})`, { cause: error });
     }

@@ -1,6 +1,9 @@
 // PDF books: opens a PDF with pdf.js (the optional dependency pdfjs-dist, imported only when a PDF is
 // given) and turns each page into a page source the Flipbook calls when it wants that page, rendered
-// at the size the canvas needs; the page's text becomes its accessible text.
+// at the size the canvas needs; the page's text becomes its accessible text. The open PDF is the book's
+// document: its text records, outline and links come from document/pdf-document.js.
+import { pdfOutline, pdfPageLinks, pdfPageText } from './pdf-document.js';
+import { altText, emptyPageText } from './format.js';
 
 /** Where pdf.js's worker module is, when the caller did not say: next to pdf.js, as the page resolves it. */
 function defaultWorkerSrc() {
@@ -51,7 +54,7 @@ export async function openPdf(source, { workerSrc } = {}) {
     const entry = { alt: '', src: (index, size) => renderPage(doc, i + 1, size, entry) };
     return entry;
   });
-  const texts = new Map();  // page index → Promise of its text content, read once
+  const texts = new Map();  // page index → Promise of its text record, read once
   return {
     pages,
     aspect: first.width / first.height,
@@ -62,18 +65,18 @@ export async function openPdf(source, { workerSrc } = {}) {
     url: typeof source === 'string' ? source : null,
     /** Page `index` (from 0) as pdf.js's PDFPageProxy. */
     page: (index) => doc.getPage(index + 1),
-    /**
-     * Page `index`'s text as pdf.js gives it ({ items, styles }), with the page's size in PDF units
-     * at scale 1 ({ width, height }): read once and kept, for search and the text layer alike.
-     */
-    textContent(index) {
-      if (!texts.has(index)) {
-        texts.set(index, doc.getPage(index + 1).then(async (page) => {
-          const { width, height } = page.getViewport({ scale: 1 });
-          return { content: await page.getTextContent(), width, height };
-        }));
-      }
+    /** Page `index`'s text record (document/format.js), read once and kept: what search and the text layer read. */
+    pageText(index) {
+      if (!texts.has(index)) texts.set(index, doc.getPage(index + 1).then(pdfPageText).catch(() => emptyPageText()));
       return texts.get(index);
+    },
+    /** The PDF's bookmarks: [{ title, page, children }]. */
+    outline: () => pdfOutline(doc),
+    /** What download() fetches: the PDF's URL, else its bytes as a Blob URL (`made`: revoke it when done). */
+    async downloadUrl() {
+      if (typeof source === 'string') return { url: source, made: false };
+      const bytes = await doc.getData();
+      return { url: URL.createObjectURL(new Blob([bytes], { type: 'application/pdf' })), made: true };
     },
     destroy: () => task.destroy(),
   };
@@ -93,14 +96,11 @@ async function renderPage(doc, number, size, entry) {
     canvas.width = Math.max(1, Math.ceil(viewport.width));
     canvas.height = Math.max(1, Math.ceil(viewport.height));
     await page.render({ canvas, viewport, background: '#ffffff' }).promise;
-    if (!entry.alt) {
-      const text = await page.getTextContent();
-      const words = text.items.map((item) => item.str || '').join(' ').replace(/\s+/g, ' ').trim();
-      entry.alt = words ? `Page ${number}: ${words}` : `Page ${number}`;
-    }
+    if (!entry.alt) entry.alt = altText(number - 1, (await pdfPageText(page)).text);
     if (!entry.links) {
       try {
-        entry.links = await pageLinks(doc, page, base);
+        // In the book's one form of a link (options.js pageEntries): { rect, href } or { rect, href: '#', toPage }.
+        entry.links = (await pdfPageLinks(doc, page)).map(({ rect, href, page: toPage }) => (toPage === undefined ? { rect, href } : { rect, href: '#', toPage }));
       } catch {
         entry.links = [];  // links are a bonus: a page whose annotations pdf.js cannot read still shows
       }
@@ -109,31 +109,4 @@ async function renderPage(doc, number, size, entry) {
   } finally {
     page.cleanup();
   }
-}
-
-/** The page's link annotations as { rect (fractions of the page, from its top-left), href | toPage }. */
-async function pageLinks(doc, page, viewport) {
-  const links = [];
-  for (const annotation of await page.getAnnotations()) {
-    if (annotation.subtype !== 'Link' || !annotation.rect) continue;
-    const [x1, y1] = viewport.convertToViewportPoint(annotation.rect[0], annotation.rect[1]);
-    const [x2, y2] = viewport.convertToViewportPoint(annotation.rect[2], annotation.rect[3]);
-    const rect = [Math.min(x1, x2) / viewport.width, Math.min(y1, y2) / viewport.height,
-      Math.abs(x2 - x1) / viewport.width, Math.abs(y2 - y1) / viewport.height];
-    const href = annotation.url || annotation.unsafeUrl;
-    if (href) {
-      links.push({ rect, href });
-      continue;
-    }
-    try {
-      const dest = typeof annotation.dest === 'string' ? await doc.getDestination(annotation.dest) : annotation.dest;
-      if (Array.isArray(dest) && dest[0]) {
-        const toPage = typeof dest[0] === 'number' ? dest[0] : await doc.getPageIndex(dest[0]);
-        links.push({ rect, href: '#', toPage });
-      }
-    } catch {
-      // A destination pdf.js cannot resolve is left out, not guessed.
-    }
-  }
-  return links;
 }
