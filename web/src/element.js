@@ -231,7 +231,7 @@ export class ConeFlipbookElement extends ElementBase {
       if (raw !== null) options[option] = parse(raw, attribute);
     }
     Object.assign(options, this._held);
-    if (options.pdf === undefined) options.pages ??= this._childPages();  // a PDF brings its own pages
+    if (options.pdf === undefined && options.document === undefined) options.pages ??= this._childPages();  // a document brings its own pages
     if (this._reopenAt !== null) {
       options.startPage = options.pages ? Math.min(this._reopenAt, options.pages.length - 1) : this._reopenAt;
     }

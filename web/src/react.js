@@ -51,7 +51,7 @@ export const Flipbook = forwardRef(function Flipbook(props, ref) {
   useEffect(() => setMounted(true), []);
 
   // Children are rendered into their page boxes only in the browser, once mounted (a server has no DOM).
-  const fromChildren = mounted && props.pages === undefined && props.pdf === undefined;
+  const fromChildren = mounted && props.pages === undefined && props.pdf === undefined && props.document === undefined;
   const { pages, portals } = fromChildren ? pagesFromChildren(children, boxes) : { pages: props.pages, portals: [] };
   const bookProps = useRef(null);
   bookProps.current = { ...props, pages };  // BookMount reads the options, page and defaultPage from it

@@ -60,7 +60,7 @@ export const Flipbook = defineComponent({
     });
     onBeforeUnmount(() => mount.unmount());
     return () => {
-      const fromSlot = mounted.value && props.pages === undefined && props.pdf === undefined && slots.default;
+      const fromSlot = mounted.value && props.pages === undefined && props.pdf === undefined && props.document === undefined && slots.default;
       const { pages, teleports } = fromSlot ? pagesFromSlot(slots.default(), boxes) : { pages: props.pages, teleports: [] };
       current = { ...props, pages };
       // The box the book fills, as <cone-flipbook> sizes itself (book-box.js); a `style` attribute overrides any of it.

@@ -19,8 +19,7 @@ export class BookController extends EventTarget {
   /**
    * @param {HTMLElement} container
    * @param {object} settings  checked options with defaults (options.js validateOptions)
-   * @param {object|null} doc  an open document whose pages are the book's (a PDF: pages/pdf-pages.js; a
-   *   published one: document/published-document.js): the book owns it
+   * @param {object|null} doc  an open document (document/pdf-pages.js, published-document.js) whose pages are the book's: it owns it
    */
   constructor(container, settings, doc = null) {
     super();

@@ -40,7 +40,7 @@ import { positionOfPage } from '../engine/layout.js';
  * @property {(link: object, event: Event) => void} followLink
  * @property {() => void} flushEvents  events held while create() runs go out now
  * @property {() => boolean} isDocument  the book's pages are a document's (a PDF, or a published one)
- * @property {() => object|null} document  the open document (pages/pdf-pages.js openPdf, document/published-document.js
+ * @property {() => object|null} document  the open document (document/pdf-pages.js openPdf, document/published-document.js
  *   openPublished: pageText(), outline(), downloadUrl()), or null
  * @property {HTMLElement} container  the element the book was made in (fullscreen takes it)
  * @property {(layer: object) => void} addLayer  an overlay layer made later (search hits), laid and removed with the others

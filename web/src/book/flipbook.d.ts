@@ -36,6 +36,8 @@ export interface PageEntry {
   hard?: boolean;
   /** A sharper image of the page, loaded for the open pages when zoomed in. */
   zoomSrc?: PageImage;
+  /** A small image of the page: pageThumbnail() up to 512 px wide draws it (a published document has one a page). */
+  thumbSrc?: PageImage;
   /** Clickable areas of the page, active while it lies open and flat. */
   links?: PageLink[];
 }
@@ -43,7 +45,7 @@ export interface PageEntry {
 export interface FlipbookOptions {
   /**
    * The pages, first to last; at least one. A URL is loaded with CORS. An HTMLElement (not an image,
-   * canvas or video) is a live HTML page, as `{ html: element }`. Give this or `pdf`.
+   * canvas or video) is a live HTML page, as `{ html: element }`. Give this, `pdf` or `document`.
    */
   pages?: Array<PageSource | HTMLElement | PageEntry>;
   /**
@@ -61,6 +63,13 @@ export interface FlipbookOptions {
   pdf?: string | ArrayBuffer | Uint8Array;
   /** URL of pdf.js's worker module, where `import.meta.resolve('pdfjs-dist/build/pdf.worker.min.mjs')` cannot find it. */
   pdfWorkerSrc?: string;
+  /**
+   * A published document instead of `pages`: the URL of its book.json (what `conecurl publish` writes,
+   * or a host's own pipeline: docs/publish.md). Its page images are the pages (with their zoomSrc,
+   * thumbSrc, alt and links); search, the text layer and outline() read its text and outline files,
+   * with no pdf.js; its title is the label unless `label` is given; download() fetches its PDF.
+   */
+  document?: string | URL;
   /**
    * 'auto' (default) shows two pages where each page of the spread would be at least `minPageWidth`
    * CSS px wide (across the turn), else one; it chooses again as the container resizes (`displaychange`).
@@ -425,7 +434,7 @@ export class BookController extends EventTarget {
   /** Pages loaded or failed so far, the page count, and loads running now (what `progress` said last). */
   readonly progress: { loaded: number; total: number; pending: number };
   /** The options in effect, defaults filled in (a frozen copy). */
-  readonly options: Readonly<Required<Omit<FlipbookOptions, 'pdf' | 'pdfWorkerSrc' | 'wasmUrl' | 'rememberPage' | 'on' | 'outline' | 'download' | 'labels'>>> & FlipbookOptions;
+  readonly options: Readonly<Required<Omit<FlipbookOptions, 'pdf' | 'pdfWorkerSrc' | 'document' | 'wasmUrl' | 'rememberPage' | 'on' | 'outline' | 'download' | 'labels'>>> & FlipbookOptions;
   /**
    * What draws the book, for tools and tests (reading pixels, counting frames): a BookView (WebGL2) or
    * a CanvasSurface (still pages); null after destroy(). Drive the book through its own members.

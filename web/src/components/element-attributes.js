@@ -94,6 +94,8 @@ export const ATTRIBUTES = {
   fallback: ['fallback', parseBoolean],
   pdf: ['pdf', parseText],
   'pdf-worker-src': ['pdfWorkerSrc', parseText],
+  // publish (issue 30): a published document's book.json
+  document: ['document', parseText],
   // docapi (issue 23)
   outline: ['outline', parseOutline],
   download: ['download', parseText],
