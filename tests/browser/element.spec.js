@@ -321,7 +321,7 @@ test('browser: turn-area, label and fallback are attributes too; every option pr
       pages, minPageWidth: 150, direction: 'rtl', startPage: 2, duration: 300, schedule: 'smooth', center: false, hardCovers: true,
       lighting: false, shadows: false, gutter: false, thickness: 0.01, loadWindow: 2, hash: false, autoplay, sound: false,
       muted: true, rememberPage: 'element-spec', wasmUrl: '/dist/x.wasm', antialias: 'auto', resolution: 1.5, turnArea: 'corners',
-      label: 'Atlas of clouds', fallback: false, pdf: new Uint8Array([37, 80, 68, 70]), pdfWorkerSrc: '/no/worker.mjs',
+      label: 'Atlas of clouds', fallback: false, pdf: new Uint8Array([37, 80, 68, 70]), pdfWorkerSrc: '/no/worker.mjs', document: '/files/atlas/book.json',
       outline: [{ title: 'Clouds', page: 1 }], download: '/files/atlas.pdf',
       edgeMarks: true,
       // viewer (issue 23): objects kept as given
