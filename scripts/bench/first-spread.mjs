@@ -1,0 +1,161 @@
+// The reader's first spread on a phone, both roads in one run: a PDF published with `conecurl publish`
+// (its index.html) against the same PDF opened at run time through pdf.js (the package's
+// reader.html#file=). A phone profile (390x844 at ratio 3, touch), CDP network throttling (1.6 Mbit/s
+// down, 150 ms round trip) and a 4x CPU slowdown; a fresh browser a run, roads alternated. The server
+// compresses text (HTML, JS, JSON, CSS, wasm) as a CDN would and answers range requests (pdf.js asks
+// for the PDF in ranges). Reports, per road, the time to the first spread drawn and the bytes loaded
+// before it (encoded, as they came over the wire), and checks them against the targets.
+// Usage: node scripts/bench/first-spread.mjs --pdf book.pdf [--pdf magazine.pdf] [--reps 3] [--out bench-results]
+//        [--kbps 1600] [--latency 150] [--cpu 4] [--republish]
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import http from 'node:http';
+import path from 'node:path';
+import zlib from 'node:zlib';
+import { chromium } from '@playwright/test';
+import { chromiumLaunchOptions } from '../chromium.mjs';
+import { summarize } from './metrics.mjs';
+import { PHONES, phoneUse } from '../../tests/browser/phone.js';
+
+const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
+const args = process.argv.slice(2);
+const arg = (name, fallback) => {
+  const i = args.indexOf(name);
+  return i >= 0 ? args[i + 1] : fallback;
+};
+const pdfs = args.flatMap((a, i) => (a === '--pdf' ? [path.resolve(args[i + 1])] : []));
+const reps = Number(arg('--reps', '3'));
+const out = path.resolve(root, arg('--out', 'bench-results'));
+const kbps = Number(arg('--kbps', '1600'));
+const latency = Number(arg('--latency', '150'));
+const cpu = Number(arg('--cpu', '4'));
+// Targets of issue 30: the published site's first spread in at most a third of pdf.js's time, after at most 300 KB.
+const TARGETS = { timeRatio: 1 / 3, bytes: 300 * 1024 };
+if (pdfs.length === 0) {
+  console.error('first-spread: give the PDF to measure: --pdf book.pdf (more than one --pdf measures each)');
+  process.exit(2);
+}
+
+const COMPRESSED = /\.(html|js|mjs|json|css|wasm|svg)$/;
+const TYPES = {
+  '.html': 'text/html; charset=utf-8', '.js': 'text/javascript', '.mjs': 'text/javascript', '.json': 'application/json',
+  '.css': 'text/css', '.wasm': 'application/wasm', '.svg': 'image/svg+xml', '.webp': 'image/webp', '.avif': 'image/avif',
+  '.jpg': 'image/jpeg', '.png': 'image/png', '.pdf': 'application/pdf',
+};
+const gzipped = new Map();  // file -> its gzip, made once
+
+/** The repository at /, each published site at /sites/<name>/, each PDF at /pdf/<name>.pdf. */
+function serve(routes) {
+  const server = http.createServer((req, res) => {
+    const url = new URL(req.url, 'http://x');
+    const pathname = decodeURIComponent(url.pathname);
+    const route = routes.find(([prefix]) => pathname.startsWith(prefix));
+    let file = path.normalize(path.join(route[1], pathname.slice(route[0].length)));
+    if (!file.startsWith(route[1])) return res.writeHead(403).end();
+    if (fs.existsSync(file) && fs.statSync(file).isDirectory()) file = path.join(file, 'index.html');
+    if (!fs.existsSync(file)) return res.writeHead(404).end();
+    const type = TYPES[path.extname(file)] ?? 'application/octet-stream';
+    const size = fs.statSync(file).size;
+    const range = /^bytes=(\d+)-(\d*)$/.exec(req.headers.range ?? '');
+    if (range) {
+      const start = Number(range[1]);
+      const end = range[2] ? Math.min(Number(range[2]), size - 1) : size - 1;
+      res.writeHead(206, { 'Content-Type': type, 'Content-Range': `bytes ${start}-${end}/${size}`, 'Content-Length': end - start + 1, 'Accept-Ranges': 'bytes' });
+      return fs.createReadStream(file, { start, end }).pipe(res);
+    }
+    if (COMPRESSED.test(file) && /\bgzip\b/.test(req.headers['accept-encoding'] ?? '')) {
+      if (!gzipped.has(file)) gzipped.set(file, zlib.gzipSync(fs.readFileSync(file), { level: 9 }));
+      const body = gzipped.get(file);
+      return res.writeHead(200, { 'Content-Type': type, 'Content-Encoding': 'gzip', 'Content-Length': body.length, 'Cache-Control': 'no-store' }).end(body);
+    }
+    res.writeHead(200, { 'Content-Type': type, 'Content-Length': size, 'Accept-Ranges': 'bytes', 'Cache-Control': 'no-store' });
+    fs.createReadStream(file).pipe(res);
+  });
+  return new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(server)));
+}
+
+/** One run of one road: ms to the first spread drawn, and the bytes received before it. */
+async function measure(url, readerModule) {
+  const browser = await chromium.launch(chromiumLaunchOptions());
+  try {
+    const page = await (await browser.newContext(phoneUse(PHONES['phone-portrait']))).newPage();
+    const cdp = await page.context().newCDPSession(page);
+    await cdp.send('Network.enable');
+    await cdp.send('Network.setCacheDisabled', { cacheDisabled: true });
+    await cdp.send('Network.emulateNetworkConditions',
+      { offline: false, latency, downloadThroughput: (kbps * 1000) / 8, uploadThroughput: (kbps * 1000) / 8 / 2 });
+    await cdp.send('Emulation.setCPUThrottlingRate', { rate: cpu });
+    const received = [];  // [monotonic s, encoded bytes]
+    let start = null;
+    const urls = [];
+    cdp.on('Network.requestWillBeSent', (e) => {
+      if (start === null && e.type === 'Document') start = e.timestamp;
+      urls.push(e.request.url);
+    });
+    cdp.on('Network.responseReceived', (e) => received.push([e.timestamp, e.response.encodedDataLength ?? 0]));  // headers
+    cdp.on('Network.dataReceived', (e) => received.push([e.timestamp, e.encodedDataLength]));
+    await page.goto(url, { waitUntil: 'commit' });
+    const ms = await page.evaluate(async (module) => {
+      const book = await (await import(module)).book;
+      if (!book) throw new Error(document.body.innerText);
+      await book.whenIdle();
+      await new Promise((resolve) => requestAnimationFrame(() => resolve()));
+      return performance.now();
+    }, readerModule);
+    const until = start + ms / 1000;
+    const bytes = received.filter(([t]) => t <= until).reduce((sum, [, n]) => sum + n, 0);
+    return { ms: Math.round(ms), bytes, pdfjs: urls.some((u) => /pdfjs|pdf\.worker/.test(u)) };
+  } finally {
+    await browser.close();
+  }
+}
+
+const results = [];
+for (const pdf of pdfs) {
+  const name = path.basename(pdf, '.pdf').replace(/[^\w.-]+/g, '-');
+  const site = path.join(out, 'first-spread', name);
+  if (args.includes('--republish') || !fs.existsSync(path.join(site, 'index.html'))) {
+    console.log(`first-spread: publishing ${pdf} into ${path.relative(root, site)}`);
+    fs.rmSync(site, { recursive: true, force: true });  // our own folder under bench-results
+    execFileSync(process.execPath, [path.join(root, 'cli/conecurl.mjs'), 'publish', pdf, '--out', site], { stdio: ['ignore', 'ignore', 'inherit'] });
+  }
+  const server = await serve([['/sites/', path.join(out, 'first-spread')], ['/pdf/', path.dirname(pdf)], ['/', root]]);
+  const base = `http://127.0.0.1:${server.address().port}`;
+  const roads = {
+    published: () => measure(`${base}/sites/${name}/index.html`, `${base}/sites/${name}/conecurl/web/reader/reader.js`),
+    pdfjs: () => measure(`${base}/web/reader/reader.html#file=/pdf/${encodeURIComponent(path.basename(pdf))}`, `${base}/web/reader/reader.js`),
+  };
+  const runs = { published: [], pdfjs: [] };
+  try {
+    for (let rep = 0; rep < reps; rep++) {
+      for (const road of rep % 2 ? ['pdfjs', 'published'] : ['published', 'pdfjs']) {
+        const run = await roads[road]();
+        runs[road].push(run);
+        console.log(`[${name} ${rep + 1}/${reps}] ${road}: first spread ${run.ms} ms after ${(run.bytes / 1024).toFixed(0)} KB${run.pdfjs ? ' (pdf.js loaded)' : ''}`);
+      }
+    }
+  } finally {
+    server.close();
+  }
+  const median = (road, key) => summarize(runs[road].map((r) => r[key])).median;
+  const result = {
+    pdf: path.basename(pdf), reps, kbps, latency, cpu,
+    published: { ms: median('published', 'ms'), bytes: median('published', 'bytes'), runs: runs.published },
+    pdfjs: { ms: median('pdfjs', 'ms'), bytes: median('pdfjs', 'bytes'), runs: runs.pdfjs },
+  };
+  result.timeRatio = result.published.ms / result.pdfjs.ms;
+  result.meets = { time: result.timeRatio <= TARGETS.timeRatio, bytes: result.published.bytes <= TARGETS.bytes,
+    noPdfjs: runs.published.every((r) => !r.pdfjs) };
+  results.push(result);
+}
+
+fs.mkdirSync(out, { recursive: true });
+fs.writeFileSync(path.join(out, 'first-spread.json'), `${JSON.stringify({ date: new Date().toISOString(), targets: TARGETS, results }, null, 2)}\n`);
+console.log(`\nFirst spread on a phone (390x844 at ratio 3), ${kbps} kbit/s down, ${latency} ms round trip, CPU ${cpu}x slower; medians of ${reps}:`);
+console.log('| PDF | published: time | published: bytes before it | pdf.js: time | pdf.js: bytes before it | time ratio (target ≤ 0.33) | bytes (target ≤ 300 KB) |');
+console.log('|---|---|---|---|---|---|---|');
+for (const r of results) {
+  const kb = (b) => `${(b / 1024).toFixed(0)} KB`;
+  console.log(`| ${r.pdf} | ${r.published.ms} ms | ${kb(r.published.bytes)} | ${r.pdfjs.ms} ms | ${kb(r.pdfjs.bytes)} | ${r.timeRatio.toFixed(2)} ${r.meets.time ? 'met' : 'missed'} | ${r.meets.bytes ? 'met' : 'missed'} |`);
+}
+console.log(`(written to ${path.relative(root, path.join(out, 'first-spread.json'))})`);
