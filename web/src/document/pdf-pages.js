@@ -5,13 +5,23 @@
 import { pdfOutline, pdfPageLinks, pdfPageText } from './pdf-document.js';
 import { altText, emptyPageText } from './format.js';
 
-/** Where pdf.js's worker module is, when the caller did not say: next to pdf.js, as the page resolves it. */
-function defaultWorkerSrc() {
+/** Where a file of pdf.js's package is (its worker, its data folders), as the page resolves it; null if it cannot. */
+function besidePdfjs(file) {
   try {
-    return import.meta.resolve('pdfjs-dist/build/pdf.worker.min.mjs');
+    return import.meta.resolve(`pdfjs-dist/${file}`);
   } catch {
     return null;
   }
+}
+
+// pdf.js's data, found beside it: the standard fonts' files (the 14 fonts a PDF may use without embedding
+// them: their true metrics, so the text's places match a published document's, which Node drew with
+// them), the character maps and the image decoders. Each only where the page can resolve it.
+function pdfjsData() {
+  const data = { standardFontDataUrl: besidePdfjs('standard_fonts/'), cMapUrl: besidePdfjs('cmaps/'), wasmUrl: besidePdfjs('wasm/') };
+  for (const key of Object.keys(data)) if (!data[key]) delete data[key];
+  if (data.cMapUrl) data.cMapPacked = true;
+  return data;
 }
 
 async function importPdfjs() {
@@ -32,17 +42,20 @@ async function importPdfjs() {
 export async function openPdf(source, { workerSrc } = {}) {
   const pdfjs = await importPdfjs();
   if (!pdfjs.GlobalWorkerOptions.workerSrc) {
-    const src = workerSrc || defaultWorkerSrc();
+    const src = workerSrc || besidePdfjs('build/pdf.worker.min.mjs');
     if (!src) {
       throw new Error("conecurl: cannot find pdf.js's worker (pdfjs-dist/build/pdf.worker.min.mjs): "
         + "give its URL as the 'pdfWorkerSrc' option");
     }
     pdfjs.GlobalWorkerOptions.workerSrc = src;
   }
-  const task = pdfjs.getDocument(typeof source === 'string'
-    ? { url: source }
-    // pdf.js takes ownership of the bytes it is given: hand it a copy, the caller keeps theirs.
-    : { data: source instanceof ArrayBuffer ? new Uint8Array(source.slice(0)) : source.slice() });
+  const task = pdfjs.getDocument({
+    ...pdfjsData(),
+    ...(typeof source === 'string'
+      ? { url: source }
+      // pdf.js takes ownership of the bytes it is given: hand it a copy, the caller keeps theirs.
+      : { data: source instanceof ArrayBuffer ? new Uint8Array(source.slice(0)) : source.slice() }),
+  });
   let doc;
   try {
     doc = await task.promise;
