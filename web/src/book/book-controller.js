@@ -7,7 +7,7 @@ import { BookEvents } from './book-events.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { BookTurns } from './book-turns.js';
 import {
-  attachBookInput, followSurface, loadCompanions, loadEdgeMarks, loadTextLayer, makeHtmlPages, makeLinkLayer, makeLivePages,
+  attachBookInput, followSurface, loadOptionalParts, makeHtmlPages, makeLinkLayer, makeLivePages,
   makePageStore, makeZoom, openingPageOf, prefetchOpening, startCompanions, watchBookSize,
 } from './book-wiring.js';
 import { attachViewer, makeDocumentApi } from '../document/document-wiring.js';
@@ -211,9 +211,9 @@ export class BookController extends EventTarget {
   async _build() {
     // HTML pages live over the canvas while they lie open (html-pages.js, loaded only for books that have them).
     const htmlPages = this._pages.some((entry) => entry.html) ? import('../layers/html-pages.js') : null;
+    const parts = loadOptionalParts(this._port, this._links.element);  // imported while the toolbar is
     this._controls = await attachViewer(this, this._port);  // the toolbar first: the book fits the rest of its box
-    // Page memory, autoplay, the page sound and the edge marks: imported only when the options ask.
-    const [companionModules, EdgeMarks] = await Promise.all([loadCompanions(this._settings), loadEdgeMarks(this._settings)]);
+    const [companionModules, EdgeMarks] = await Promise.all([parts.companions, parts.edgeMarks]);
     const { width, height } = this._shell.root.getBoundingClientRect();
     this._layoutSize = { width, height };
     const display = displayFor(this._settings.display, this._layoutSize, this._settings);
@@ -221,7 +221,7 @@ export class BookController extends EventTarget {
     prefetchOpening(this._port, display, opening);  // fetched and decoded while the surface is made
     this._prepareCanvas();
     if (htmlPages && !this._destroyed) this._mountHtml((await htmlPages).HtmlPages);
-    this._text = await loadTextLayer(this._port, this._links.element);  // a PDF's selectable text, under the links
+    this._text = await parts.text;  // a document's selectable text, under the links
     if (this._text) this._layers.splice(this._layers.indexOf(this._links), 0, this._text);
     this._surface = await this._makeSurface(display);
     followSurface(this._port);  // the pages a moving leaf shows, images lost with a context

@@ -249,6 +249,18 @@ export function prefetchOpening(book, display, opening) {
 }
 
 /**
+ * The optional parts the options ask for, all imported at once: page memory, autoplay and the page sound
+ * (`companions`), the edge marks (`edgeMarks`) and a document's text layer (`text`, under `before`).
+ * Each a promise; a failure is thrown where it is awaited.
+ * @param {BookPort} book
+ */
+export function loadOptionalParts(book, before) {
+  const parts = { companions: loadCompanions(book.settings), edgeMarks: loadEdgeMarks(book.settings), text: loadTextLayer(book, before) };
+  for (const loading of Object.values(parts)) Promise.resolve(loading).catch(() => {});
+  return parts;
+}
+
+/**
  * What follows the book (`controller`, through its public API) from beside it: the address and the
  * remembered page, autoplay, the page sound, from the modules loadCompanions() imported. Returns the
  * sound (page-sound.js, or a stand-in until `sound` is first set) and the stop of all three.

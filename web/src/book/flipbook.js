@@ -55,6 +55,8 @@ export class Flipbook extends BookController {
   /** @param {HTMLElement} container @param {object} options  See flipbook.d.ts. */
   static async create(container, options) {
     if (!(container instanceof HTMLElement)) throw new TypeError('conecurl: container must be an HTMLElement');
+    // The engine (the page's one, unless the book names its own .wasm) loads while a document opens.
+    if (!options?.wasmUrl) loadEngine().catch(() => {});  // a failure is met where _open awaits it
     const doc = await openDocumentOption(options);
     let settings;
     try {
