@@ -6,7 +6,7 @@
 // for the PDF in ranges). Reports, per road, the time to the first spread drawn and the bytes loaded
 // before it (encoded, as they came over the wire), and checks them against the targets.
 // Usage: node scripts/bench/first-spread.mjs --pdf book.pdf [--pdf magazine.pdf] [--reps 3] [--out bench-results]
-//        [--kbps 1600] [--latency 150] [--cpu 4] [--republish]
+//        [--kbps 1600] [--latency 150] [--cpu 4] [--republish] [--timeline (each request of the first run)]
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import http from 'node:http';
@@ -43,6 +43,10 @@ const TYPES = {
   '.jpg': 'image/jpeg', '.png': 'image/png', '.pdf': 'application/pdf',
 };
 const gzipped = new Map();  // file -> its gzip, made once
+// Every response the server sent: { url, at (epoch ms it was asked for), bytes (the body as sent) }. A dedicated
+// worker's requests (pdf.js's worker script, and the PDF it fetches) are throttled with the page but not
+// seen by the page's CDP session: they are counted from here.
+const served = [];
 
 /** The repository at /, each published site at /sites/<name>/, each PDF at /pdf/<name>.pdf. */
 function serve(routes) {
@@ -50,6 +54,12 @@ function serve(routes) {
     const url = new URL(req.url, 'http://x');
     const pathname = decodeURIComponent(url.pathname);
     const route = routes.find(([prefix]) => pathname.startsWith(prefix));
+    const entry = { url: `${url.pathname}${url.search}`, at: Date.now(), bytes: 0 };
+    served.push(entry);
+    const write = res.write.bind(res);
+    const end = res.end.bind(res);
+    res.write = (chunk, ...rest) => { entry.bytes += chunk?.length ?? 0; return write(chunk, ...rest); };
+    res.end = (chunk, ...rest) => { if (chunk && typeof chunk !== 'function') entry.bytes += chunk.length; return end(chunk, ...rest); };
     let file = path.normalize(path.join(route[1], pathname.slice(route[0].length)));
     if (!file.startsWith(route[1])) return res.writeHead(403).end();
     if (fs.existsSync(file) && fs.statSync(file).isDirectory()) file = path.join(file, 'index.html');
@@ -74,37 +84,58 @@ function serve(routes) {
   return new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(server)));
 }
 
-/** One run of one road: ms to the first spread drawn, and the bytes received before it. */
-async function measure(url, readerModule) {
+/** One run of one road: ms to the first spread drawn, and the bytes received before it (`timeline`: print each request). */
+async function measure(url, readerModule, { timeline = false } = {}) {
+  served.length = 0;
   const browser = await chromium.launch(chromiumLaunchOptions());
   try {
     const page = await (await browser.newContext(phoneUse(PHONES['phone-portrait']))).newPage();
     const cdp = await page.context().newCDPSession(page);
     await cdp.send('Network.enable');
-    await cdp.send('Network.setCacheDisabled', { cacheDisabled: true });
     await cdp.send('Network.emulateNetworkConditions',
       { offline: false, latency, downloadThroughput: (kbps * 1000) / 8, uploadThroughput: (kbps * 1000) / 8 / 2 });
     await cdp.send('Emulation.setCPUThrottlingRate', { rate: cpu });
     const received = [];  // [monotonic s, encoded bytes]
     let start = null;
     const urls = [];
+    const requests = new Map();  // id -> { url, sent, done, bytes } in monotonic s
     cdp.on('Network.requestWillBeSent', (e) => {
       if (start === null && e.type === 'Document') start = e.timestamp;
       urls.push(e.request.url);
+      requests.set(e.requestId, { url: e.request.url, sent: e.timestamp, done: null, bytes: 0 });
     });
     cdp.on('Network.responseReceived', (e) => received.push([e.timestamp, e.response.encodedDataLength ?? 0]));  // headers
-    cdp.on('Network.dataReceived', (e) => received.push([e.timestamp, e.encodedDataLength]));
+    cdp.on('Network.dataReceived', (e) => {
+      received.push([e.timestamp, e.encodedDataLength]);
+      const request = requests.get(e.requestId);
+      if (request) request.bytes += e.encodedDataLength;
+    });
+    cdp.on('Network.loadingFinished', (e) => { const request = requests.get(e.requestId); if (request) request.done = e.timestamp; });
     await page.goto(url, { waitUntil: 'commit' });
-    const ms = await page.evaluate(async (module) => {
+    const { ms, origin } = await page.evaluate(async (module) => {
       const book = await (await import(module)).book;
       if (!book) throw new Error(document.body.innerText);
       await book.whenIdle();
       await new Promise((resolve) => requestAnimationFrame(() => resolve()));
-      return performance.now();
+      return { ms: performance.now(), origin: performance.timeOrigin };
     }, readerModule);
     const until = start + ms / 1000;
-    const bytes = received.filter(([t]) => t <= until).reduce((sum, [, n]) => sum + n, 0);
-    return { ms: Math.round(ms), bytes, pdfjs: urls.some((u) => /pdfjs|pdf\.worker/.test(u)) };
+    const seen = received.filter(([t]) => t <= until).reduce((sum, [, n]) => sum + n, 0);
+    // A request whose bytes the page's session never saw (a dedicated worker's) is counted as the server sent it.
+    const pathOf = (u) => { const parsed = new URL(u); return `${parsed.pathname}${parsed.search}`; };
+    const counted = new Set([...requests.values()].filter((r) => r.bytes > 0).map((r) => pathOf(r.url)));
+    const unseen = served.filter((entry) => !counted.has(entry.url) && entry.at <= origin + ms);
+    const workerBytes = unseen.reduce((sum, entry) => sum + entry.bytes, 0);
+    if (timeline) {
+      const rows = [...requests.values()].sort((a, b) => a.sent - b.sent);
+      for (const r of rows.filter((row) => row.bytes > 0 || row.done !== null)) {
+        const at = (t) => (t === null ? '   -  ' : `${Math.round((t - start) * 1000)}`.padStart(6));
+        console.log(`  ${at(r.sent)} ${at(r.done)} ms ${`${(r.bytes / 1024).toFixed(1)}`.padStart(7)} KB  ${new URL(r.url).pathname}`);
+      }
+      for (const entry of unseen) console.log(`  (worker) ${`${(entry.bytes / 1024).toFixed(1)}`.padStart(7)} KB  ${entry.url}`);
+      console.log(`  first spread at ${Math.round(ms)} ms`);
+    }
+    return { ms: Math.round(ms), bytes: seen + workerBytes, workerBytes, pdfjs: urls.some((u) => /pdfjs|pdf\.worker/.test(u)) };
   } finally {
     await browser.close();
   }
@@ -122,14 +153,14 @@ for (const pdf of pdfs) {
   const server = await serve([['/sites/', path.join(out, 'first-spread')], ['/pdf/', path.dirname(pdf)], ['/', root]]);
   const base = `http://127.0.0.1:${server.address().port}`;
   const roads = {
-    published: () => measure(`${base}/sites/${name}/index.html`, `${base}/sites/${name}/conecurl/web/reader/reader.js`),
-    pdfjs: () => measure(`${base}/web/reader/reader.html#file=/pdf/${encodeURIComponent(path.basename(pdf))}`, `${base}/web/reader/reader.js`),
+    published: (options) => measure(`${base}/sites/${name}/index.html`, `${base}/sites/${name}/conecurl/web/reader/reader.js`, options),
+    pdfjs: (options) => measure(`${base}/web/reader/reader.html#file=/pdf/${encodeURIComponent(path.basename(pdf))}`, `${base}/web/reader/reader.js`, options),
   };
   const runs = { published: [], pdfjs: [] };
   try {
     for (let rep = 0; rep < reps; rep++) {
       for (const road of rep % 2 ? ['pdfjs', 'published'] : ['published', 'pdfjs']) {
-        const run = await roads[road]();
+        const run = await roads[road]({ timeline: args.includes('--timeline') && rep === 0 });
         runs[road].push(run);
         console.log(`[${name} ${rep + 1}/${reps}] ${road}: first spread ${run.ms} ms after ${(run.bytes / 1024).toFixed(0)} KB${run.pdfjs ? ' (pdf.js loaded)' : ''}`);
       }
