@@ -25,6 +25,11 @@ if (!ArrayBuffer.prototype.transferToFixedLength) {
 
 const require = createRequire(import.meta.url);
 
+// pdf.js leaves some internal promises unhandled when a file is damaged (a page tree with a bad entry
+// rejects a lookup nobody awaits): the failure reaches the caller that asked, so these are only noted.
+export const strayRejections = [];
+process.on('unhandledRejection', (reason) => { strayRejections.push(reason); });
+
 /** What to install when a part is missing (one line, for the error message). */
 export const INSTALL_HINT = 'install it next to conecurl: npm install pdfjs-dist @napi-rs/canvas@1.0.11';
 
