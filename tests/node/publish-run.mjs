@@ -9,8 +9,8 @@ import { fileURLToPath } from 'node:url';
 export const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 export const STAND_IN = 'tests/fixtures/reader-stand-in/reader.js';
 
-/** Runs `conecurl publish ...args`; resolves { code, stdout, stderr }. */
-export function publish(args, env = {}) {
+/** Runs `conecurl publish ...args`; resolves { code, stdout, stderr } (code 'hung' if it ran past `limitMs`: a guard, not a timing). */
+export function publish(args, env = {}, limitMs = 300_000) {
   return new Promise((resolve) => {
     const child = spawn(process.execPath, [path.join(root, 'cli/conecurl.mjs'), 'publish', ...args], {
       cwd: root, env: { ...process.env, CONECURL_PUBLISH_READER: STAND_IN, ...env }, stdio: ['ignore', 'pipe', 'pipe'],
@@ -19,7 +19,11 @@ export function publish(args, env = {}) {
     let stderr = '';
     child.stdout.on('data', (d) => { stdout += d; });
     child.stderr.on('data', (d) => { stderr += d; });
-    child.on('close', (code) => resolve({ code, stdout, stderr }));
+    const guard = setTimeout(() => child.kill('SIGKILL'), limitMs);
+    child.on('close', (code, signal) => {
+      clearTimeout(guard);
+      resolve({ code: signal === 'SIGKILL' ? 'hung' : code, stdout, stderr });
+    });
   });
 }
 
