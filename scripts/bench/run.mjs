@@ -7,7 +7,8 @@
 // (390x844 at ratio 3, single page, 20 pages) judged by targets of its own.
 // Usage: node scripts/bench/run.mjs [--reps 3] [--configs double-20,single-1000,phone-20] [--libs conecurl,floor-webgl]
 //        [--duration 600] [--turns 10] [--port 8095] [--out bench-results] [--baseline ../conecurl-before] [--publish]
-import { spawn } from 'node:child_process';
+//        [--skip-publish-rate] (leaves out publish-rate.mjs, the pages per second of `conecurl publish`, run last)
+import { spawn, spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import http from 'node:http';
 import os from 'node:os';
@@ -38,7 +39,7 @@ const CONFIGS = [
 function parseArgs(argv) {
   const options = {
     reps: 3, configs: CONFIGS.map((c) => c.id), libs: [...LIBRARIES], duration: 600, turns: 10, idleMs: 2000,
-    port: Number(process.env.CONECURL_BENCH_PORT) || 8095, out: 'bench-results', publish: false, baseline: null,
+    port: Number(process.env.CONECURL_BENCH_PORT) || 8095, out: 'bench-results', publish: false, baseline: null, publishRate: true,
   };
   for (let i = 0; i < argv.length; i++) {
     const name = argv[i];
@@ -57,6 +58,7 @@ function parseArgs(argv) {
     else if (name === '--port') options.port = count(value(), 1);
     else if (name === '--out') options.out = value();
     else if (name === '--publish') options.publish = true;
+    else if (name === '--skip-publish-rate') options.publishRate = false;
     else if (name === '--baseline') options.baseline = path.resolve(value());
     else if (name === '--configs' || name === '--libs') {
       const list = value().split(',');
@@ -229,6 +231,11 @@ async function main() {
   console.log(`\n${md}`);
   console.log(`bench: wrote ${path.relative(root, out)}/latest.{json,md} and frame-intervals.svg${options.publish ? `, copied to docs/bench/ and ${BENCH_DOC}` : ''}`
     + ` in ${Math.round(meta.wallSeconds)} s`);
+  if (options.publishRate) {
+    // The publish command's rate, in a process of its own (it uses every core, so it runs after the books).
+    const rate = spawnSync(process.execPath, [path.join(root, 'scripts/bench/publish-rate.mjs'), '--out', options.out], { stdio: 'inherit' });
+    if (rate.status !== 0) process.exitCode = 1;
+  }
   if (runs.some((r) => r.error)) {
     console.error('bench: some measurements failed (see above)');
     process.exitCode = 1;

@@ -1,0 +1,62 @@
+// The published site's index.html: the reader page (reader.js makes the book in <main id="conecurl-reader">),
+// its modules preloaded so they load in one round trip, link-preview tags, and a <noscript> copy of the
+// pages (images and text) for readers and crawlers without JavaScript. Every value from the PDF is escaped.
+
+/** Characters of a page's text in the noscript copy: enough to index a page and keep a 300-page book's HTML small. */
+export const NOSCRIPT_CHARS = 400;
+
+const ENTITIES = { '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' };
+/** Text made safe for HTML content and double- or single-quoted attributes. */
+export const escapeHtml = (value) => String(value).replace(/[&<>"']/g, (c) => ENTITIES[c]);
+
+/** A URL path (relative, with our own file names) percent-encoded where needed, for an attribute. */
+const href = (relative) => escapeHtml(relative.split('/').map(encodeURIComponent).join('/'));
+
+const cut = (text, max) => {
+  const words = text.replace(/\s+/g, ' ').trim();
+  return words.length > max ? `${words.slice(0, max).replace(/\s+\S*$/, '')}…` : words;
+};
+
+/**
+ * index.html for a site: `title`, `lang`, `manifest` (path of book.json), `firstImage` (the first page's
+ * reading image), `cover` (path), `url` (absolute base or null), `runtime` (runtimeFiles(): entry, css,
+ * statics, under `prefix`), `pages` ([{ src, width, height, alt, text } | { failed }], paths relative to the site).
+ */
+export function indexHtml({ title, lang, manifest, firstImage, cover, url, runtime, prefix, pages }) {
+  const absolute = (relative) => (url ? escapeHtml(new URL(relative, url).href) : href(relative));
+  const lines = [
+    '<!doctype html>',
+    `<html lang="${escapeHtml(lang || 'en')}">`,
+    '<head>',
+    '<meta charset="utf-8">',
+    '<meta name="viewport" content="width=device-width, initial-scale=1, viewport-fit=cover">',
+    `<title>${escapeHtml(title)}</title>`,
+    `<meta property="og:title" content="${escapeHtml(title)}">`,
+    '<meta property="og:type" content="book">',
+    `<meta property="og:image" content="${absolute(cover)}">`,
+    ...(url ? [`<meta property="og:url" content="${escapeHtml(url)}">`] : []),
+    '<meta name="twitter:card" content="summary_large_image">',
+    `<link rel="stylesheet" href="${href(`${prefix}/${runtime.css}`)}">`,
+    ...runtime.statics.filter((file) => file !== runtime.entry).map((file) => `<link rel="modulepreload" href="${href(`${prefix}/${file}`)}">`),
+    `<link rel="preload" href="${href(manifest)}" as="fetch" crossorigin>`,
+    ...(firstImage ? [`<link rel="preload" href="${href(firstImage)}" as="image">`] : []),
+    `<script type="module" src="${href(`${prefix}/${runtime.entry}`)}"></script>`,
+    '</head>',
+    '<body>',
+    `<main id="conecurl-reader" data-document="${href(manifest)}">`,
+    '<noscript>',
+    `<h1>${escapeHtml(title)}</h1>`,
+  ];
+  // Each page's text is cut to NOSCRIPT_CHARS here (its whole text is in its text file), so that the
+  // HTML of a long book stays small.
+  pages.forEach((page, i) => {
+    if (page.failed) {
+      lines.push(`<section><p>Page ${i + 1} could not be published.</p></section>`);
+      return;
+    }
+    lines.push(`<section><img src="${href(page.src)}" width="${page.imageWidth}" height="${page.imageHeight}" loading="lazy" alt="${escapeHtml(page.alt)}">`
+      + (page.text.trim() ? `<p>${escapeHtml(cut(page.text, NOSCRIPT_CHARS))}</p>` : '') + '</section>');
+  });
+  lines.push('</noscript>', '</main>', '</body>', '</html>', '');
+  return lines.join('\n');
+}

@@ -1,0 +1,157 @@
+// `conecurl publish <book.pdf> --out <folder>`: reads the PDF, renders its pages on worker threads, and
+// writes the static site (index.html, book/ as format.js defines it, the reader under conecurl/).
+// Returns the exit code: 0 done, 1 bad input, 2 bad usage, 3 a site whose failed pages are listed.
+import fs from 'node:fs';
+import path from 'node:path';
+import { ALT_CHARS, MANIFEST, altText, checkManifest, makeManifest, pagePath } from '../../web/src/document/format.js';
+import { pdfOutline } from '../../web/src/document/pdf-document.js';
+import { DEFAULTS, FORMATS, HELP, parsePublishArgs } from './args.mjs';
+import { EXIT, inputError, report, usageError } from './errors.mjs';
+import { indexHtml } from './index-html.mjs';
+import { loadRenderer, openPdf, readPdf } from './open-pdf.mjs';
+import { claimOutFolder, settleOutFolder } from './out-folder.mjs';
+import { progress } from './progress.mjs';
+import { COVER } from './render-page.mjs';
+import { renderAll } from './render-pool.mjs';
+import { remapLinks, remapOutline } from './remap.mjs';
+import { PACKAGE_ROOT, runtimeFiles } from './runtime-files.mjs';
+import { summary } from './summary.mjs';
+
+const BOOK = 'book';
+const RUNTIME = 'conecurl';
+
+/** The runtime files, or an input error naming what is missing. The entry can be swapped for tests (docs/publish.md). */
+function runtime() {
+  try {
+    const entry = process.env.CONECURL_PUBLISH_READER;
+    return entry ? runtimeFiles(PACKAGE_ROOT, entry, path.posix.join(path.posix.dirname(entry), 'reader.css')) : runtimeFiles();
+  } catch (error) {
+    throw Object.assign(inputError(error.message), { cause: error });
+  }
+}
+
+export async function main(argv) {
+  let debug = argv.includes('--debug');
+  try {
+    const options = parsePublishArgs(argv);
+    debug = options.debug;
+    if (options.help) {
+      process.stdout.write(HELP);
+      return 0;
+    }
+    return await publish(options);
+  } catch (error) {
+    return report(error, debug);
+  }
+}
+
+async function publish(options) {
+  const site = runtime();
+  const { pdfjs } = await loadRenderer();
+  const bytes = readPdf(options.input);
+  const doc = await openPdf(pdfjs, bytes, options.input, options.password);
+  try {
+    const count = doc.numPages;
+    const numbers = options.pages ?? Array.from({ length: count }, (_, i) => i + 1);
+    const beyond = numbers.find((n) => n > count);
+    if (beyond) throw usageError(`--pages: ${options.input} has ${count} pages, so there is no page ${beyond}`);
+    const { info } = await doc.getMetadata().catch(() => ({ info: {} }));
+    const name = path.basename(options.input).replace(/\.pdf$/i, '');
+    const title = (options.title ?? String(info?.Title ?? '').trim()) || name;
+    const lang = String(info?.Language ?? '').trim();
+    const outline = remapOutline(await pdfOutline(doc), numbers);
+    const download = options.download ? `${name.replace(/[^\w.-]+/g, '-') || 'book'}.pdf` : null;
+
+    // Every file this run may write, so the out folder can be checked before anything is.
+    const ext = FORMATS[options.format];
+    const kinds = ['pages', 'thumbs', 'text', ...(options.zoom > 0 ? ['zoom'] : [])];
+    const pageFiles = numbers.flatMap((_, i) => kinds.map((kind) => `${BOOK}/${pagePath(kind, i, kind === 'text' ? 'json' : ext)}`));
+    const fixed = ['index.html', `${BOOK}/${MANIFEST}`, `${BOOK}/${COVER}`, ...(download ? [`${BOOK}/${download}`] : []),
+      ...site.files.map((file) => `${RUNTIME}/${file}`)];
+    const { previous } = claimOutFolder(options.out, [...fixed, ...pageFiles]);
+
+    const bookDir = path.join(options.out, BOOK);
+    for (const kind of kinds) fs.mkdirSync(path.join(bookDir, kind), { recursive: true });
+    const written = new Map();  // relative path -> { bytes, kind }
+    for (const file of site.files) {
+      fs.mkdirSync(path.dirname(path.join(options.out, RUNTIME, file)), { recursive: true });
+      fs.copyFileSync(path.join(PACKAGE_ROOT, file), path.join(options.out, RUNTIME, file));
+      written.set(`${RUNTIME}/${file}`, { bytes: fs.statSync(path.join(PACKAGE_ROOT, file)).size, kind: 'runtime' });
+    }
+    if (download) {
+      fs.writeFileSync(path.join(bookDir, download), bytes);
+      written.set(`${BOOK}/${download}`, { bytes: bytes.length, kind: 'pdf' });
+    }
+
+    const results = new Array(numbers.length);
+    const failures = [];
+    const bar = progress(process.stdout, numbers.length);
+    process.stdout.write(`Publishing ${numbers.length} pages of ${options.input} into ${options.out} (${options.jobs} workers)\n`);
+    await renderAll({
+      pages: numbers.map((number, index) => ({ number, index })),
+      jobs: options.jobs,
+      workerData: {
+        bytes, file: options.input, password: options.password, bookDir,
+        options: { ...DEFAULTS, format: options.format, quality: options.quality, height: options.height, scale: options.scale, zoom: options.zoom },
+      },
+      onPage: (result) => {
+        results[result.index] = result;
+        if (result.failed) failures.push(result);
+        for (const file of result.files ?? []) written.set(`${BOOK}/${file.path}`, file);
+        bar.page(!result.failed);
+      },
+    });
+    const seconds = bar.end();
+
+    const pages = [];
+    for (const [index, result] of results.entries()) {
+      if (result.failed) {
+        pages.push({ ...(await pageSize(doc, numbers[index], results)), failed: result.failed });
+        continue;
+      }
+      const text = pagePath('text', index, 'json');
+      pages.push({
+        width: result.width, height: result.height, src: pagePath('pages', index, ext),
+        ...(options.zoom > 0 ? { zoomSrc: pagePath('zoom', index, ext) } : {}),
+        thumbSrc: pagePath('thumbs', index, ext), text, alt: altText(index, result.text, ALT_CHARS),
+        links: remapLinks(result.links, numbers),
+      });
+    }
+    const manifest = checkManifest(makeManifest({ title, lang, pages, outline, download }), MANIFEST);
+    const manifestText = `${JSON.stringify(manifest)}\n`;
+    fs.writeFileSync(path.join(bookDir, MANIFEST), manifestText);
+    written.set(`${BOOK}/${MANIFEST}`, { bytes: manifestText.length, kind: 'text' });
+
+    const html = indexHtml({
+      title, lang, manifest: `${BOOK}/${MANIFEST}`, cover: `${BOOK}/${COVER}`, url: options.url, runtime: site, prefix: RUNTIME,
+      firstImage: pages[0].src ? `${BOOK}/${pages[0].src}` : null,
+      pages: pages.map((page, i) => (page.failed ? page : {
+        src: `${BOOK}/${page.src}`, imageWidth: results[i].imageWidth, imageHeight: results[i].imageHeight, alt: page.alt, text: results[i].text,
+      })),
+    });
+    fs.writeFileSync(path.join(options.out, 'index.html'), html);
+    written.set('index.html', { bytes: Buffer.byteLength(html), kind: 'text' });
+    settleOutFolder(options.out, previous, [...written.keys()]);
+
+    for (const failure of failures.sort((a, b) => a.index - b.index)) {
+      process.stderr.write(`conecurl publish: page ${numbers[failure.index]} of ${options.input} could not be rendered (${failure.failed}); `
+        + 'the other pages are published and the book shows it as missing\n');
+      if (options.debug && failure.stack) process.stderr.write(`${failure.stack}\n`);
+    }
+    process.stdout.write(summary({ out: options.out, pages: numbers.length, failed: failures.length, seconds, written: [...written.values()] }));
+    return failures.length > 0 ? EXIT.incomplete : 0;
+  } finally {
+    await doc.loadingTask.destroy();
+  }
+}
+
+/** A failed page's size in page units: from the PDF if it can say, else the size of a page that rendered. */
+async function pageSize(doc, number, results) {
+  try {
+    const { width, height } = (await doc.getPage(number)).getViewport({ scale: 1 });
+    return { width, height };
+  } catch {
+    const other = results.find((result) => result && !result.failed);
+    return other ? { width: other.width, height: other.height } : { width: 612, height: 792 };
+  }
+}

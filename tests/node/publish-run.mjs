@@ -1,0 +1,37 @@
+// Shared by the `conecurl publish` Node tests: runs the real command (node cli/conecurl.mjs publish …) in a
+// child process with the stand-in reader entry (web/reader/reader.js is written elsewhere), in temp folders.
+import { spawn } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+export const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
+export const STAND_IN = 'tests/fixtures/reader-stand-in/reader.js';
+
+/** Runs `conecurl publish ...args`; resolves { code, stdout, stderr } (code 'hung' if it ran past `limitMs`: a guard, not a timing). */
+export function publish(args, env = {}, limitMs = 300_000) {
+  return new Promise((resolve) => {
+    const child = spawn(process.execPath, [path.join(root, 'cli/conecurl.mjs'), 'publish', ...args], {
+      cwd: root, env: { ...process.env, CONECURL_PUBLISH_READER: STAND_IN, ...env }, stdio: ['ignore', 'pipe', 'pipe'],
+    });
+    let stdout = '';
+    let stderr = '';
+    child.stdout.on('data', (d) => { stdout += d; });
+    child.stderr.on('data', (d) => { stderr += d; });
+    const guard = setTimeout(() => child.kill('SIGKILL'), limitMs);
+    child.on('close', (code, signal) => {
+      clearTimeout(guard);
+      resolve({ code: signal === 'SIGKILL' ? 'hung' : code, stdout, stderr });
+    });
+  });
+}
+
+/** A new temp folder for one test, removed by the returned function. */
+export function tempDir(t) {
+  const dir = fs.mkdtempSync(path.join(os.tmpdir(), 'conecurl-publish-'));
+  t.after(() => fs.rmSync(dir, { recursive: true, force: true }));
+  return dir;
+}
+
+export const readJson = (file) => JSON.parse(fs.readFileSync(file, 'utf8'));
