@@ -19,10 +19,10 @@ const cut = (text, max) => {
 
 /**
  * index.html for a site: `title`, `lang`, `manifest` (path of book.json), `firstImage` (the first page's
- * reading image), `cover` (path), `url` (absolute base or null), `runtime` (runtimeFiles(): entry, css,
+ * reading image), `thumb` (its thumbnail: the page's icon), `cover` (path), `url` (absolute base or null), `runtime` (runtimeFiles(): entry, css,
  * statics, under `prefix`), `pages` ([{ src, width, height, alt, text } | { failed }], paths relative to the site).
  */
-export function indexHtml({ title, lang, manifest, firstImage, cover, url, runtime, prefix, pages }) {
+export function indexHtml({ title, lang, manifest, firstImage, thumb, cover, url, runtime, prefix, pages }) {
   const absolute = (relative) => (url ? escapeHtml(new URL(relative, url).href) : href(relative));
   const lines = [
     '<!doctype html>',
@@ -37,9 +37,14 @@ export function indexHtml({ title, lang, manifest, firstImage, cover, url, runti
     ...(url ? [`<meta property="og:url" content="${escapeHtml(url)}">`] : []),
     '<meta name="twitter:card" content="summary_large_image">',
     `<link rel="stylesheet" href="${href(`${prefix}/${runtime.css}`)}">`,
-    ...runtime.statics.filter((file) => file !== runtime.entry).map((file) => `<link rel="modulepreload" href="${href(`${prefix}/${file}`)}">`),
+    ...(thumb ? [`<link rel="icon" href="${href(thumb)}">`] : []),
+    // Everything the first spread needs, asked for at once: the modules (those the book imports on its way
+    // too), the manifest, the engine's binary and the first page; fetched as the book fetches them (CORS
+    // mode, credentials of the same origin), so the book's own requests are answered by these.
+    ...runtime.preload.map((file) => `<link rel="modulepreload" href="${href(`${prefix}/${file}`)}">`),
     `<link rel="preload" href="${href(manifest)}" as="fetch" crossorigin>`,
-    ...(firstImage ? [`<link rel="preload" href="${href(firstImage)}" as="image">`] : []),
+    `<link rel="preload" href="${href(`${prefix}/${runtime.wasm}`)}" as="fetch" crossorigin>`,
+    ...(firstImage ? [`<link rel="preload" href="${href(firstImage)}" as="fetch" crossorigin>`] : []),
     `<script type="module" src="${href(`${prefix}/${runtime.entry}`)}"></script>`,
     '</head>',
     '<body>',

@@ -20,11 +20,10 @@ import { summary } from './summary.mjs';
 const BOOK = 'book';
 const RUNTIME = 'conecurl';
 
-/** The runtime files, or an input error naming what is missing. The entry can be swapped for tests (docs/publish.md). */
+/** The runtime files, or an input error naming what is missing. */
 function runtime() {
   try {
-    const entry = process.env.CONECURL_PUBLISH_READER;
-    return entry ? runtimeFiles(PACKAGE_ROOT, entry, path.posix.join(path.posix.dirname(entry), 'reader.css')) : runtimeFiles();
+    return runtimeFiles(PACKAGE_ROOT);
   } catch (error) {
     throw Object.assign(inputError(error.message), { cause: error });
   }
@@ -124,7 +123,7 @@ async function publish(options) {
 
     const html = indexHtml({
       title, lang, manifest: `${BOOK}/${MANIFEST}`, cover: `${BOOK}/${COVER}`, url: options.url, runtime: site, prefix: RUNTIME,
-      firstImage: pages[0].src ? `${BOOK}/${pages[0].src}` : null,
+      firstImage: pages[0].src ? `${BOOK}/${pages[0].src}` : null, thumb: pages[0].thumbSrc ? `${BOOK}/${pages[0].thumbSrc}` : null,
       pages: pages.map((page, i) => (page.failed ? page : {
         src: `${BOOK}/${page.src}`, imageWidth: results[i].imageWidth, imageHeight: results[i].imageHeight, alt: page.alt, text: results[i].text,
       })),

@@ -32,9 +32,14 @@ export function readPdf(file) {
   return new Uint8Array(bytes.buffer, bytes.byteOffset, bytes.length);
 }
 
-/** The pdf.js document of `bytes` (a copy is handed over: pdf.js detaches what it gets). */
-export async function openPdf(pdfjs, bytes, file, password) {
-  const task = pdfjs.getDocument(documentOptions(bytes.slice(), password));
+/**
+ * The pdf.js document of `bytes` (a copy is handed over: pdf.js detaches what it gets). `browserFonts`:
+ * the 14 standard fonts a PDF may use without embedding them are taken as a browser's pdf.js takes them
+ * (useSystemFonts, its default there: their metrics, not the font files'), for the page text records, so
+ * the published text lies where a PDF opened in the browser puts it; pages are drawn with the files.
+ */
+export async function openPdf(pdfjs, bytes, file, password, { browserFonts = false } = {}) {
+  const task = pdfjs.getDocument({ ...documentOptions(bytes.slice(), password), ...(browserFonts ? { useSystemFonts: true } : {}) });
   try {
     const doc = await task.promise;
     if (!(doc.numPages > 0)) throw new Error('no pages');

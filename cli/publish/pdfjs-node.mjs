@@ -31,7 +31,7 @@ export const strayRejections = [];
 process.on('unhandledRejection', (reason) => { strayRejections.push(reason); });
 
 /** What to install when a part is missing (one line, for the error message). */
-export const INSTALL_HINT = 'install it next to conecurl: npm install pdfjs-dist @napi-rs/canvas@1.0.11';
+export const INSTALL_HINT = 'install them next to conecurl (npm leaves pdf.js out on Node 20): npm install pdfjs-dist @napi-rs/canvas@1.0.11';
 
 /** pdfjs-dist's folder, or null when it is not installed. */
 export function pdfjsFolder() {

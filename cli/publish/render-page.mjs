@@ -27,10 +27,11 @@ function scaled(createCanvas, source, width, height) {
 }
 
 /**
- * Renders source page `number` (from 1) of `doc` as published page `index` (from 0) into `bookDir`;
+ * Renders source page `number` (from 1) of `doc` as published page `index` (from 0) into `bookDir`, its
+ * text read from `textDoc` (the same PDF opened with a browser's fonts: open-pdf.js);
  * returns what the manifest and index.html need: sizes, links, the start of its text, bytes written.
  */
-export async function renderPage({ doc, createCanvas, number, index, bookDir, options }) {
+export async function renderPage({ doc, textDoc = doc, createCanvas, number, index, bookDir, options }) {
   const page = await doc.getPage(number);
   try {
     const unit = page.getViewport({ scale: 1 });
@@ -60,7 +61,9 @@ export async function renderPage({ doc, createCanvas, number, index, bookDir, op
       await write(COVER, await cover.encode('jpeg', 85), 'image');
     }
 
-    const record = await pdfPageText(page);
+    const textPage = textDoc === doc ? page : await textDoc.getPage(number);
+    const record = await pdfPageText(textPage);
+    if (textPage !== page) textPage.cleanup();
     await write(pagePath('text', index, 'json'), Buffer.from(JSON.stringify(encodePageText(record))), 'text');
     const links = await pdfPageLinks(doc, page);
     return {

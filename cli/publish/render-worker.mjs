@@ -8,10 +8,11 @@ import { renderPage } from './render-page.mjs';
 const { bytes, file, password, bookDir, options } = workerData;
 const { pdfjs, canvas } = await loadRenderer();
 const doc = await openPdf(pdfjs, bytes, file, password);
+const textDoc = await openPdf(pdfjs, bytes, file, password, { browserFonts: true });  // the text as a browser reads it
 
 parentPort.on('message', async ({ number, index }) => {
   try {
-    const result = await renderPage({ doc, createCanvas: canvas.createCanvas, number, index, bookDir, options });
+    const result = await renderPage({ doc, textDoc, createCanvas: canvas.createCanvas, number, index, bookDir, options });
     parentPort.postMessage({ type: 'page', result });
   } catch (error) {
     parentPort.postMessage({ type: 'failed', index, message: String(error?.message ?? error).split('\n')[0], stack: error?.stack });

@@ -4,11 +4,14 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { FIRST_VIEW_MODULES } from '../../web/reader/first-view-modules.js';
 
 export const PACKAGE_ROOT = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 export const READER = 'web/reader/reader.js';
 export const READER_CSS = 'web/reader/reader.css';
 export const ENGINE_FILES = ['dist/conecurl-engine.mjs', 'dist/conecurl-engine.wasm', 'dist/engine-constants.js'];
+/** The engine's binary: index.html preloads it (the book fetches it as soon as it is made). */
+export const ENGINE_WASM = 'dist/conecurl-engine.wasm';
 
 /** A source without its comments (JSDoc may name any module in an import() type). */
 const withoutComments = (source) => source.replace(/\/\*[\s\S]*?\*\//g, '').replace(/(^|[^:'"`\\])\/\/.*$/gm, '$1');
@@ -52,7 +55,10 @@ export function moduleGraph(root, entry) {
   return { all: closure(['static', 'dynamic']), statics: closure(['static']) };
 }
 
-/** The runtime files to copy (paths relative to the package root) and the static graph for modulepreload. */
+/**
+ * The runtime files to copy (paths relative to the package root); `preload`: the modules index.html
+ * preloads, the static graph and the modules the reader imports on the way to its first spread.
+ */
 export function runtimeFiles(root = PACKAGE_ROOT, entry = READER, css = READER_CSS) {
   for (const file of [entry, css, ...ENGINE_FILES]) {
     if (!fs.existsSync(path.join(root, file))) {
@@ -61,5 +67,8 @@ export function runtimeFiles(root = PACKAGE_ROOT, entry = READER, css = READER_C
   }
   const graph = moduleGraph(root, entry);
   const files = [...new Set([...graph.all, css, ...ENGINE_FILES])].sort();
-  return { files, statics: graph.statics, entry, css };
+  const missing = FIRST_VIEW_MODULES.filter((file) => !graph.all.includes(file));
+  if (missing.length > 0) throw new Error(`${missing.join(', ')} (web/reader/first-view-modules.js) cannot be reached from ${entry}`);
+  const preload = [...new Set([...graph.statics, ...FIRST_VIEW_MODULES])].filter((file) => file !== entry).sort();
+  return { files, statics: graph.statics, preload, entry, css, wasm: ENGINE_WASM };
 }

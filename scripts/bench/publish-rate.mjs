@@ -93,7 +93,7 @@ function measure(label, pdf, options) {
     const started = process.hrtime.bigint();
     const run = spawnSync(process.execPath, [path.join(root, 'cli/conecurl.mjs'), 'publish', pdf, '--out', path.join(out, 'site'),
       '--jobs', String(options.jobs), '--zoom', String(options.zoom), '--no-download'],
-    { encoding: 'utf8', env: { ...process.env, CONECURL_PUBLISH_READER: process.env.CONECURL_PUBLISH_READER ?? (fs.existsSync(path.join(root, 'web/reader/reader.js')) ? '' : 'tests/fixtures/reader-stand-in/reader.js') } });
+    { encoding: 'utf8' });
     const seconds = Number(process.hrtime.bigint() - started) / 1e9;
     if (run.status !== 0) throw new Error(`publish-rate: ${label} failed (exit ${run.status}): ${run.stderr.trim()}`);
     const pages = JSON.parse(fs.readFileSync(path.join(out, 'site/book/book.json'), 'utf8')).pageCount;

@@ -12,7 +12,7 @@ const manifest = JSON.parse(fs.readFileSync(path.join(repositoryRoot, 'package.j
 let dryRun = null;
 const packed = () => (dryRun ??= packDryRun());  // one `npm pack --dry-run` for the tests that read it
 
-/** Every file a user needs, and nothing else: the engine and its constants, the web/src modules and typings, the command, docs. */
+/** Every file a user needs, and nothing else: the engine and its constants, the web/src modules and typings, the reader page, the command, docs. */
 function allowedFiles() {
   const sources = fs.readdirSync(path.join(repositoryRoot, 'web/src'), { recursive: true })
     .filter((name) => name.endsWith('.js') || name.endsWith('.d.ts'))
@@ -21,8 +21,10 @@ function allowedFiles() {
   const cli = fs.readdirSync(path.join(repositoryRoot, 'cli'), { recursive: true })
     .filter((name) => name.endsWith('.mjs'))
     .map((name) => `cli/${name}`);
+  // The reader page (web/reader/): a published site's, and reader.html#file= for a PDF at run time.
+  const reader = fs.readdirSync(path.join(repositoryRoot, 'web/reader')).map((name) => `web/reader/${name}`);
   return ['package.json', 'README.md', 'LICENSE', 'dist/conecurl-engine.mjs', 'dist/conecurl-engine.wasm',
-    'dist/engine-constants.js', ...sources, ...cli].sort();
+    'dist/engine-constants.js', ...sources, ...cli, ...reader].sort();
 }
 
 /** Every string an exports entry points at, with the condition path that leads to it. */
@@ -31,7 +33,7 @@ function exportTargets(entry, where) {
   return Object.entries(entry).flatMap(([condition, value]) => exportTargets(value, `${where} ${condition}`));
 }
 
-test('node: npm pack holds exactly the engine, the web/src modules and typings, the cli/ command, README, LICENSE and package.json (needs the wasm built)', () => {
+test('node: npm pack holds exactly the engine, the web/src modules and typings, the reader page, the cli/ command, README, LICENSE and package.json (needs the wasm built)', () => {
   const files = packed().files.map((file) => file.path).sort();
   assert.deepEqual(files, allowedFiles());
   for (const file of files) assert.doesNotMatch(file, /(^|\/)(tests?|demo|cpp|shaders|scripts)\//);

@@ -1,5 +1,5 @@
 // Shared by the `conecurl publish` Node tests: runs the real command (node cli/conecurl.mjs publish …) in a
-// child process with the stand-in reader entry (web/reader/reader.js is written elsewhere), in temp folders.
+// child process, in temp folders.
 import { spawn } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
@@ -7,13 +7,13 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 export const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
-export const STAND_IN = 'tests/fixtures/reader-stand-in/reader.js';
+export const READER = 'web/reader/reader.js';
 
 /** Runs `conecurl publish ...args`; resolves { code, stdout, stderr } (code 'hung' if it ran past `limitMs`: a guard, not a timing). */
 export function publish(args, env = {}, limitMs = 300_000) {
   return new Promise((resolve) => {
     const child = spawn(process.execPath, [path.join(root, 'cli/conecurl.mjs'), 'publish', ...args], {
-      cwd: root, env: { ...process.env, CONECURL_PUBLISH_READER: STAND_IN, ...env }, stdio: ['ignore', 'pipe', 'pipe'],
+      cwd: root, env: { ...process.env, ...env }, stdio: ['ignore', 'pipe', 'pipe'],
     });
     let stdout = '';
     let stderr = '';

@@ -12,7 +12,7 @@ import { checkManifest, decodePageText } from '../../web/src/document/format.js'
 import { pdfOutline, pdfPageText } from '../../web/src/document/pdf-document.js';
 import { BOOKMARKS, PAGES, PAGE_SIZE, lineAt, makeDocumentPdf } from '../fixtures/document-pdf.mjs';
 import { LINKS, makeLinkPdf } from '../fixtures/publish-pdfs.mjs';
-import { STAND_IN, publish, readJson, root, tempDir } from './publish-run.mjs';
+import { READER, publish, readJson, root, tempDir } from './publish-run.mjs';
 
 const HEIGHT = 400;
 
@@ -62,7 +62,7 @@ test('node: conecurl publish writes every page\'s image, zoom image, thumbnail a
   assert.deepEqual(fs.readFileSync(path.join(book, 'animals.pdf')), fs.readFileSync(path.join(path.dirname(out), 'animals.pdf')));
   assert.equal(manifest.download, 'animals.pdf');
   for (const file of ['conecurl/dist/conecurl-engine.mjs', 'conecurl/dist/conecurl-engine.wasm', 'conecurl/dist/engine-constants.js',
-    `conecurl/${STAND_IN}`, 'conecurl/tests/fixtures/reader-stand-in/reader.css', ...moduleGraph(root, STAND_IN).all.map((f) => `conecurl/${f}`)]) {
+    `conecurl/${READER}`, 'conecurl/web/reader/reader.css', ...moduleGraph(root, READER).all.map((f) => `conecurl/${f}`)]) {
     assert.ok(fs.existsSync(path.join(out, file)), `${file} is in the site`);
   }
   assert.ok(!fs.existsSync(path.join(out, 'conecurl/node_modules')), 'no pdf.js or other package in the site');
@@ -96,7 +96,8 @@ test('node: conecurl publish text files, outline and manifest hold what pdf.js r
   const { bytes, book, manifest } = await documentSite(t);
   checkManifest(manifest, 'book.json');
   const pdfjs = await loadPdfjs();
-  const doc = await pdfjs.getDocument(documentOptions(new Uint8Array(bytes))).promise;
+  // The PDF as a browser's pdf.js reads it (the standard fonts by their metrics: useSystemFonts, its default there).
+  const doc = await pdfjs.getDocument({ ...documentOptions(new Uint8Array(bytes)), useSystemFonts: true }).promise;
   t.after(() => doc.loadingTask.destroy());
   const strip = (entries) => entries.map(({ title, page, children }) => ({ title, page, children: strip(children ?? []) }));
   assert.deepEqual(manifest.outline, await pdfOutline(doc));
@@ -111,7 +112,10 @@ test('node: conecurl publish text files, outline and manifest hold what pdf.js r
     assert.equal(published.text, expected.text);
     assert.match(published.text, new RegExp(PAGES[i].heading.replace(/[.*+?^${}()|[\]\\]/g, '\\$&')));
     assert.deepEqual(published.items.map((item) => [item.start, item.end, item.str]), expected.items.map((item) => [item.start, item.end, item.str]));
-    published.items.forEach((item, k) => assert.deepEqual(item.tx, expected.items[k].tx.map(round), `page ${i + 1} item ${k}`));
+    published.items.forEach((item, k) => {
+      assert.deepEqual(item.tx, expected.items[k].tx.map(round), `page ${i + 1} item ${k}`);
+      assert.deepEqual([item.family, item.ascent, item.descent], [expected.items[k].family, round(expected.items[k].ascent), round(expected.items[k].descent)]);
+    });
     assert.equal(page.alt.startsWith(`Page ${i + 1}: ${PAGES[i].heading}`), true, page.alt);
   }
   assert.equal(manifest.title, 'animals', 'the file name, as the PDF has no Title');
@@ -145,10 +149,13 @@ test('node: conecurl publish index.html holds the reader contract, preloads, Ope
   assert.match(html, /<meta property="og:url" content="https:\/\/example\.com\/b\/">/);
   assert.match(html, /<main id="conecurl-reader" data-document="book\/book\.json">/);
   assert.match(html, /<link rel="preload" href="book\/book\.json" as="fetch" crossorigin>/);
-  assert.match(html, /<link rel="preload" href="book\/pages\/0001\.webp" as="image">/);
-  assert.match(html, new RegExp(`<script type="module" src="conecurl/${STAND_IN}"></script>`));
+  assert.match(html, /<link rel="preload" href="book\/pages\/0001\.webp" as="fetch" crossorigin>/);
+  assert.match(html, /<link rel="preload" href="conecurl\/dist\/conecurl-engine\.wasm" as="fetch" crossorigin>/);
+  assert.match(html, /<link rel="icon" href="book\/thumbs\/0001\.webp">/);
+  assert.match(html, new RegExp(`<script type="module" src="conecurl/${READER}"></script>`));
   const preloaded = [...html.matchAll(/<link rel="modulepreload" href="conecurl\/([^"]+)">/g)].map((m) => m[1]);
-  assert.deepEqual(preloaded, moduleGraph(root, STAND_IN).statics.filter((f) => f !== STAND_IN));
+  const { FIRST_VIEW_MODULES } = await import('../../web/reader/first-view-modules.js');
+  assert.deepEqual(preloaded, [...new Set([...moduleGraph(root, READER).statics, ...FIRST_VIEW_MODULES])].filter((f) => f !== READER).sort());
   for (const file of preloaded) assert.ok(fs.existsSync(path.join(out, 'conecurl', file)), file);
   const images = [...html.matchAll(/<img src="book\/pages\/(\d{4})\.webp" width="(\d+)" height="(\d+)" loading="lazy" alt="([^"]*)">/g)];
   assert.equal(images.length, PAGES.length);
@@ -158,10 +165,10 @@ test('node: conecurl publish index.html holds the reader contract, preloads, Ope
 });
 
 test('node: the module walker follows static and dynamic relative imports, preloads only the static ones, and never follows a package', () => {
-  const { all, statics } = moduleGraph(root, STAND_IN);
+  const { all, statics } = moduleGraph(root, READER);
   assert.ok(statics.includes('web/src/book/flipbook.js') && statics.includes('dist/engine-constants.js'));
   assert.ok(all.includes('web/src/document/published-document.js'), 'a module imported with import() is copied');
   assert.ok(!statics.includes('web/src/document/published-document.js'), '… but not preloaded');
-  assert.ok(all.every((f) => f.startsWith('web/src/') || f.startsWith('dist/') || f === STAND_IN), all.join(', '));
+  assert.ok(all.every((f) => f.startsWith('web/src/') || f.startsWith('dist/') || f === READER), all.join(', '));
   assert.ok(!all.some((f) => /pdfjs|react|vue/.test(f.split('/').pop())), 'no pdf.js, React or Vue wrapper');
 });
