@@ -46,6 +46,7 @@ async function openSite(page, hash = '') {
 
 test('browser: the published site opens its book filling the screen, turns, and never asks for pdf.js', async ({ page }) => {
   const requests = await openSite(page);
+  const beforeReady = [...requests];  // until the first spread was drawn
   const state = await page.evaluate(() => ({
     count: window.book.pageCount, label: window.book.options.label, title: document.title,
     box: (({ width, height }) => ({ width, height }))(document.getElementById('conecurl-reader').getBoundingClientRect()),
@@ -69,6 +70,19 @@ test('browser: the published site opens its book filling the screen, turns, and 
   // The page images are the reading-size ones; the modules come from the site's own conecurl/ folder.
   expect(requests.some((url) => url.includes('/book/pages/0001.'))).toBe(true);
   expect(requests.filter((url) => url.includes('/node_modules/'))).toEqual([]);
+  // What index.html preloads is what the book asks for, each fetched once: the modules of the first
+  // view (web/reader/first-view-modules.js, which must not go stale), the manifest, the engine, page 1.
+  const { FIRST_VIEW_MODULES } = await import('../../web/reader/first-view-modules.js');
+  const site = siteUrl(siteName());
+  const fetched = (file) => beforeReady.filter((url) => new URL(url).pathname === `${site}${file}`).length;
+  for (const file of FIRST_VIEW_MODULES) expect(fetched(`conecurl/${file}`), file).toBe(1);
+  for (const file of ['book/book.json', 'book/pages/0001.webp', 'conecurl/dist/conecurl-engine.wasm']) expect(fetched(file), file).toBe(1);
+  const html = await (await page.request.get(`${site}index.html`)).text();
+  const preloaded = new Set([...html.matchAll(/<link rel="modulepreload" href="([^"]+)">/g)].map((m) => m[1]));
+  const modulesBeforeReady = beforeReady.filter((url) => url.endsWith('.js') && new URL(url).pathname.startsWith(`${site}conecurl/web/src/`))
+    .map((url) => new URL(url).pathname.slice(site.length));
+  // Only the text index comes later: it reads the pages' text in idle time once the book is open.
+  expect(modulesBeforeReady.filter((file) => !preloaded.has(file) && file !== 'conecurl/web/src/document/text-index.js')).toEqual([]);
   await page.screenshot({ path: test.info().outputPath('published-site.png') });
 });
 
