@@ -10,7 +10,9 @@ export const MANIFEST = 'book.json';
 /** The folders of a published document, by what they hold. */
 export const FOLDERS = { pages: 'pages', zoom: 'zoom', thumbs: 'thumbs', text: 'text' };
 /** Characters of a page's text its `alt` carries in the manifest (the whole text is in its text file). */
-export const ALT_CHARS = 200;
+export const ALT_CHARS = 100;
+/** A link's rectangle in the manifest, in fractions of its page to this step (a tenth of a pixel on a 1000 px page). */
+const LINK_STEP = 1e4;
 
 /** The path, inside the folder, of page `index`'s file of `kind` (a FOLDERS key) with extension `ext`. */
 export function pagePath(kind, index, ext) {
@@ -112,7 +114,9 @@ export function altText(index, text, max = Infinity) {
  * @param {{ title?: string, lang?: string, pages: object[], outline?: object[], download?: string|null }} parts
  */
 export function makeManifest({ title = '', lang = '', pages, outline = [], download = null }) {
-  return { format: FORMAT, version: FORMAT_VERSION, title, lang, pageCount: pages.length, pages, outline, download };
+  const step = (v) => Math.round(v * LINK_STEP) / LINK_STEP;
+  const rounded = pages.map((page) => (page.links ? { ...page, links: page.links.map((link) => ({ ...link, rect: link.rect.map(step) })) } : page));
+  return { format: FORMAT, version: FORMAT_VERSION, title, lang, pageCount: pages.length, pages: rounded, outline, download };
 }
 
 const isRect = (r) => Array.isArray(r) && r.length === 4 && r.every((v) => Number.isFinite(v) && v >= 0 && v <= 1);
