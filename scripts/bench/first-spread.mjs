@@ -112,12 +112,13 @@ async function measure(url, readerModule, { timeline = false } = {}) {
     });
     cdp.on('Network.loadingFinished', (e) => { const request = requests.get(e.requestId); if (request) request.done = e.timestamp; });
     await page.goto(url, { waitUntil: 'commit' });
+    // The reader page marks its first spread on screen (conecurl-first-spread): the open pages landed, two frames on.
     const { ms, origin } = await page.evaluate(async (module) => {
       const book = await (await import(module)).book;
       if (!book) throw new Error(document.body.innerText);
-      await book.whenIdle();
-      await new Promise((resolve) => requestAnimationFrame(() => resolve()));
-      return { ms: performance.now(), origin: performance.timeOrigin };
+      const mark = () => performance.getEntriesByName('conecurl-first-spread')[0];
+      while (!mark()) await new Promise((resolve) => requestAnimationFrame(resolve));
+      return { ms: mark().startTime, origin: performance.timeOrigin };
     }, readerModule);
     const until = start + ms / 1000;
     const seen = received.filter(([t]) => t <= until).reduce((sum, [, n]) => sum + n, 0);

@@ -43,7 +43,7 @@ function reportGpu() {
   };
 }
 
-test('browser: a book asks for the pages of its first view (the open spread and its neighbours) before it makes its WebGL context, and decodes each once (order and counts of calls)', async ({ page }) => {
+test('browser: a book asks for the open spread before it makes its WebGL context and for its neighbours once the spread has landed, and fetches and decodes each once (order and counts of calls)', async ({ page }) => {
   await page.addInitScript(logFirstView);
   await openReady(page, FIXTURE);
   const result = await page.evaluate(async () => {
@@ -51,10 +51,12 @@ test('browser: a book asks for the pages of its first view (the open spread and 
     await window.openBook({ pages, display: 'double', startPage: 4 });
     const log = window.__log;
     const firstContext = log.indexOf('context');
+    const fetched = log.filter((entry) => entry.startsWith('fetch')).map((entry) => Number(entry.split(' ')[1]));
     return {
       open: window.book.openPages,
       resident: window.book.residentPages,
       fetchedBefore: log.slice(0, firstContext).map((entry) => Number(entry.split(' ')[1])).sort((a, b) => a - b),
+      firstFetched: fetched.slice(0, 2).sort((a, b) => a - b),
       fetches: log.filter((entry) => entry.startsWith('fetch')).length,
       decodes: window.__decodes,
     };
@@ -63,7 +65,8 @@ test('browser: a book asks for the pages of its first view (the open spread and 
     + `${result.fetches} fetches, ${result.decodes} decodes`);
   expect(result.open).toEqual([3, 4]);
   expect(result.resident.length).toBeGreaterThan(2);
-  expect(result.fetchedBefore).toEqual(result.resident);  // every page the first view loads, asked for first
+  expect(result.fetchedBefore).toEqual(result.open);  // the open spread asked for first, before the context
+  expect(result.firstFetched).toEqual(result.open);   // and nothing else before it: its neighbours wait for it
   expect(result.fetches).toBe(result.resident.length);    // each once: nothing fetched again once the surface is made
   expect(result.decodes).toBe(result.resident.length);    // and decoded once, at the size the surface draws it
 });

@@ -1,5 +1,6 @@
 // The opening pages, asked for before the book's surface exists: making it (a WebGL context) is the longest
-// step of a first view, and their fetch and off-thread decode run meanwhile. PageStore takes them up.
+// step of a first view, and their fetch and off-thread decode run meanwhile. PageStore takes them up, and
+// their neighbours wait for them (FirstView).
 import { loadPage } from './page-loader.js';
 import { MAX_IMAGE_SIZE, naturalSize, uploadSizeFor } from './texture-upload.js';
 
@@ -10,6 +11,31 @@ const SAME_SIZE = 0.99;  // within 1 % of the size wanted is that size (as textu
 const isEncoded = (source) => typeof source === 'string' || (typeof Blob !== 'undefined' && source instanceof Blob);
 
 const closeOwned = ({ image, owned }) => { if (owned) image.close?.(); };
+
+/**
+ * The first view's pages on screen load alone; their neighbours once those have landed (loaded or
+ * failed), so that on a slow network the first spread shares its bandwidth with no page it does not show.
+ */
+export class FirstView {
+  constructor() {
+    this._pages = null;  // the first view's pages on screen while they load; null before and after
+    this._landed = false;
+  }
+
+  /** The store's update: `onScreen` its pages on screen, `stateOf(page)` where each stands. */
+  update(onScreen, stateOf) {
+    if (this._landed) return;
+    this._pages ??= new Set(onScreen);
+    this._landed = ![...this._pages].some((page) => stateOf(page) === 'idle' || stateOf(page) === 'loading');
+    if (this._landed) this._pages = null;
+  }
+
+  /** Whether `page` may load now. */
+  admits(page) { return !this._pages || this._pages.has(page); }
+
+  /** Whether `page` is one of the first view's, still waited for. */
+  holds(page) { return Boolean(this._pages?.has(page)); }
+}
 
 export class EarlyLoads {
   /** @param {AbortSignal} signal  the store's: fetches stop when the book is destroyed */

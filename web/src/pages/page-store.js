@@ -2,8 +2,8 @@
 // loaded or failed (and why), the images kept for the pages near the open spread (a bounded cache, the
 // least recently wanted let go first), their sizes for the screen, and sharper images when zoomed in.
 import { loadPage, pageFailure } from './page-loader.js';
-import { EarlyLoads } from './early-loads.js';
-import { PageCache, wantedPages } from './page-residency.js';
+import { EarlyLoads, FirstView } from './early-loads.js';
+import { PageCache } from './page-residency.js';
 import { uploadSizeFor } from './texture-upload.js';
 import { directionFacts } from '../engine/direction.js';
 import { isZoomed, openPages, restingRect, splicePageMap } from '../engine/layout.js';
@@ -34,6 +34,7 @@ export class PageStore {
     this._abort = new AbortController();  // fetches still running when the book is destroyed stop
     this._early = new EarlyLoads(this._abort.signal);  // the opening pages, asked for before the surface exists
     this._reloads = new Map();  // page entry -> its reload running now (by entry: indices move as pages are spliced)
+    this._firstView = new FirstView();  // its pages on screen load alone, their neighbours after
     this._closed = false;
   }
 
@@ -54,8 +55,10 @@ export class PageStore {
    */
   update() {
     if (this._closed) return;
-    const wanted = this._cache.want(this._viewAt(this._hooks.surface().pagesOnScreen(), this._hooks.openPages()));
-    for (const page of wanted) if (this._cache.stateOf(page) === 'idle') this._load(page);
+    const onScreen = this._hooks.surface().pagesOnScreen();
+    const wanted = this._cache.want(this._viewAt(onScreen, this._hooks.openPages()));
+    this._firstView.update(onScreen, (page) => this._cache.stateOf(page));
+    for (const page of wanted) if (this._cache.stateOf(page) === 'idle' && this._firstView.admits(page)) this._load(page);
     this._early.drop();  // asked for early and not wanted now
     this._releaseExcess();
   }
@@ -71,8 +74,7 @@ export class PageStore {
     const open = openPages(position, this.entries.length, display);
     const { direction, pageAspect } = this._settings;
     const cover = this._coverOf(restingRect(size, { display, direction, pageAspect }), display, 1);
-    const pages = wantedPages({ ...this._viewAt(open, open), capacity: this._cache.capacity });
-    this._early.start(pages.map((page) => [page, this.entries[page]]), cover);
+    this._early.start(open.map((page) => [page, this.entries[page]]), cover);  // the first view's pages: their neighbours after
   }
 
   /** A page's size on screen in CSS px at zoom 1 (restingRect is the zoomed picture of both pages). */
@@ -265,6 +267,7 @@ export class PageStore {
       this._cache.setState(index, 'failed', failure);
       this._hooks.emit('pageerror', { index, ...failure });
     } finally {
+      if (this._firstView.holds(index)) this.update();  // its neighbours once it landed, asked before this load ends
       const progress = this._cache.endLoad();
       if (!this._closed) this._hooks.emit('progress', progress);
     }
