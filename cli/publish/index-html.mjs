@@ -2,8 +2,9 @@
 // its modules preloaded so they load in one round trip, link-preview tags, and a <noscript> copy of the
 // pages (images and text) for readers and crawlers without JavaScript. Every value from the PDF is escaped.
 
-/** Characters of a page's text in the noscript copy: enough to index a page and keep a 300-page book's HTML small. */
+/** Characters of a page's text in the noscript copy at most, and of all pages' together: the HTML stays small. */
 export const NOSCRIPT_CHARS = 400;
+export const NOSCRIPT_TOTAL = 24000;
 
 const ENTITIES = { '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' };
 /** Text made safe for HTML content and double- or single-quoted attributes. */
@@ -52,15 +53,16 @@ export function indexHtml({ title, lang, manifest, firstImage, thumb, cover, url
     '<noscript>',
     `<h1>${escapeHtml(title)}</h1>`,
   ];
-  // Each page's text is cut to NOSCRIPT_CHARS here (its whole text is in its text file), so that the
-  // HTML of a long book stays small.
+  // Each page's text is cut to NOSCRIPT_CHARS, and to its share of NOSCRIPT_TOTAL (at least 80), here
+  // (its whole text is in its text file): the HTML comes before the first spread, and a long book's stays small.
+  const share = Math.min(NOSCRIPT_CHARS, Math.max(80, Math.floor(NOSCRIPT_TOTAL / Math.max(1, pages.length))));
   pages.forEach((page, i) => {
     if (page.failed) {
       lines.push(`<section><p>Page ${i + 1} could not be published.</p></section>`);
       return;
     }
     lines.push(`<section><img src="${href(page.src)}" width="${page.imageWidth}" height="${page.imageHeight}" loading="lazy" alt="${escapeHtml(page.alt)}">`
-      + (page.text.trim() ? `<p>${escapeHtml(cut(page.text, NOSCRIPT_CHARS))}</p>` : '') + '</section>');
+      + (page.text.trim() ? `<p>${escapeHtml(cut(page.text, share))}</p>` : '') + '</section>');
   });
   lines.push('</noscript>', '</main>', '</body>', '</html>', '');
   return lines.join('\n');

@@ -112,7 +112,8 @@ async function publish(options) {
       pages.push({
         width: result.width, height: result.height, src: pagePath('pages', index, ext),
         ...(options.zoom > 0 ? { zoomSrc: pagePath('zoom', index, ext) } : {}),
-        thumbSrc: pagePath('thumbs', index, ext), text, alt: altText(index, result.text, ALT_CHARS),
+        // No alt: the reader takes it from the page's text file (most readers read the text layer instead).
+        thumbSrc: pagePath('thumbs', index, ext), text,
         links: remapLinks(result.links, numbers),
       });
     }
@@ -125,7 +126,8 @@ async function publish(options) {
       title, lang, manifest: `${BOOK}/${MANIFEST}`, cover: `${BOOK}/${COVER}`, url: options.url, runtime: site, prefix: RUNTIME,
       firstImage: pages[0].src ? `${BOOK}/${pages[0].src}` : null, thumb: pages[0].thumbSrc ? `${BOOK}/${pages[0].thumbSrc}` : null,
       pages: pages.map((page, i) => (page.failed ? page : {
-        src: `${BOOK}/${page.src}`, imageWidth: results[i].imageWidth, imageHeight: results[i].imageHeight, alt: page.alt, text: results[i].text,
+        src: `${BOOK}/${page.src}`, imageWidth: results[i].imageWidth, imageHeight: results[i].imageHeight,
+        alt: altText(i, results[i].text, ALT_CHARS), text: results[i].text,
       })),
     });
     fs.writeFileSync(path.join(options.out, 'index.html'), html);

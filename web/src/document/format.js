@@ -9,7 +9,7 @@ export const FORMAT_VERSION = 1;
 export const MANIFEST = 'book.json';
 /** The folders of a published document, by what they hold. */
 export const FOLDERS = { pages: 'pages', zoom: 'zoom', thumbs: 'thumbs', text: 'text' };
-/** Characters of a page's text its `alt` carries in the manifest (the whole text is in its text file). */
+/** Characters of a page's text in an `alt` made from it (the noscript copy's images; the whole text is in its text file). */
 export const ALT_CHARS = 100;
 /** A link's rectangle in the manifest, in fractions of its page to this step (a tenth of a pixel on a 1000 px page). */
 const LINK_STEP = 1e4;
@@ -109,7 +109,7 @@ export function altText(index, text, max = Infinity) {
 
 /**
  * The manifest of a published document. `pages[i]`: { width, height (page units), src, zoomSrc?,
- * thumbSrc?, text?, alt, links? ([{ rect, href } | { rect, page }]) } with paths relative to the
+ * thumbSrc?, text?, alt? (else made from the text once read), links? ([{ rect, href } | { rect, page }]) } with paths relative to the
  * manifest, or { width, height, failed: 'why' } for a page that could not be drawn.
  * @param {{ title?: string, lang?: string, pages: object[], outline?: object[], download?: string|null }} parts
  */

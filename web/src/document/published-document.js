@@ -2,7 +2,7 @@
 // own pipeline): its pages are images, and its text, outline and links come from the files beside them
 // (format.js), read with fetch. No pdf.js: search, the text layer and outline() read the same records
 // as for a PDF opened at run time.
-import { MANIFEST, checkManifest, decodePageText } from './format.js';
+import { MANIFEST, altText, checkManifest, decodePageText } from './format.js';
 
 const copyOutline = (entries) => entries.map(({ title, page, children }) => ({ title, page, children: copyOutline(children ?? []) }));
 
@@ -36,7 +36,7 @@ export async function openPublished(url) {
   const at = (path) => new URL(path, manifestUrl).href;
   const pages = manifest.pages.map((page, index) => {
     if (page.failed !== undefined) return { src: missingPage(index, page.failed), alt: `Page ${index + 1}` };
-    const entry = { src: at(page.src), alt: page.alt ?? `Page ${index + 1}` };
+    const entry = { src: at(page.src), alt: page.alt ?? `Page ${index + 1}` };  // without one, from the page's text once read
     if (page.zoomSrc) entry.zoomSrc = at(page.zoomSrc);
     if (page.thumbSrc) entry.thumbSrc = at(page.thumbSrc);
     if (page.links?.length) entry.links = page.links.map((link) => ({ ...link }));
@@ -56,7 +56,11 @@ export async function openPublished(url) {
       if (!texts.has(index)) {
         const file = manifest.pages[index]?.text;
         texts.set(index, file
-          ? fetchJson(at(file), 'the page text').then((json) => decodePageText(json, at(file)))
+          ? fetchJson(at(file), 'the page text').then((json) => {
+            const record = decodePageText(json, at(file));
+            if (manifest.pages[index].alt === undefined) pages[index].alt = altText(index, record.text);
+            return record;
+          })
           : Promise.resolve({ text: '', items: [], width: manifest.pages[index]?.width ?? 1, height: manifest.pages[index]?.height ?? 1 }));
       }
       return texts.get(index);
