@@ -111,14 +111,24 @@ async function measure(url, readerModule, { timeline = false } = {}) {
       if (request) request.bytes += e.encodedDataLength;
     });
     cdp.on('Network.loadingFinished', (e) => { const request = requests.get(e.requestId); if (request) request.done = e.timestamp; });
+    await page.addInitScript(() => {
+      const upload = WebGL2RenderingContext.prototype.texImage2D;
+      WebGL2RenderingContext.prototype.texImage2D = function pageUpload(...args) {
+        const source = args.length === 6 ? args[5] : null;
+        if (window.__firstSpread === undefined && !window.__uploaded && source && source.width >= 256) {
+          window.__uploaded = true;
+          requestAnimationFrame(() => requestAnimationFrame(() => { window.__firstSpread = performance.now(); }));
+        }
+        return upload.apply(this, args);
+      };
+    });
     await page.goto(url, { waitUntil: 'commit' });
-    // The reader page marks its first spread on screen (conecurl-first-spread): the open pages landed, two frames on.
+    // The first spread on screen: two frames after the open page's image went to the GPU (the engine hands a
+    // page to WebGL whole, texImage2D of an image; on the phone one page is open). Both roads draw with it.
     const { ms, origin } = await page.evaluate(async (module) => {
-      const book = await (await import(module)).book;
-      if (!book) throw new Error(document.body.innerText);
-      const mark = () => performance.getEntriesByName('conecurl-first-spread')[0];
-      while (!mark()) await new Promise((resolve) => requestAnimationFrame(resolve));
-      return { ms: mark().startTime, origin: performance.timeOrigin };
+      await (await import(module)).book;
+      while (window.__firstSpread === undefined) await new Promise((resolve) => requestAnimationFrame(resolve));
+      return { ms: window.__firstSpread, origin: performance.timeOrigin };
     }, readerModule);
     const until = start + ms / 1000;
     const seen = received.filter(([t]) => t <= until).reduce((sum, [, n]) => sum + n, 0);

@@ -20,16 +20,6 @@ function showProblem(text) {
   main.replaceChildren(message);
 }
 
-// The moment the first spread is on screen, as a performance mark (`conecurl-first-spread`) a site's own
-// measurement (PerformanceObserver) and the benchmark read: once the open pages have landed, two frames on.
-let marked = false;
-function markFirstSpread(event) {
-  const book = event.target;
-  if (marked || !book.openPages.every((page) => ['loaded', 'failed'].includes(book.pageState(page).state))) return;
-  marked = true;
-  requestAnimationFrame(() => requestAnimationFrame(() => performance.mark('conecurl-first-spread')));
-}
-
 async function open() {
   const published = main.dataset.document;
   const file = published ? null : fileFromHash();
@@ -42,7 +32,7 @@ async function open() {
   const source = published ? { document: published } : { pdf: file };
   try {
     if (file) document.title = decodeURIComponent(new URL(file).pathname.split('/').pop() || document.title);
-    return await Flipbook.create(main, { ...source, controls: true, hash: Boolean(published), on: { progress: markFirstSpread } });
+    return await Flipbook.create(main, { ...source, controls: true, hash: Boolean(published) });
   } catch (error) {
     if (error?.fallback) return error.fallback;  // no WebGL2: the pages still show, as still pages
     showProblem(`This book could not be opened. ${error?.message ?? error}`);
