@@ -7,7 +7,7 @@ import { BookEvents } from './book-events.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { BookTurns } from './book-turns.js';
 import {
-  attachBookInput, followSurface, loadOptionalParts, makeHtmlPages, makeLinkLayer, makeLivePages,
+  attachBookInput, followSurface, loadFirstView, loadOptionalParts, makeHtmlPages, makeLinkLayer, makeLivePages,
   makePageStore, makeZoom, openingPageOf, prefetchOpening, startCompanions, watchBookSize,
 } from './book-wiring.js';
 import { attachViewer, makeDocumentApi } from '../document/document-wiring.js';
@@ -234,7 +234,7 @@ export class BookController extends EventTarget {
     const companions = startCompanions(this, this._port, companionModules);  // page memory, autoplay, the page sound
     this._sound = companions.sound;
     this._stopCompanions = companions.stop;
-    await this.whenIdle();
+    await loadFirstView(this._port);  // its pages on screen, drawn, then their neighbours
     this._emit('ready', { page: this.page });
     this._doc.indexInBackground();  // a PDF's text, for search, in idle time from now on
   }

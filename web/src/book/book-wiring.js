@@ -249,6 +249,23 @@ export function prefetchOpening(book, display, opening) {
 }
 
 /**
+ * The first view: its pages on screen load alone and are drawn, then their neighbours load (the store
+ * held them back: on a slow network the first spread shares its bandwidth with no page it does not
+ * show). Resolves once all have loaded or failed.
+ * @param {BookPort} book
+ */
+export async function loadFirstView(book) {
+  await book.store().whenIdle();
+  try {
+    book.surface().drawNow?.();  // the first spread on screen now, before anything else is fetched
+  } catch {
+    // A context lost meanwhile draws once it is back; the neighbours load all the same.
+  }
+  book.store().releaseFirstView();
+  await book.store().whenIdle();
+}
+
+/**
  * The optional parts the options ask for, all imported at once: page memory, autoplay and the page sound
  * (`companions`), the edge marks (`edgeMarks`) and a document's text layer (`text`, under `before`).
  * Each a promise; a failure is thrown where it is awaited.

@@ -1,6 +1,6 @@
 // The opening pages, asked for before the book's surface exists: making it (a WebGL context) is the longest
 // step of a first view, and their fetch and off-thread decode run meanwhile. PageStore takes them up, and
-// their neighbours wait for them (FirstView).
+// their neighbours wait until they are drawn (FirstView).
 import { loadPage } from './page-loader.js';
 import { MAX_IMAGE_SIZE, naturalSize, uploadSizeFor } from './texture-upload.js';
 
@@ -13,28 +13,22 @@ const isEncoded = (source) => typeof source === 'string' || (typeof Blob !== 'un
 const closeOwned = ({ image, owned }) => { if (owned) image.close?.(); };
 
 /**
- * The first view's pages on screen load alone; their neighbours once those have landed (loaded or
- * failed), so that on a slow network the first spread shares its bandwidth with no page it does not show.
+ * The first view's pages on screen load alone; their neighbours once the book has drawn them and lets
+ * go (release()), so that on a slow network the first spread shares its bandwidth with no page it does not show.
  */
 export class FirstView {
   constructor() {
-    this._pages = null;  // the first view's pages on screen while they load; null before and after
-    this._landed = false;
+    this._pages = null;  // the first view's pages on screen, from the store's first update
+    this._released = false;
   }
 
-  /** The store's update: `onScreen` its pages on screen, `stateOf(page)` where each stands. */
-  update(onScreen, stateOf) {
-    if (this._landed) return;
-    this._pages ??= new Set(onScreen);
-    this._landed = ![...this._pages].some((page) => stateOf(page) === 'idle' || stateOf(page) === 'loading');
-    if (this._landed) this._pages = null;
-  }
+  /** The store's update: `onScreen` its pages on screen. */
+  update(onScreen) { if (!this._released) this._pages ??= new Set(onScreen); }
 
   /** Whether `page` may load now. */
-  admits(page) { return !this._pages || this._pages.has(page); }
+  admits(page) { return this._released || !this._pages || this._pages.has(page); }
 
-  /** Whether `page` is one of the first view's, still waited for. */
-  holds(page) { return Boolean(this._pages?.has(page)); }
+  release() { this._released = true; }
 }
 
 export class EarlyLoads {

@@ -48,16 +48,16 @@ export class PageStore {
   get progress() { return this._cache.progress; }
   /** Resolves once no page is loading. */
   whenIdle() { return this._cache.whenIdle(); }
+  /** The first view is drawn: the pages near it load from now on (until now only its pages on screen did). */
+  releaseFirstView() { this._firstView.release(); this.update(); }
 
-  /**
-   * Loads the pages wanted now (on screen, then the open spread's neighbours within loadWindow) and
-   * lets go of the least recently wanted beyond the cache's capacity, which does not grow with the book.
-   */
+  /** Loads the pages wanted now (on screen, then the open spread's neighbours within loadWindow; only those on
+   * screen until the first view is drawn) and lets go of the least recently wanted beyond the cache's capacity. */
   update() {
     if (this._closed) return;
     const onScreen = this._hooks.surface().pagesOnScreen();
     const wanted = this._cache.want(this._viewAt(onScreen, this._hooks.openPages()));
-    this._firstView.update(onScreen, (page) => this._cache.stateOf(page));
+    this._firstView.update(onScreen);
     for (const page of wanted) if (this._cache.stateOf(page) === 'idle' && this._firstView.admits(page)) this._load(page);
     this._early.drop();  // asked for early and not wanted now
     this._releaseExcess();
@@ -267,7 +267,6 @@ export class PageStore {
       this._cache.setState(index, 'failed', failure);
       this._hooks.emit('pageerror', { index, ...failure });
     } finally {
-      if (this._firstView.holds(index)) this.update();  // its neighbours once it landed, asked before this load ends
       const progress = this._cache.endLoad();
       if (!this._closed) this._hooks.emit('progress', progress);
     }
