@@ -38,7 +38,7 @@ export function indexHtml({ title, lang, manifest, firstImage, thumb, cover, url
     ...(url ? [`<meta property="og:url" content="${escapeHtml(url)}">`] : []),
     '<meta name="twitter:card" content="summary_large_image">',
     `<link rel="stylesheet" href="${href(`${prefix}/${runtime.css}`)}">`,
-    ...(thumb ? [`<link rel="icon" href="${href(thumb)}">`] : []),
+    '<link rel="icon" href="data:,">',  // none: a cover thumbnail here would come before the first spread
     // Everything the first spread needs, asked for at once: the modules (those the book imports on its way
     // too), the manifest, the engine's binary and the first page; fetched as the book fetches them (CORS
     // mode, credentials of the same origin), so the book's own requests are answered by these.

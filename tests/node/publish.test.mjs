@@ -151,7 +151,7 @@ test('node: conecurl publish index.html holds the reader contract, preloads, Ope
   assert.match(html, /<link rel="preload" href="book\/book\.json" as="fetch" crossorigin>/);
   assert.match(html, /<link rel="preload" href="book\/pages\/0001\.webp" as="fetch" crossorigin>/);
   assert.match(html, /<link rel="preload" href="conecurl\/dist\/conecurl-engine\.wasm" as="fetch" crossorigin>/);
-  assert.match(html, /<link rel="icon" href="book\/thumbs\/0001\.webp">/);
+  assert.match(html, /<link rel="icon" href="data:,">/);
   assert.match(html, new RegExp(`<script type="module" src="conecurl/${READER}"></script>`));
   const preloaded = [...html.matchAll(/<link rel="modulepreload" href="conecurl\/([^"]+)">/g)].map((m) => m[1]);
   const { FIRST_VIEW_MODULES } = await import('../../web/reader/first-view-modules.js');
