@@ -96,11 +96,12 @@ async function measure(url, readerModule, { timeline = false } = {}) {
       { offline: false, latency, downloadThroughput: (kbps * 1000) / 8, uploadThroughput: (kbps * 1000) / 8 / 2 });
     await cdp.send('Emulation.setCPUThrottlingRate', { rate: cpu });
     const received = [];  // [monotonic s, encoded bytes]
-    let start = null;
+    let start = null;      // the document's request, in CDP's monotonic seconds...
+    let startWall = null;  // ...and in epoch seconds: the page's clock (timeOrigin) is mapped through it
     const urls = [];
     const requests = new Map();  // id -> { url, sent, done, bytes } in monotonic s
     cdp.on('Network.requestWillBeSent', (e) => {
-      if (start === null && e.type === 'Document') start = e.timestamp;
+      if (start === null && e.type === 'Document') [start, startWall] = [e.timestamp, e.wallTime];
       urls.push(e.request.url);
       requests.set(e.requestId, { url: e.request.url, sent: e.timestamp, done: null, bytes: 0 });
     });
@@ -115,6 +116,7 @@ async function measure(url, readerModule, { timeline = false } = {}) {
       const upload = WebGL2RenderingContext.prototype.texImage2D;
       WebGL2RenderingContext.prototype.texImage2D = function pageUpload(...args) {
         const source = args.length === 6 ? args[5] : null;
+        (window.__uploads ??= []).push([Math.round(performance.now()), source?.width ?? args[3]]);
         if (window.__firstSpread === undefined && !window.__uploaded && source && source.width >= 256) {
           window.__uploaded = true;
           requestAnimationFrame(() => requestAnimationFrame(() => { window.__firstSpread = performance.now(); }));
@@ -125,12 +127,12 @@ async function measure(url, readerModule, { timeline = false } = {}) {
     await page.goto(url, { waitUntil: 'commit' });
     // The first spread on screen: two frames after the open page's image went to the GPU (the engine hands a
     // page to WebGL whole, texImage2D of an image; on the phone one page is open). Both roads draw with it.
-    const { ms, origin } = await page.evaluate(async (module) => {
+    const { ms, origin, uploads } = await page.evaluate(async (module) => {
       await (await import(module)).book;
       while (window.__firstSpread === undefined) await new Promise((resolve) => requestAnimationFrame(resolve));
-      return { ms: window.__firstSpread, origin: performance.timeOrigin };
+      return { ms: window.__firstSpread, origin: performance.timeOrigin, uploads: window.__uploads };
     }, readerModule);
-    const until = start + ms / 1000;
+    const until = start + ((origin + ms) / 1000 - startWall);  // the first spread, in CDP's clock
     const seen = received.filter(([t]) => t <= until).reduce((sum, [, n]) => sum + n, 0);
     // A request whose bytes the page's session never saw (a dedicated worker's) is counted as the server sent it.
     const pathOf = (u) => { const parsed = new URL(u); return `${parsed.pathname}${parsed.search}`; };
@@ -140,10 +142,12 @@ async function measure(url, readerModule, { timeline = false } = {}) {
     if (timeline) {
       const rows = [...requests.values()].sort((a, b) => a.sent - b.sent);
       for (const r of rows.filter((row) => row.bytes > 0 || row.done !== null)) {
-        const at = (t) => (t === null ? '   -  ' : `${Math.round((t - start) * 1000)}`.padStart(6));
+        const shift = (startWall * 1000 - origin) / 1000;  // CDP's times on the page's clock (from its navigation start)
+        const at = (t) => (t === null ? '   -  ' : `${Math.round((t - start + shift) * 1000)}`.padStart(6));
         console.log(`  ${at(r.sent)} ${at(r.done)} ms ${`${(r.bytes / 1024).toFixed(1)}`.padStart(7)} KB  ${new URL(r.url).pathname}`);
       }
       for (const entry of unseen) console.log(`  (worker) ${`${(entry.bytes / 1024).toFixed(1)}`.padStart(7)} KB  ${entry.url}`);
+      console.log(`  textures (ms, width): ${uploads.map(([t, w]) => `${t}:${w}`).join(' ')}`);
       console.log(`  first spread at ${Math.round(ms)} ms`);
     }
     return { ms: Math.round(ms), bytes: seen + workerBytes, workerBytes, pdfjs: urls.some((u) => /pdfjs|pdf\.worker/.test(u)) };
