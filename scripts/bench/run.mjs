@@ -8,6 +8,7 @@
 // Usage: node scripts/bench/run.mjs [--reps 3] [--configs double-20,single-1000,phone-20] [--libs conecurl,floor-webgl]
 //        [--duration 600] [--turns 10] [--port 8095] [--out bench-results] [--baseline ../conecurl-before] [--publish]
 //        [--skip-publish-rate] (leaves out publish-rate.mjs, the pages per second of `conecurl publish`, run last)
+//        [--skip-first-spread] (leaves out first-spread.mjs: a published PDF's first spread on a throttled phone against pdf.js's)
 import { spawn, spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import http from 'node:http';
@@ -39,7 +40,7 @@ const CONFIGS = [
 function parseArgs(argv) {
   const options = {
     reps: 3, configs: CONFIGS.map((c) => c.id), libs: [...LIBRARIES], duration: 600, turns: 10, idleMs: 2000,
-    port: Number(process.env.CONECURL_BENCH_PORT) || 8095, out: 'bench-results', publish: false, baseline: null, publishRate: true,
+    port: Number(process.env.CONECURL_BENCH_PORT) || 8095, out: 'bench-results', publish: false, baseline: null, publishRate: true, firstSpread: true,
   };
   for (let i = 0; i < argv.length; i++) {
     const name = argv[i];
@@ -59,6 +60,7 @@ function parseArgs(argv) {
     else if (name === '--out') options.out = value();
     else if (name === '--publish') options.publish = true;
     else if (name === '--skip-publish-rate') options.publishRate = false;
+    else if (name === '--skip-first-spread') options.firstSpread = false;
     else if (name === '--baseline') options.baseline = path.resolve(value());
     else if (name === '--configs' || name === '--libs') {
       const list = value().split(',');
@@ -235,6 +237,16 @@ async function main() {
     // The publish command's rate, in a process of its own (it uses every core, so it runs after the books).
     const rate = spawnSync(process.execPath, [path.join(root, 'scripts/bench/publish-rate.mjs'), '--out', options.out], { stdio: 'inherit' });
     if (rate.status !== 0) process.exitCode = 1;
+  }
+  if (options.firstSpread) {
+    // The reader's first spread on a throttled phone: the PDFs publish-rate.mjs measured (build/bench-pdf/), published and through pdf.js.
+    const pdfs = ['gnuplot.pdf', 'magazine-40.pdf'].map((name) => path.join(root, 'build/bench-pdf', name)).filter((file) => fs.existsSync(file));
+    if (pdfs.length === 0) console.log('bench: no PDF in build/bench-pdf/ for first-spread.mjs (publish-rate.mjs puts them there)');
+    else {
+      const spread = spawnSync(process.execPath, [path.join(root, 'scripts/bench/first-spread.mjs'), '--out', options.out, '--republish',
+        ...pdfs.flatMap((file) => ['--pdf', file])], { stdio: 'inherit' });
+      if (spread.status !== 0) process.exitCode = 1;
+    }
   }
   if (runs.some((r) => r.error)) {
     console.error('bench: some measurements failed (see above)');
