@@ -11,7 +11,7 @@ import path from 'node:path';
 import { chromium } from '@playwright/test';
 import { chromiumLaunchOptions } from '../chromium.mjs';
 import { summarize } from './metrics.mjs';
-import { PHONES, phoneUse } from '../../tests/browser/phone.js';
+import { throttledPhonePage } from './throttled-phone.mjs';
 
 const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
 const arg = (name, fallback) => {
@@ -40,11 +40,7 @@ try {
     for (const lib of rep % 2 ? [...libs].reverse() : libs) {  // order alternated, as the bench does
       const browser = await chromium.launch(chromiumLaunchOptions());
       try {
-        const page = await (await browser.newContext(phoneUse(PHONES['phone-portrait']))).newPage();
-        const cdp = await page.context().newCDPSession(page);
-        await cdp.send('Network.enable');
-        await cdp.send('Network.emulateNetworkConditions',
-          { offline: false, latency, downloadThroughput: (kbps * 1000) / 8, uploadThroughput: (kbps * 1000) / 8 });
+        const { page } = await throttledPhonePage(browser, { latency, kbps });
         const query = new URLSearchParams({ lib, pages: '20', display: 'single', duration: '600', bundles: `/${bundlesOf(lib)}`, images: `/${out}/pages` });
         await page.goto(`http://127.0.0.1:${port}/scripts/bench/harness.html?${query}`);
         const { firstFrameMs } = await page.evaluate(async () => {

@@ -15,7 +15,7 @@ import zlib from 'node:zlib';
 import { chromium } from '@playwright/test';
 import { chromiumLaunchOptions } from '../chromium.mjs';
 import { summarize } from './metrics.mjs';
-import { PHONES, phoneUse } from '../../tests/browser/phone.js';
+import { throttledPhonePage } from './throttled-phone.mjs';
 
 const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
 const args = process.argv.slice(2);
@@ -89,12 +89,7 @@ async function measure(url, readerModule, { timeline = false } = {}) {
   served.length = 0;
   const browser = await chromium.launch(chromiumLaunchOptions());
   try {
-    const page = await (await browser.newContext(phoneUse(PHONES['phone-portrait']))).newPage();
-    const cdp = await page.context().newCDPSession(page);
-    await cdp.send('Network.enable');
-    await cdp.send('Network.emulateNetworkConditions',
-      { offline: false, latency, downloadThroughput: (kbps * 1000) / 8, uploadThroughput: (kbps * 1000) / 8 / 2 });
-    await cdp.send('Emulation.setCPUThrottlingRate', { rate: cpu });
+    const { page, cdp } = await throttledPhonePage(browser, { latency, kbps, upKbps: kbps / 2, cpu });
     const received = [];  // [monotonic s, encoded bytes]
     let start = null;      // the document's request, in CDP's monotonic seconds...
     let startWall = null;  // ...and in epoch seconds: the page's clock (timeOrigin) is mapped through it
