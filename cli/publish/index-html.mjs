@@ -19,11 +19,10 @@ const cut = (text, max) => {
 };
 
 /**
- * index.html for a site: `title`, `lang`, `manifest` (path of book.json), `firstImage` (the first page's
- * reading image), `thumb` (its thumbnail: the page's icon), `cover` (path), `url` (absolute base or null), `runtime` (runtimeFiles(): entry, css,
- * statics, under `prefix`), `pages` ([{ src, width, height, alt, text } | { failed }], paths relative to the site).
+ * index.html for a site: `title`, `lang`, `manifest` (path of book.json), `cover` (path), `url` (absolute
+ * base or null), `runtime` (runtimeFiles(): entry, css, preload, wasm, under `prefix`), `pages` ([{ src, width, height, alt, text } | { failed }], paths relative to the site).
  */
-export function indexHtml({ title, lang, manifest, firstImage, thumb, cover, url, runtime, prefix, pages }) {
+export function indexHtml({ title, lang, manifest, cover, url, runtime, prefix, pages }) {
   const absolute = (relative) => (url ? escapeHtml(new URL(relative, url).href) : href(relative));
   const lines = [
     '<!doctype html>',
@@ -39,13 +38,14 @@ export function indexHtml({ title, lang, manifest, firstImage, thumb, cover, url
     '<meta name="twitter:card" content="summary_large_image">',
     `<link rel="stylesheet" href="${href(`${prefix}/${runtime.css}`)}">`,
     '<link rel="icon" href="data:,">',  // none: a cover thumbnail here would come before the first spread
-    // Everything the first spread needs, asked for at once: the modules (those the book imports on its way
-    // too), the manifest, the engine's binary and the first page; fetched as the book fetches them (CORS
-    // mode, credentials of the same origin), so the book's own requests are answered by these.
+    // What the first spread needs, asked for at once: the modules (those the book imports on its way too),
+    // the manifest and the engine's binary, fetched as the book fetches them (CORS mode, credentials of the
+    // same origin), so the book's own requests are answered by these. Not the first page: Chromium failed
+    // the book's read of a preloaded 600 KB page still arriving over a throttled network ("Failed to
+    // fetch"), and the book asks for it itself as soon as it runs.
     ...runtime.preload.map((file) => `<link rel="modulepreload" href="${href(`${prefix}/${file}`)}">`),
     `<link rel="preload" href="${href(manifest)}" as="fetch" crossorigin>`,
     `<link rel="preload" href="${href(`${prefix}/${runtime.wasm}`)}" as="fetch" crossorigin>`,
-    ...(firstImage ? [`<link rel="preload" href="${href(firstImage)}" as="fetch" crossorigin>`] : []),
     `<script type="module" src="${href(`${prefix}/${runtime.entry}`)}"></script>`,
     '</head>',
     '<body>',

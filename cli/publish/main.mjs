@@ -129,7 +129,6 @@ async function publish(options) {
 
     const html = indexHtml({
       title, lang, manifest: `${BOOK}/${MANIFEST}`, cover: `${BOOK}/${COVER}`, url: options.url, runtime: site, prefix: RUNTIME,
-      firstImage: pages[0].src ? `${BOOK}/${pages[0].src}` : null, thumb: pages[0].thumbSrc ? `${BOOK}/${pages[0].thumbSrc}` : null,
       pages: pages.map((page, i) => (page.failed ? page : {
         src: `${BOOK}/${page.src}`, imageWidth: results[i].imageWidth, imageHeight: results[i].imageHeight,
         alt: altText(i, results[i].text, ALT_CHARS), text: results[i].text,

@@ -76,16 +76,16 @@ function serve(routes) {
     if (COMPRESSED.test(file) && /\bgzip\b/.test(req.headers['accept-encoding'] ?? '')) {
       if (!gzipped.has(file)) gzipped.set(file, zlib.gzipSync(fs.readFileSync(file), { level: 9 }));
       const body = gzipped.get(file);
-      return res.writeHead(200, { 'Content-Type': type, 'Content-Encoding': 'gzip', 'Content-Length': body.length, 'Cache-Control': 'no-store' }).end(body);
+      return res.writeHead(200, { 'Content-Type': type, 'Content-Encoding': 'gzip', 'Content-Length': body.length }).end(body);
     }
-    res.writeHead(200, { 'Content-Type': type, 'Content-Length': size, 'Accept-Ranges': 'bytes', 'Cache-Control': 'no-store' });
+    res.writeHead(200, { 'Content-Type': type, 'Content-Length': size, 'Accept-Ranges': 'bytes' });
     fs.createReadStream(file).pipe(res);
   });
   return new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(server)));
 }
 
 /** One run of one road: ms to the first spread drawn, and the bytes received before it (`timeline`: print each request). */
-async function measure(url, readerModule, { timeline = false } = {}) {
+async function measure(url, { timeline = false } = {}) {
   served.length = 0;
   const browser = await chromium.launch(chromiumLaunchOptions());
   try {
@@ -122,11 +122,14 @@ async function measure(url, readerModule, { timeline = false } = {}) {
     await page.goto(url, { waitUntil: 'commit' });
     // The first spread on screen: two frames after the open page's image went to the GPU (the engine hands a
     // page to WebGL whole, texImage2D of an image; on the phone one page is open). Both roads draw with it.
-    const { ms, origin, uploads } = await page.evaluate(async (module) => {
-      await (await import(module)).book;
-      while (window.__firstSpread === undefined) await new Promise((resolve) => requestAnimationFrame(resolve));
-      return { ms: window.__firstSpread, origin: performance.timeOrigin, uploads: window.__uploads };
-    }, readerModule);
+    // Left to load as a reader's browser loads it (nothing imported from here, which would race its preloads).
+    await page.waitForFunction(() => window.__firstSpread !== undefined || document.querySelector('.conecurl-reader-problem'),
+      null, { timeout: 180_000, polling: 100 });
+    const { ms, origin, uploads, problem } = await page.evaluate(() => ({
+      ms: window.__firstSpread, origin: performance.timeOrigin, uploads: window.__uploads ?? [],
+      problem: document.querySelector('.conecurl-reader-problem')?.textContent ?? null,
+    }));
+    if (problem) throw new Error(`first-spread: the reader said: ${problem}`);
     const until = start + ((origin + ms) / 1000 - startWall);  // the first spread, in CDP's clock
     const seen = received.filter(([t]) => t <= until).reduce((sum, [, n]) => sum + n, 0);
     // A request whose bytes the page's session never saw (a dedicated worker's) is counted as the server sent it.
@@ -163,8 +166,8 @@ for (const pdf of pdfs) {
   const server = await serve([['/sites/', path.join(out, 'first-spread')], ['/pdf/', path.dirname(pdf)], ['/', root]]);
   const base = `http://127.0.0.1:${server.address().port}`;
   const roads = {
-    published: (options) => measure(`${base}/sites/${name}/index.html`, `${base}/sites/${name}/conecurl/web/reader/reader.js`, options),
-    pdfjs: (options) => measure(`${base}/web/reader/reader.html#file=/pdf/${encodeURIComponent(path.basename(pdf))}`, `${base}/web/reader/reader.js`, options),
+    published: (options) => measure(`${base}/sites/${name}/index.html`, options),
+    pdfjs: (options) => measure(`${base}/web/reader/reader.html#file=/pdf/${encodeURIComponent(path.basename(pdf))}`, options),
   };
   const runs = { published: [], pdfjs: [] };
   try {

@@ -32,7 +32,9 @@ async function open() {
   const source = published ? { document: published } : { pdf: file };
   try {
     if (file) document.title = decodeURIComponent(new URL(file).pathname.split('/').pop() || document.title);
-    return await Flipbook.create(main, { ...source, controls: true, hash: Boolean(published) });
+    // A page that fails shows plain paper; the reason goes to the console, for whoever runs the site.
+    const pageerror = ({ detail }) => console.warn(`conecurl reader: page ${detail.index + 1} could not be shown (${detail.reason}): ${detail.error?.message ?? ''}`);
+    return await Flipbook.create(main, { ...source, controls: true, hash: Boolean(published), on: { pageerror } });
   } catch (error) {
     if (error?.fallback) return error.fallback;  // no WebGL2: the pages still show, as still pages
     showProblem(`This book could not be opened. ${error?.message ?? error}`);
