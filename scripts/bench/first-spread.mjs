@@ -132,10 +132,13 @@ async function measure(url, { timeline = false } = {}) {
     if (problem) throw new Error(`first-spread: the reader said: ${problem}`);
     const until = start + ((origin + ms) / 1000 - startWall);  // the first spread, in CDP's clock
     const seen = received.filter(([t]) => t <= until).reduce((sum, [, n]) => sum + n, 0);
-    // A request whose bytes the page's session never saw (a dedicated worker's) is counted as the server sent it.
+    // pdf.js's worker (its script, and the PDF it fetches) is a dedicated worker: its data never reaches the
+    // page's session. Its requests made before the first spread are counted whole, as the server sent them.
+    // (Any other request's bytes are the session's, received before the first spread: in flight, in part.)
     const pathOf = (u) => { const parsed = new URL(u); return `${parsed.pathname}${parsed.search}`; };
     const counted = new Set([...requests.values()].filter((r) => r.bytes > 0).map((r) => pathOf(r.url)));
-    const unseen = served.filter((entry) => !counted.has(entry.url) && entry.at <= origin + ms);
+    const fromWorker = (url) => /pdf\.worker|^\/pdf\//.test(url);
+    const unseen = served.filter((entry) => fromWorker(entry.url) && !counted.has(entry.url) && entry.at <= origin + ms);
     const workerBytes = unseen.reduce((sum, entry) => sum + entry.bytes, 0);
     if (timeline) {
       const rows = [...requests.values()].sort((a, b) => a.sent - b.sent);
