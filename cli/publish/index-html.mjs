@@ -1,6 +1,7 @@
 // The published site's index.html: the reader page (reader.js makes the book in <main id="conecurl-reader">),
 // its modules preloaded so they load in one round trip, link-preview tags, and a <noscript> copy of the
 // pages (images and text) for readers and crawlers without JavaScript. Every value from the PDF is escaped.
+import { cutWords } from '../../web/src/document/format.js';
 
 /** Characters of a page's text in the noscript copy at most, and of all pages' together: the HTML stays small. */
 export const NOSCRIPT_CHARS = 400;
@@ -12,11 +13,6 @@ export const escapeHtml = (value) => String(value).replace(/[&<>"']/g, (c) => EN
 
 /** A URL path (relative, with our own file names) percent-encoded where needed, for an attribute. */
 const href = (relative) => escapeHtml(relative.split('/').map(encodeURIComponent).join('/'));
-
-const cut = (text, max) => {
-  const words = text.replace(/\s+/g, ' ').trim();
-  return words.length > max ? `${words.slice(0, max).replace(/\s+\S*$/, '')}…` : words;
-};
 
 /**
  * index.html for a site: `title`, `lang`, `manifest` (path of book.json), `cover` (path), `url` (absolute
@@ -62,7 +58,7 @@ export function indexHtml({ title, lang, manifest, cover, url, runtime, prefix, 
       return;
     }
     lines.push(`<section><img src="${href(page.src)}" width="${page.imageWidth}" height="${page.imageHeight}" loading="lazy" alt="${escapeHtml(page.alt)}">`
-      + (page.text.trim() ? `<p>${escapeHtml(cut(page.text, share))}</p>` : '') + '</section>');
+      + (page.text.trim() ? `<p>${escapeHtml(cutWords(page.text, share))}</p>` : '') + '</section>');
   });
   lines.push('</noscript>', '</main>', '</body>', '</html>', '');
   return lines.join('\n');

@@ -84,7 +84,6 @@ export function stripComments(source) {
       if (!/\s/.test(c)) [last, lastWord] = [c, ''];
     }
   }
-  // Lines left empty by a comment go (a line of a template literal is never empty-only by our doing:
-  // its text is copied whole, and a blank line in one is kept as it was only when it had no spaces).
-  return out.replace(/\n[ \t]+\n/g, '\n\n').replace(/\n{3,}/g, '\n\n');
+  // Lines a comment leaves empty stay: folding them could change a template literal's own blank lines.
+  return out;
 }

@@ -11,6 +11,7 @@ export const FIRST_VIEW_MODULES = [
   'web/src/document/published-document.js',
   'web/src/layers/edge-tabs.js',
   'web/src/layers/text-layer.js',
+  'web/src/layers/text-measure.js',
   'web/src/viewer/attach-controls.js',
   'web/src/viewer/contents-panel.js',
   'web/src/viewer/more-menu.js',

@@ -53,8 +53,8 @@ export function pageTextRecord(content, viewport) {
   return { text, items, width: viewport.width, height: viewport.height };
 }
 
-/** A page without text (one whose text could not be read): search finds nothing there. */
-export const emptyPageText = () => ({ text: '', items: [], width: 1, height: 1 });
+/** A page without text (one whose text could not be read, or that has none): search finds nothing there. */
+export const emptyPageText = (width = 1, height = 1) => ({ text: '', items: [], width, height });
 
 const round = (v) => Math.round(v * 100) / 100;
 
@@ -97,12 +97,16 @@ export function decodePageText(json, where) {
   return { text: json.text, items, width: json.width, height: json.height };
 }
 
+/** `text` with its white space folded, cut after at most `max` characters at a word's end with an ellipsis. */
+export function cutWords(text, max = Infinity) {
+  const words = text.replace(/\s+/g, ' ').trim();
+  return words.length > max ? `${words.slice(0, max).replace(/\s+\S*$/, '')}…` : words;
+}
+
 /** A page's `alt` from its text: "Page N: its words" (at most `max` characters of them), or "Page N". */
 export function altText(index, text, max = Infinity) {
-  const words = text.replace(/\s+/g, ' ').trim();
-  if (!words) return `Page ${index + 1}`;
-  const cut = words.length > max ? `${words.slice(0, max).replace(/\s+\S*$/, '')}…` : words;
-  return `Page ${index + 1}: ${cut}`;
+  const words = cutWords(text, max);
+  return words ? `Page ${index + 1}: ${words}` : `Page ${index + 1}`;
 }
 
 // ---- the manifest ---------------------------------------------------------------------------------

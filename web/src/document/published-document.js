@@ -2,7 +2,7 @@
 // own pipeline): its pages are images, and its text, outline and links come from the files beside them
 // (format.js), read with fetch. No pdf.js: search, the text layer and outline() read the same records
 // as for a PDF opened at run time.
-import { MANIFEST, altText, checkManifest, decodePageText } from './format.js';
+import { MANIFEST, altText, checkManifest, decodePageText, emptyPageText } from './format.js';
 
 const copyOutline = (entries) => entries.map(({ title, page, children }) => ({ title, page, children: copyOutline(children ?? []) }));
 
@@ -61,7 +61,7 @@ export async function openPublished(url) {
             if (manifest.pages[index].alt === undefined) pages[index].alt = altText(index, record.text);
             return record;
           })
-          : Promise.resolve({ text: '', items: [], width: manifest.pages[index]?.width ?? 1, height: manifest.pages[index]?.height ?? 1 }));
+          : Promise.resolve(emptyPageText(manifest.pages[index]?.width, manifest.pages[index]?.height)));
       }
       return texts.get(index);
     },

@@ -6,6 +6,7 @@
 // worker; a published document's text files are fetched. Only the folding, the matching and the geometry
 // of the hits run here on the main thread, page by page in idle time, never inside a turn's frame.
 import { emptyPageText } from './format.js';
+import { measureText as measure } from '../layers/text-measure.js';
 
 const MARKS = /\p{M}/gu;
 const SNIPPET_SIDE = 20;  // characters of context on each side of a hit (~40 in all)
@@ -87,14 +88,6 @@ export function rectsByLine(rects) {
 }
 
 // ---- a document's pages ----------------------------------------------------------------------------------
-
-let measurer = null;
-/** Width of `text` in `family` at 100 px: to place a hit inside a text item by its glyphs, not its character count. */
-function measure(text, family) {
-  measurer ??= (typeof OffscreenCanvas === 'function' ? new OffscreenCanvas(1, 1) : document.createElement('canvas')).getContext('2d');
-  measurer.font = `100px ${family || 'sans-serif'}`;
-  return measurer.measureText(text).width;
-}
 
 /** The rectangles (fractions of the page, one per line) of the original text range [start, end). */
 function recordRects(record, start, end) {

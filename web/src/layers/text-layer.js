@@ -4,6 +4,7 @@
 // reader reads the page in order; a press on text selects and never turns (the spans sit above the
 // canvas, whose listeners never see it), and a selection offers "Copy link to this passage".
 // Loaded (a dynamic import) only for PDF and published books with the `textLayer` option on.
+import { measureText as measure } from './text-measure.js';
 /** The passage button's text (the viewer's labels may replace it later). */
 export const PASSAGE_LINK_LABEL = 'Copy link to this passage';
 const PASSAGE_MAX_CHARS = 300;  // a link carries at most this much of the selection (search finds its start)
@@ -75,14 +76,6 @@ export function passageText(text) {
   const cut = folded.slice(0, PASSAGE_MAX_CHARS);
   const space = cut.lastIndexOf(' ');
   return space > PASSAGE_MAX_CHARS / 2 ? cut.slice(0, space) : cut;
-}
-
-let measurer = null;
-/** The width of `text` in `family` at 100 px (a span is stretched to its word's width on the page). */
-function measure(text, family) {
-  measurer ??= (typeof OffscreenCanvas === 'function' ? new OffscreenCanvas(1, 1) : document.createElement('canvas')).getContext('2d');
-  measurer.font = `100px ${family}`;
-  return measurer.measureText(text).width;
 }
 
 /**
