@@ -8,7 +8,7 @@ import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { BookTurns } from './book-turns.js';
 import {
   attachBookInput, followSurface, loadFirstView, loadOptionalParts, makeHtmlPages, makeLinkLayer, makeLivePages,
-  makePageStore, makeZoom, openingPageOf, prefetchOpening, startCompanions, watchBookSize,
+  makePageStore, makeReadAloud, makeZoom, openingPageOf, prefetchOpening, startCompanions, watchBookSize,
 } from './book-wiring.js';
 import { attachViewer, makeDocumentApi } from '../document/document-wiring.js';
 import { MAX_ZOOM, displayFor, openPages } from '../engine/layout.js';
@@ -35,6 +35,7 @@ export class BookController extends EventTarget {
     this._canvas = this._shell.canvas;
     this._port = this._makePort();  // what the parts below may ask of the book (book-wiring.js)
     this._doc = makeDocumentApi(this, this._port);  // outline, search, thumbnails, fullscreen, download, print
+    this._reading = makeReadAloud(this, this._port, (index) => this._doc.pageText(index));  // read-aloud, loaded on first use
     this._zoom = makeZoom(this._port);
     this._store = makePageStore(this._port);
     this._turns = new BookTurns(this._port);
@@ -166,6 +167,19 @@ export class BookController extends EventTarget {
   /** Prints the pages, unless a `print` listener prevents it; resolves whether it did. */
   async print() { this._alive(); return this._doc.print(); }
 
+  // ---- read-aloud (book-wiring.js makeReadAloud: read-aloud/ loaded on first use) ----
+  /**
+   * Reads the book aloud from the open page, word by word, turning at the end of the open pages:
+   * resolves with the reading ({ state, page, word, audio, pause(), resume(), stop(), update(), finished }).
+   */
+  async readAloud(options) { this._alive(); return this._reading.start(options); }
+  /** The reading aloud now (what readAloud() resolved with), or null. */
+  get readingAloud() { return this._reading.current(); }
+  /** The browser's speech voices: [{ name, lang, default, local }] ([] where it has none). */
+  async readAloudVoices() { this._alive(); return this._reading.voices(); }
+  /** Whether readAloud() can read this book: a page has recorded narration, or the browser has a voice. */
+  async canReadAloud() { this._alive(); return this._reading.can(); }
+
   // live-pages.js, imported on the first change asked for.
   async _live() {
     this._alive();
@@ -176,6 +190,7 @@ export class BookController extends EventTarget {
 
   destroy() {
     if (this._destroyed) return;
+    this._reading.stop();  // `readaloudend` (reason 'destroyed') while listeners still hear it
     if (this._surface) {
       this._finalPage = this.page;  // page and display still answer after destroy()
       this._finalDisplay = this.display;
@@ -284,7 +299,8 @@ export class BookController extends EventTarget {
       document: () => this._document,
       container: this._container,
       addLayer: (layer) => this._layers.push(layer),
-      decorate: (index, image) => this._doc.decorate(index, image),
+      decorate: (index, image) => this._doc.decorate(index, image, this._reading.marksOn(index)),
+      duckSound: (on) => this._sound?.duck(on),
     };
   }
 

@@ -32,6 +32,15 @@ export const EVENT_DETAILS = {
   // click on the middle of the book (CSS px from the book element's corner), which turns nothing.
   displaychange: ['display', 'previous'],
   middletap: ['x', 'y'],
+  // read-aloud (issue 31): a reading started, moved to a page (what it reads there: 'narration', 'text',
+  // 'alt' or 'none'), said a word (its rects as fractions of the page), paused, resumed, and ended
+  // (reason 'finished', 'stopped', 'turned', 'pageschange', 'destroyed' or 'error').
+  readaloudstart: ['page', 'lang', 'voice'],
+  readaloudpage: ['page', 'source'],
+  readaloudword: ['page', 'index', 'text', 'rects'],
+  readaloudpause: ['page'],
+  readaloudresume: ['page'],
+  readaloudend: ['reason', 'page', 'error?'],
 };
 /** Every event a book dispatches. */
 export const BOOK_EVENTS = Object.keys(EVENT_DETAILS);

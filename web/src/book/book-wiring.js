@@ -45,6 +45,7 @@ import { positionOfPage } from '../engine/layout.js';
  * @property {HTMLElement} container  the element the book was made in (fullscreen takes it)
  * @property {(layer: object) => void} addLayer  an overlay layer made later (search hits), laid and removed with the others
  * @property {(index: number, image: object) => object} decorate  the image the surface gets for a page (search marks drawn in)
+ * @property {(on: boolean) => void} duckSound  a voice reads aloud: the page sound goes quieter (page-sound.js duck)
  */
 
 /** @param {BookPort} book */
@@ -67,7 +68,7 @@ export function makePageStore(book) {
     emit: book.emit,
     // A source may have learned its page's text and links while making it (a PDF page). Not while a
     // leaf moves or is lifted by a hover hint: the landing, or the hint's end, shows them again.
-    decorate: book.decorate,  // search marks drawn into the page's image (document/book-search.js)
+    decorate: book.decorate,  // search marks and the word read aloud drawn into the page's image (document-wiring.js)
     onOpenPageLoaded: (index) => {
       if (!book.surface().animating && book.openPages().includes(index)) book.showOpenPages();
     },
@@ -209,6 +210,29 @@ export function attachBookInput(book) {
   });
 }
 
+/**
+ * Read-aloud (read-aloud/book-reader.js, imported at the first call): readAloud(), readingAloud,
+ * readAloudVoices(), canReadAloud(); `pageText(index)` is a document page's text record.
+ * @param {BookPort} book
+ */
+export function makeReadAloud(controller, book, pageText) {
+  let reader = null;
+  let loading = null;
+  const load = () => (loading ??= import('../read-aloud/book-reader.js').then(({ BookReader }) => {
+    book.alive();
+    return (reader ??= new BookReader(controller, book, pageText));
+  }));
+  return {
+    start: async (options) => (await load()).start(options),
+    current: () => reader?.current ?? null,
+    voices: async () => (await load()).voices(),
+    can: async () => (await load()).can(),
+    /** The word read aloud, drawn into its page's image while its leaf turns: the marks of page `index`. */
+    marksOn: (index) => reader?.marksOn(index) ?? [],
+    stop: () => reader?.stop(),
+  };
+}
+
 /** The element's size and pixel ratio, from `initial` on (size-watch.js); returns the stop. @param {BookPort} book */
 export function watchBookSize(book, initial) {
   return watchSize(book.root, initial, (size) => {
@@ -306,12 +330,20 @@ function soundOf(controller, book, module) {
   let sound = module ? start(module) : null;
   let stopped = false;
   let loading = null;
+  let ducked = false;
   return {
+    /** A voice reads aloud (on) or stopped: the page sound goes quieter meanwhile. */
+    duck(on) {
+      ducked = on;
+      sound?.duck(on);
+    },
     update() {
       if (sound) return sound.update();
       if (book.settings.sound && !loading) {
         loading = import('./page-sound.js').then((pageSound) => {
-          if (!stopped) sound = start(pageSound);
+          if (stopped) return;
+          sound = start(pageSound);
+          sound.duck(ducked);
         });
       }
       return undefined;
@@ -324,7 +356,7 @@ function soundOf(controller, book, module) {
       if (sound) return sound.status;
       const { sound: on, muted } = book.settings;
       const state = !on ? 'off' : muted ? 'muted' : !book.animates() ? 'silent' : 'waiting';
-      return Object.freeze({ state, gain: 0, target: 0, speed: 0, taps: 0 });
+      return Object.freeze({ state, gain: 0, target: 0, speed: 0, taps: 0, ducked });
     },
   };
 }

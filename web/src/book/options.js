@@ -78,7 +78,7 @@ export const DEFAULTS = {
 };
 /** Options a live book takes through setOptions(); the others need a new book. */
 export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter', 'thickness', 'resolution', 'display', 'minPageWidth', 'sound', 'muted'];
-const PAGE_ENTRY_KEYS = ['src', 'html', 'alt', 'hard', 'zoomSrc', 'thumbSrc', 'links'];
+const PAGE_ENTRY_KEYS = ['src', 'html', 'alt', 'hard', 'zoomSrc', 'thumbSrc', 'links', 'narration'];
 const PAGE_SOURCES = 'a URL string, HTMLImageElement, HTMLCanvasElement, ImageBitmap, Blob, '
   + 'a function returning one of these (or a Promise of one), or an HTML element (an HTML page)';
 
@@ -136,6 +136,19 @@ export function checkPage(page, name, pageCount, kind = 'option') {
     }
   }
   if (page.links !== undefined) checkLinks(page.links, `${name}.links`, pageCount, kind);
+  if (page.narration !== undefined) checkNarration(page.narration, `${name}.narration`, kind);
+}
+
+// A page's recorded narration: { src (the audio's URL), words (its word times, or the URL of a WebVTT or
+// JSON file of them) }; each word is checked when the page is read (read-aloud/word-times.js).
+function checkNarration(narration, name, kind) {
+  const { src, words } = narration ?? {};
+  const ok = isPlainEntry(narration) && Object.keys(narration).every((key) => key === 'src' || key === 'words')
+    && typeof src === 'string' && src !== '' && (Array.isArray(words) || (typeof words === 'string' && words !== ''));
+  if (!ok) {
+    throw new TypeError(`conecurl: ${kind} '${name}' must be { src: the audio's URL, words: [{ start, end, text, rect }] `
+      + `or the URL of a WebVTT or JSON file of them }; got ${describeValue(narration)}`);
+  }
 }
 
 function checkLinks(links, where, pageCount, kind) {

@@ -2,7 +2,8 @@
 // whose loudness and brightness follow the fastest leaf's angular speed as the engine measures it each
 // frame (FrameLoop.motion), and a soft tap as a leaf lands; hard leaves sound lower and heavier. No
 // AudioContext before a user gesture on the book (or one that turns it), none while muted, under
-// prefers-reduced-motion or on still pages (the 2D surface has no moving leaf: it stays silent).
+// prefers-reduced-motion or on still pages (the 2D surface has no moving leaf: it stays silent). While
+// a voice reads the book aloud, the whole sound is ducked under it.
 
 /** Angular speed (rad/s) at which the rustle is at its loudest and brightest: a fling. */
 export const FULL_SPEED = 8;
@@ -17,6 +18,9 @@ const TAP = {
   hard: { cutoff: 500, seconds: 0.14, level: 0.8 },
 };
 const NOISE_SECONDS = 2;
+/** The page sound's level while a voice reads aloud (read-aloud): the turns stay heard, under the voice. */
+export const DUCKED_LEVEL = 0.3;
+const DUCK_S = 0.08;
 const GESTURES = ['pointerdown', 'keydown', 'touchstart'];
 
 /**
@@ -62,7 +66,7 @@ function glide(param, value, at, tau) {
 /**
  * Starts the sound of `book` (its `options`, `surface`, `turnstart` events) laid in `root`.
  * `animates()` says whether leaves move (false on still pages and under reduced motion).
- * Returns { update() (options changed), stop(), status }.
+ * Returns { update() (options changed), duck(on) (a voice reads aloud), stop(), status }.
  */
 export function startPageSound(book, root, { animates }) {
   let graph = null;       // { context, rustle, band, master, noise } once a gesture made it
@@ -70,12 +74,14 @@ export function startPageSound(book, root, { animates }) {
   let target = 0;
   let speed = 0;
   let taps = 0;
+  let ducked = false;
   const wanted = () => settings.sound && !settings.muted && animates();
   const AudioContextClass = globalThis.AudioContext ?? globalThis.webkitAudioContext;
 
   function build() {
     const context = new AudioContextClass();
     const master = context.createGain();
+    master.gain.value = ducked ? DUCKED_LEVEL : 1;
     master.connect(context.destination);
     const band = context.createBiquadFilter();
     band.type = 'bandpass';
@@ -166,6 +172,11 @@ export function startPageSound(book, root, { animates }) {
 
   return {
     update,
+    /** A voice reads aloud (on): the page sound goes down to DUCKED_LEVEL until it stops (off). */
+    duck(on) {
+      ducked = Boolean(on);
+      if (graph) glide(graph.master.gain, ducked ? DUCKED_LEVEL : 1, graph.context.currentTime, DUCK_S);
+    },
     stop() {
       for (const type of GESTURES) root.removeEventListener(type, onGesture, { capture: true });
       book.removeEventListener('turnstart', onTurnStart);
@@ -180,7 +191,7 @@ export function startPageSound(book, root, { animates }) {
       else if (settings.muted) state = 'muted';
       else if (!animates()) state = 'silent';
       else if (graph) state = graph.context.state;
-      return Object.freeze({ state, gain: graph ? graph.rustle.gain.value : 0, target, speed, taps });
+      return Object.freeze({ state, gain: graph ? graph.rustle.gain.value : 0, target, speed, taps, ducked });
     },
   };
 }

@@ -1,10 +1,9 @@
 // A book's search: search() over its pages' text (text-index.js: a document's text indexed once,
 // HTML pages read live), showHit() turning to a hit and marking it, clearSearch(), and the
 // `searchchange` event. Marks are drawn into the pages' images (pages/marked-page.js, through the page
-// store's `decorate` hook) and laid over the flat pages as elements (layers/search-hits.js).
+// store's `decorate` hook, document-wiring.js) and laid over the flat pages as elements (layers/search-hits.js).
 // Made by the book's first search(), showHit() or clearSearch(); a document's index starts after the book opens.
 import { foldQuery, htmlPageHits } from './text-index.js';
-import { markedPageImage } from '../pages/marked-page.js';
 import { createSearchHitsLayer } from '../layers/search-hits.js';
 import { describeValue } from '../engine/describe-value.js';
 
@@ -47,10 +46,9 @@ export class BookSearch {
     book.addLayer(this._layer);
   }
 
-  /** The image the surface gets for page `index` (the page store's `decorate` hook): marked while it has marks. */
-  decorate(index, image) {
-    const marks = this._marks.get(index);
-    return marks && marks.length > 0 ? markedPageImage(image, marks) : image;
+  /** The marks page `index`'s image gets now (drawn in by document-wiring.js decorate): [{ rect, current }]. */
+  marksOn(index) {
+    return this._marks.get(index) ?? [];
   }
 
   /** The hits of `text` in reading order: [{ page, snippet, rects }]; rejects with an AbortError when `signal` aborts. */

@@ -1,5 +1,6 @@
 // How the document API (outline, search and its marks, thumbnails, fullscreen, download, print) and
 // the viewer (`controls`) are wired to a book from its port, each module imported on first use.
+import { markedPageImage } from '../pages/marked-page.js';
 
 /**
  * The document API (issue 23): outline(), search() and its marks, pageThumbnail(), fullscreen,
@@ -35,7 +36,16 @@ export function makeDocumentApi(controller, book) {
     search: async (text, options) => (await searcher()).search(text, options),
     showHit: async (hit) => (await searcher()).showHit(hit),
     clearSearch: () => search?.clear(),
-    decorate: (index, image) => (search ? search.decorate(index, image) : image),
+    /** A document page's text record (null for other books): what search and read-aloud read. */
+    pageText: async (index) => (await documentIndex())?.page(index) ?? null,
+    /**
+     * The image the surface gets for page `index` (the page store's `decorate` hook): the search's marks
+     * and `extra` ones (the word read aloud, while its leaf turns) drawn in, or the image itself.
+     */
+    decorate: (index, image, extra = []) => {
+      const marks = [...(search?.marksOn(index) ?? []), ...extra];
+      return marks.length > 0 ? markedPageImage(image, marks) : image;
+    },
     thumbnail: async (index, size) => (await drawer()).draw(index, size),
     toggleFullscreen: async (force) => {
       const { followFullscreen, toggleFullscreen } = await documentModule();

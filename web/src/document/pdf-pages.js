@@ -68,8 +68,10 @@ export async function openPdf(source, { workerSrc } = {}) {
     return entry;
   });
   const texts = new Map();  // page index → Promise of its text record, read once
-  return {
+  const opened = {
     pages,
+    /** The PDF's language (its catalog's /Lang, as pdf.js reads it), '' until read or where it has none. */
+    lang: '',
     aspect: first.width / first.height,
     /** pdf.js itself (for its TextLayer and the like) and the open document. */
     pdfjs,
@@ -93,6 +95,8 @@ export async function openPdf(source, { workerSrc } = {}) {
     },
     destroy: () => task.destroy(),
   };
+  doc.getMetadata().then(({ info }) => { opened.lang = String(info?.Language ?? '').trim(); }).catch(() => {});
+  return opened;
 }
 
 /**

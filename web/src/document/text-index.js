@@ -89,8 +89,8 @@ export function rectsByLine(rects) {
 
 // ---- a document's pages ----------------------------------------------------------------------------------
 
-/** The rectangles (fractions of the page, one per line) of the original text range [start, end). */
-function recordRects(record, start, end) {
+/** The rectangles (fractions of the page, one per line) of the original text range [start, end) of a page's record. */
+export function recordRects(record, start, end) {
   const rects = [];
   for (const item of record.items) {
     if (item.end <= start || item.start >= end) continue;
@@ -184,6 +184,19 @@ export class TextIndex {
  * @param {number} index @param {HTMLElement} element @param {Element} box @param {string} query
  */
 export function htmlPageHits(index, element, box, query) {
+  const page = htmlPageText(element);
+  return matches(page.text, query).map(([start, end]) => ({
+    page: index, snippet: snippetOf(page.text, start, end), rects: page.rects(start, end, box),
+  }));
+}
+
+/**
+ * An HTML page's text as read now (its text nodes joined; scripts and styles left out), and the
+ * rectangles (fractions of `box`, one per line) of a range [start, end) of it, from a Range laid now.
+ * @param {HTMLElement} element
+ * @returns {{ text: string, rects: (start: number, end: number, box: Element) => number[][] }}
+ */
+export function htmlPageText(element) {
   const nodes = [];
   let text = '';
   const walker = document.createTreeWalker(element, NodeFilter.SHOW_TEXT, {
@@ -198,13 +211,15 @@ export function htmlPageHits(index, element, box, query) {
     while (i > 0 && nodes[i].start > offset) i -= 1;
     return [nodes[i].node, offset - nodes[i].start];
   };
-  const frame = box.getBoundingClientRect();
-  return matches(text, query).map(([start, end]) => {
-    const range = document.createRange();
-    range.setStart(...at(start));
-    range.setEnd(...at(end - 1).map((v, k) => (k === 1 ? v + 1 : v)));
-    const rects = [...range.getClientRects()].map((r) => [(r.left - frame.left) / frame.width, (r.top - frame.top) / frame.height,
-      r.width / frame.width, r.height / frame.height]);
-    return { page: index, snippet: snippetOf(text, start, end), rects: rectsByLine(rects) };
-  });
+  return {
+    text,
+    rects(start, end, box) {
+      const frame = box.getBoundingClientRect();
+      const range = document.createRange();
+      range.setStart(...at(start));
+      range.setEnd(...at(end - 1).map((v, k) => (k === 1 ? v + 1 : v)));
+      return rectsByLine([...range.getClientRects()].map((r) => [(r.left - frame.left) / frame.width, (r.top - frame.top) / frame.height,
+        r.width / frame.width, r.height / frame.height]));
+    },
+  };
 }

@@ -1,0 +1,307 @@
+// Browser: read-aloud (issue 31) on a speech engine the test drives (readAloud({ engine })): over the
+// test PDF, the words of each open page are said and marked in order (data-reading elements over the
+// word's glyphs, the same rectangles search() gives), the book turns at the end of the open pages and
+// reading goes on at the next page's first word, with the last word drawn into the curling leaf; pause
+// and resume; a reader's turn stops it (or, with follow, moves it); stop() and destroy() mid-word leave
+// nothing behind; the default engine hands speechSynthesis.speak the page's text and language.
+import { test, expect } from '@playwright/test';
+import { openPdfBook as openPdf, makeDocumentPdf, PAGES } from './document-pdf.js';
+
+let made;
+test.beforeAll(async () => { made = await makeDocumentPdf(); });
+
+const openPdfBook = (page, options) => openPdf(page, made, { lighting: false, shadows: false, gutter: false, ...options });
+
+// A speech engine the test drives: each speak() is recorded; window.sayWords(n) says the next n words of
+// the latest utterance (onWord at each word's first character), window.finish() ends it (onEnd).
+async function installEngine(page) {
+  await page.evaluate(() => {
+    window.events = [];
+    for (const type of ['readaloudstart', 'readaloudpage', 'readaloudword', 'readaloudpause', 'readaloudresume', 'readaloudend', 'turnstart', 'turned']) {
+      window.book.addEventListener(type, (e) => window.events.push({ type, ...e.detail }));
+    }
+    const engine = { calls: [] };
+    engine.speak = (text, options) => {
+      const call = { text, lang: options.lang, rate: options.rate, pitch: options.pitch, voice: options.voice, paused: false, cancelled: false, said: 0, options };
+      call.words = [...text.matchAll(/\S+/g)].map((m) => ({ at: m.index, length: m[0].length, text: m[0] }));
+      engine.calls.push(call);
+      return { pause() { call.paused = true; }, resume() { call.paused = false; }, cancel() { call.cancelled = true; } };
+    };
+    window.engine = engine;
+    const latest = () => engine.calls[engine.calls.length - 1];
+    window.sayWords = (n) => {
+      const call = latest();
+      for (let k = 0; k < n && call.said < call.words.length; k++, call.said++) {
+        const word = call.words[call.said];
+        call.options.onWord(word.at, word.length);
+      }
+      return call.words.slice(0, call.said).map((w) => w.text);
+    };
+    window.finish = () => latest().options.onEnd();
+    window.calls = () => engine.calls.map(({ text, lang, paused, cancelled, said }) => ({ text, lang, paused, cancelled, said }));
+  });
+}
+
+// The words of page `index` as pdf.js reads its text (the fixture's heading, lines and page number).
+const textOf = (index) => [PAGES[index].heading, ...PAGES[index].lines, String(index + 1)].join(' ');
+const pageWords = (index) => textOf(index).split(/\s+/);
+const reading = (page) => page.evaluate(() => ({ state: window.book.readingAloud?.state ?? null, marks: document.querySelectorAll('[data-reading]').length }));
+
+test('browser: readAloud({ engine }) says the open pages\' words in order, marks each over its glyphs, turns at their end and goes on at the next page', async ({ page }) => {
+  await openPdfBook(page);
+  await installEngine(page);
+  await page.evaluate(() => window.book.readAloud({ engine: window.engine, lang: 'en-GB', rate: 1.5 }));
+  await page.waitForFunction(() => window.engine.calls.length === 1);
+  // The cover lies alone: its text, in the language asked for.
+  let calls = await page.evaluate(() => window.calls());
+  expect(calls[0].text.split(/\s+/)).toEqual(pageWords(0));
+  expect(calls[0].lang).toBe('en-GB');
+  // Word by word: each marked where search() finds it, on page 0.
+  for (let k = 1; k <= 3; k++) {
+    await page.evaluate(() => window.sayWords(1));
+    const { word, event, marks, hit } = await page.evaluate(async () => {
+      const word = window.book.readingAloud.word;
+      const event = window.events.filter((e) => e.type === 'readaloudword').pop();
+      const marks = [...document.querySelectorAll('[data-reading]')].map((m) => ({ page: Number(m.dataset.page), box: m.getBoundingClientRect().toJSON() }));
+      const hits = await window.book.search(word.text.replace(/[^\p{L}]/gu, ''));
+      return { word, event, marks, hit: hits.find((h) => h.page === word.page) };
+    });
+    expect(word.text).toBe(pageWords(0)[k - 1]);
+    expect(event).toMatchObject({ page: 0, index: k - 1, text: word.text });
+    expect(marks.length).toBe(word.rects.length);
+    expect(marks.every((m) => m.page === 0)).toBe(true);
+    // The word's rectangle is search()'s for the same word, to a hair.
+    expect(hit).toBeTruthy();
+    for (let i = 0; i < 4; i++) expect(Math.abs(word.rects[0][i] - hit.rects[0][i])).toBeLessThan(0.003);
+  }
+  await page.evaluate(() => window.book.clearSearch());
+  // The rest of the cover, then its end: the book turns by itself (one turn), and page 1 is read, then page 2.
+  await page.evaluate(() => { window.sayWords(100); window.finish(); });
+  await page.waitForFunction(() => window.engine.calls.length === 2);
+  calls = await page.evaluate(() => window.calls());
+  expect(calls[1].text.split(/\s+/)).toEqual(pageWords(1));
+  const turns = await page.evaluate(() => window.events.filter((e) => e.type === 'turnstart' || e.type === 'turned').map((e) => e.type));
+  expect(turns).toEqual(['turnstart', 'turned']);
+  expect(await page.evaluate(() => window.book.openPages)).toEqual([1, 2]);
+  await page.evaluate(() => { window.sayWords(2); });
+  expect(await page.evaluate(() => window.book.readingAloud.word)).toMatchObject({ page: 1, index: 1, text: 'One:' });
+  await page.evaluate(() => { window.sayWords(100); window.finish(); });
+  await page.waitForFunction(() => window.engine.calls.length === 3);
+  calls = await page.evaluate(() => window.calls());
+  expect(calls[2].text.split(/\s+/)).toEqual(pageWords(2));
+  const pagesRead = await page.evaluate(() => window.events.filter((e) => e.type === 'readaloudpage').map((e) => [e.page, e.source]));
+  expect(pagesRead).toEqual([[0, 'text'], [1, 'text'], [2, 'text']]);
+  // Every word said so far came in order, on its page.
+  const said = await page.evaluate(() => window.events.filter((e) => e.type === 'readaloudword').map((e) => `${e.page}:${e.text}`));
+  expect(said).toEqual([...pageWords(0).map((w) => `0:${w}`), ...pageWords(1).map((w) => `1:${w}`)]);
+  await page.evaluate(() => window.book.readingAloud.stop());
+});
+
+test('browser: at the end of the open pages the last word said is drawn into the leaf as it curls, and is gone from the texture once it lands', async ({ page }) => {
+  await openPdfBook(page, { startPage: 1 });
+  await installEngine(page);
+  const blue = () => page.evaluate(() => {
+    const view = window.book.surface;
+    view.drawNow();
+    const { data } = view.readPixels();
+    let n = 0;
+    for (let i = 0; i < data.length; i += 4) if (data[i + 2] > 220 && data[i + 2] - data[i] > 50 && data[i + 1] > 150) n += 1;
+    return n;
+  });
+  await page.evaluate(() => window.book.readAloud({ engine: window.engine }));
+  await page.waitForFunction(() => window.engine.calls.length === 1);
+  await page.evaluate(() => { window.sayWords(100); window.finish(); });
+  await page.waitForFunction(() => window.engine.calls.length === 2);  // page 2, the right page
+  await page.evaluate(() => window.sayWords(1));  // its heading's first word; the engine ends there
+  // Flat: the mark is an element over the canvas, not in the page's texture.
+  expect(await blue()).toBe(0);
+  expect((await reading(page)).marks).toBeGreaterThan(0);
+  // The end of page 2: as the leaf carrying page 2 starts to move, its last word said is blue in its texture.
+  const atStart = await page.evaluate(() => new Promise((resolve) => {
+    window.book.addEventListener('turnstart', () => {
+      const view = window.book.surface;
+      view.drawNow();
+      const { data } = view.readPixels();
+      let n = 0;
+      for (let i = 0; i < data.length; i += 4) if (data[i + 2] > 220 && data[i + 2] - data[i] > 50 && data[i + 1] > 150) n += 1;
+      resolve({ n, marks: document.querySelectorAll('[data-reading]').length });
+    }, { once: true });
+    window.finish();
+  }));
+  expect(atStart.n).toBeGreaterThan(20);
+  expect(atStart.marks).toBe(0);  // the elements give way while a leaf moves
+  await page.waitForFunction(() => window.engine.calls.length === 3);
+  await page.evaluate(() => window.book.readingAloud.stop());
+  await page.evaluate(() => window.book.whenIdle());
+  expect(await blue()).toBe(0);
+});
+
+test('browser: pause() holds the engine and the turn, resume() goes on; readaloudpause and readaloudresume say so', async ({ page }) => {
+  await openPdfBook(page);
+  await installEngine(page);
+  await page.evaluate(() => window.book.readAloud({ engine: window.engine }));
+  await page.waitForFunction(() => window.engine.calls.length === 1);
+  await page.evaluate(() => window.sayWords(2));
+  await page.evaluate(() => window.book.readingAloud.pause());
+  expect(await page.evaluate(() => [window.book.readingAloud.state, window.calls()[0].paused])).toEqual(['paused', true]);
+  await page.evaluate(() => window.book.readingAloud.resume());
+  expect(await page.evaluate(() => [window.book.readingAloud.state, window.calls()[0].paused])).toEqual(['reading', false]);
+  // Paused just as the page ends (an engine may end while pausing): no turn until resume().
+  await page.evaluate(() => { window.sayWords(100); window.book.readingAloud.pause(); window.finish(); });
+  await page.evaluate(() => window.book.whenIdle());
+  expect(await page.evaluate(() => [window.book.page, window.book.animating, window.engine.calls.length])).toEqual([0, false, 1]);
+  await page.evaluate(() => window.book.readingAloud.resume());
+  await page.waitForFunction(() => window.engine.calls.length === 2);
+  expect(await page.evaluate(() => window.book.openPages)).toEqual([1, 2]);
+  const kinds = await page.evaluate(() => window.events.filter((e) => e.type === 'readaloudpause' || e.type === 'readaloudresume').map((e) => e.type));
+  expect(kinds).toEqual(['readaloudpause', 'readaloudresume', 'readaloudpause', 'readaloudresume']);
+  await page.evaluate(() => window.book.readingAloud.stop());
+});
+
+test('browser: a reader\'s own turn stops the reading at once; with follow: true the reading goes on at the new page', async ({ page }) => {
+  await openPdfBook(page);
+  await installEngine(page);
+  await page.evaluate(() => window.book.readAloud({ engine: window.engine }));
+  await page.waitForFunction(() => window.engine.calls.length === 1);
+  await page.evaluate(() => window.sayWords(2));
+  // next(), as a key or a button would: the speech is cancelled and the mark goes with the turn's start.
+  const stopped = await page.evaluate(async () => {
+    const turning = window.book.next();
+    const right = { state: window.book.readingAloud?.state ?? null, cancelled: window.calls()[0].cancelled, marks: document.querySelectorAll('[data-reading]').length };
+    await turning;
+    return { right, end: window.events.filter((e) => e.type === 'readaloudend') };
+  });
+  expect(stopped.right).toEqual({ state: null, cancelled: true, marks: 0 });
+  expect(stopped.end).toEqual([{ type: 'readaloudend', reason: 'turned', page: 0 }]);
+  // A word the cancelled engine still reports changes nothing.
+  await page.evaluate(() => window.sayWords(1));
+  expect(await page.evaluate(() => window.events.filter((e) => e.type === 'readaloudword').length)).toBe(2);
+  // follow: true: flip(5) riffles away; the reading waits, then reads pages 5 and 6 from their first word.
+  await page.evaluate(() => window.book.readAloud({ engine: window.engine, follow: true }));
+  await page.waitForFunction(() => window.engine.calls.length === 2);
+  await page.evaluate(() => window.sayWords(1));
+  await page.evaluate(() => window.book.flip(5));
+  await page.waitForFunction(() => window.engine.calls.length === 3);
+  const followed = await page.evaluate(() => ({ calls: window.calls(), state: window.book.readingAloud.state, open: window.book.openPages }));
+  expect(followed.calls[1].cancelled).toBe(true);
+  expect(followed.open).toEqual([5, 6]);
+  expect(followed.calls[2].text).toBe(followed.calls[2].text.trim() ? followed.calls[2].text : 'x');
+  expect(followed.calls[2].text.split(/\s+/)).toEqual(pageWords(5));
+  expect(followed.state).toBe('reading');
+  await page.evaluate(() => window.book.readingAloud.stop());
+});
+
+test('browser: stop() and destroy() mid-word leave nothing behind: engine cancelled, no mark, no listener, readaloudend said once', async ({ page }) => {
+  await openPdfBook(page, { sound: true });
+  await installEngine(page);
+  await page.evaluate(() => window.book.readAloud({ engine: window.engine }));
+  await page.waitForFunction(() => window.engine.calls.length === 1);
+  await page.evaluate(() => window.sayWords(3));
+  expect(await page.evaluate(() => window.book.sound.ducked)).toBe(true);  // the page sound under the voice
+  expect((await reading(page)).marks).toBeGreaterThan(0);
+  await page.evaluate(() => window.book.readingAloud.stop());
+  const after = await page.evaluate(async () => {
+    window.sayWords(2);         // the cancelled engine goes on talking: nothing hears it
+    window.finish();
+    await window.book.next();   // a turn no longer concerns the reading
+    await window.book.whenIdle();
+    return {
+      calls: window.calls().map((c) => c.cancelled),
+      reading: window.book.readingAloud,
+      marks: document.querySelectorAll('[data-reading]').length,
+      ducked: window.book.sound.ducked,
+      ends: window.events.filter((e) => e.type === 'readaloudend').map((e) => e.reason),
+      words: window.events.filter((e) => e.type === 'readaloudword').length,
+    };
+  });
+  expect(after).toEqual({ calls: [true], reading: null, marks: 0, ducked: false, ends: ['stopped'], words: 3 });
+  // destroy() mid-word: readaloudend (reason 'destroyed') still reaches the listener, then nothing.
+  await page.evaluate(() => window.book.readAloud({ engine: window.engine }));
+  await page.waitForFunction(() => window.engine.calls.length === 2);
+  await page.evaluate(() => window.sayWords(2));
+  const destroyed = await page.evaluate(() => {
+    window.book.destroy();
+    window.sayWords(2);
+    window.finish();
+    return {
+      cancelled: window.calls()[1].cancelled,
+      ends: window.events.filter((e) => e.type === 'readaloudend').map((e) => e.reason),
+      marks: document.querySelectorAll('[data-reading], .conecurl-reading').length,
+    };
+  });
+  expect(destroyed).toEqual({ cancelled: true, ends: ['stopped', 'destroyed'], marks: 0 });
+});
+
+test('browser: the default engine hands speechSynthesis.speak the page\'s text, language, voice and rate, and marks words at its boundary events', async ({ page }) => {
+  // The browser's speech synthesis replaced, before the page loads, by one that records what it is given.
+  await page.addInitScript(() => {
+    const voices = [{ name: 'Test Voice', lang: 'en-US', default: true, localService: true, voiceURI: 'test-voice' },
+      { name: 'Voix', lang: 'fr-FR', default: false, localService: true, voiceURI: 'voix' }];
+    const spoken = [];
+    const synth = new EventTarget();
+    Object.assign(synth, {
+      spoken,
+      getVoices: () => voices,
+      speak: (utterance) => spoken.push(utterance),
+      pause() { this.paused = true; },
+      resume() { this.paused = false; },
+      cancel() { this.cancelled = (this.cancelled ?? 0) + 1; },
+    });
+    Object.defineProperty(window, 'speechSynthesis', { value: synth, configurable: true });
+    // Utterances as the Web Speech API makes them, but taking these voices (a real one takes only its own).
+    window.SpeechSynthesisUtterance = class extends EventTarget {
+      constructor(text) {
+        super();
+        Object.assign(this, { text, lang: '', rate: 1, pitch: 1, voice: null });
+      }
+    };
+  });
+  await openPdfBook(page);
+  await installEngine(page);
+  const result = await page.evaluate(async () => {
+    const document = window.document;
+    document.documentElement.lang = 'en-AU';
+    const voices = await window.book.readAloudVoices();
+    const can = await window.book.canReadAloud();
+    await window.book.readAloud({ voice: 'Voix', rate: 0.75 });
+    while (window.speechSynthesis.spoken.length === 0) await new Promise((resolve) => requestAnimationFrame(resolve));
+    const utterance = window.speechSynthesis.spoken[0];
+    // The engine's boundary events: the second word.
+    const second = utterance.text.search(/\s/) + 1;
+    utterance.dispatchEvent(Object.assign(new Event('boundary'), { name: 'word', charIndex: second, charLength: 4 }));
+    const word = window.book.readingAloud.word;
+    return { voices, can, text: utterance.text, lang: utterance.lang, voice: utterance.voice?.name, rate: utterance.rate, word };
+  });
+  expect(result.voices).toEqual([{ name: 'Test Voice', lang: 'en-US', default: true, local: true }, { name: 'Voix', lang: 'fr-FR', default: false, local: true }]);
+  expect(result.can).toBe(true);
+  expect(result.text.split(/\s+/)).toEqual(pageWords(0));
+  expect(result.lang).toBe('en-AU');  // the page's: the PDF says none, the web page says en-AU
+  expect(result).toMatchObject({ voice: 'Voix', rate: 0.75 });
+  expect(result.word).toMatchObject({ page: 0, index: 1, text: pageWords(0)[1] });
+  // Its end event ends the page: the book turns and the next utterance is page 1's.
+  await page.evaluate(() => window.speechSynthesis.spoken[0].dispatchEvent(new Event('end')));
+  await page.waitForFunction(() => window.speechSynthesis.spoken.length === 2);
+  expect((await page.evaluate(() => window.speechSynthesis.spoken[1].text)).split(/\s+/)).toEqual(pageWords(1));
+  // A voice the browser does not have is a clear error.
+  const error = await page.evaluate(() => window.book.readAloud({ voice: 'Nobody' }).then(() => null, (e) => e.message));
+  expect(error).toMatch(/no voice named 'Nobody'.*'Test Voice', 'Voix'/);
+});
+
+test('browser: where speech synthesis has no voice, readAloud() rejects with an error that says what to do, and canReadAloud() is false', async ({ page }) => {
+  await page.addInitScript(() => {
+    const synth = new EventTarget();
+    Object.assign(synth, { getVoices: () => [], speak() { throw new Error('no voice to speak with'); }, cancel() {}, pause() {}, resume() {} });
+    Object.defineProperty(window, 'speechSynthesis', { value: synth, configurable: true });
+  });
+  await openPdfBook(page);
+  const result = await page.evaluate(async () => ({
+    can: await window.book.canReadAloud(),
+    error: await window.book.readAloud().then(() => null, (e) => e.message),
+    reading: window.book.readingAloud,
+    bad: await window.book.readAloud({ rate: 20 }).then(() => null, (e) => e.message),
+  }));
+  expect(result.can).toBe(false);
+  expect(result.error).toMatch(/readAloud\(\) found no voice.*narration.*engine/);
+  expect(result.reading).toBeNull();
+  expect(result.bad).toMatch(/'rate' must be a number from 0.1 to 10, got 20/);
+});

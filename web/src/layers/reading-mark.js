@@ -1,0 +1,58 @@
+// The word read aloud now, over its page while the page lies flat: an element with `data-reading` (and
+// `data-page`) over each line of the word, laid over the open pages from the engine's page places as
+// the search hits are (search-hits.js), removed while a leaf moves. While the leaf turns, the mark is
+// drawn into the page's image instead (pages/marked-page.js), so it curls with the paper.
+import { READING_FILL } from '../pages/marked-page.js';
+
+/**
+ * An overlay layer (book-controller.js lays it over the open pages while the book rests).
+ * @param {HTMLElement} root  the book's element (position: relative); the layer covers it
+ * @param {() => ({ page: number, rects: number[][] }|null)} markNow  the word marked now (rects as fractions of its page)
+ */
+export function createReadingMarkLayer(root, markNow) {
+  const layer = document.createElement('div');
+  layer.className = 'conecurl-reading';
+  layer.style.cssText = 'position:absolute;inset:0;pointer-events:none;overflow:hidden';
+  layer.setAttribute('aria-hidden', 'true');  // the words are heard; this is their picture
+  root.append(layer);
+  let shown = '';
+  let places = [];
+
+  const lay = () => {
+    const mark = markNow();
+    const place = mark && places.find((p) => p.page === mark.page);
+    const key = place ? JSON.stringify([place, mark.rects]) : '';
+    if (key === shown) return;
+    shown = key;
+    layer.replaceChildren(...(place ? mark.rects.map(([fx, fy, fw, fh]) => {
+      const element = document.createElement('div');
+      element.dataset.reading = '';
+      element.dataset.page = String(mark.page);
+      const pad = Math.max(1, place.height * 0.002);
+      element.style.cssText = 'position:absolute;box-sizing:border-box;border-radius:3px;mix-blend-mode:multiply;'
+        + `background:${READING_FILL};`
+        + `left:${place.x + fx * place.width - pad}px;top:${place.y + fy * place.height - pad}px;`
+        + `width:${fw * place.width + 2 * pad}px;height:${fh * place.height + 2 * pad}px;`;
+      return element;
+    }) : []));
+  };
+
+  return {
+    /** Lays the mark over its page, if open (`places`: { page, x, y, width, height } in CSS px of the root). */
+    place(given) {
+      places = given;
+      lay();
+    },
+    /** The word marked changed: laid again where the pages were last placed. */
+    update() {
+      if (places.length > 0) lay();
+    },
+    hide() {
+      places = [];
+      if (shown === '') return;
+      shown = '';
+      layer.replaceChildren();
+    },
+    remove() { layer.remove(); },
+  };
+}

@@ -1,0 +1,164 @@
+// Read-aloud as a book has it (`readAloud()`, `readingAloud`, `readAloudVoices()`, `canReadAloud()`):
+// the options checked, the voice found, each page's script made, the word marked over the flat page
+// (layers/reading-mark.js) or drawn into a curling one, the page sound ducked while a voice speaks.
+// Imported at a book's first call of any of them (book-wiring.js makeReadAloud).
+import { Reading } from './reading.js';
+import { pageScript } from './page-script.js';
+import { speechEngine, speechVoices } from './speech-engine.js';
+import { createReadingMarkLayer } from '../layers/reading-mark.js';
+import { describeValue } from '../engine/describe-value.js';
+
+const OPTION_KEYS = ['engine', 'voice', 'rate', 'pitch', 'lang', 'follow'];
+const RANGES = { rate: [0.1, 10], pitch: [0, 2] };
+
+/** readAloud()'s options checked, defaults filled in; a TypeError or RangeError names what is wrong. */
+export function checkReadOptions(options = {}) {
+  if (options === null || typeof options !== 'object') throw new TypeError(`conecurl: readAloud() takes an options object, got ${describeValue(options)}`);
+  const unknown = Object.keys(options).find((key) => !OPTION_KEYS.includes(key));
+  if (unknown !== undefined) throw new TypeError(`conecurl: readAloud() has no option '${unknown}' (allowed: ${OPTION_KEYS.join(', ')})`);
+  const { engine = null, voice, rate = 1, pitch = 1, lang, follow = false } = options;
+  if (engine !== null && typeof engine?.speak !== 'function') {
+    throw new TypeError(`conecurl: readAloud() 'engine' must have speak(text, { lang, rate, pitch, voice, onWord, onEnd }) returning { pause, resume, cancel }; got ${describeValue(engine)}`);
+  }
+  if (voice !== undefined && !(typeof voice === 'string' && voice !== '') && !(typeof voice === 'object' && voice !== null && typeof voice.name === 'string')) {
+    throw new TypeError(`conecurl: readAloud() 'voice' must be a voice's name (readAloudVoices() lists them) or a SpeechSynthesisVoice; got ${describeValue(voice)}`);
+  }
+  for (const [name, value] of [['rate', rate], ['pitch', pitch]]) {
+    const [low, high] = RANGES[name];
+    if (!(Number.isFinite(value) && value >= low && value <= high)) throw new RangeError(`conecurl: readAloud() '${name}' must be a number from ${low} to ${high}, got ${describeValue(value)}`);
+  }
+  if (lang !== undefined && !(typeof lang === 'string' && lang !== '')) throw new TypeError(`conecurl: readAloud() 'lang' must be a language tag such as 'en-GB', got ${describeValue(lang)}`);
+  if (typeof follow !== 'boolean') throw new TypeError(`conecurl: readAloud() 'follow' must be true or false, got ${describeValue(follow)}`);
+  return { engine, voice: typeof voice === 'object' ? voice.name : voice, voiceObject: typeof voice === 'object' ? voice : null, rate, pitch, lang, follow };
+}
+
+export class BookReader {
+  /**
+   * @param {EventTarget} controller  the book, for its events
+   * @param {import('../book/book-wiring.js').BookPort} book
+   * @param {(index: number) => Promise<object|null>} pageText  a document page's text record (null for other books)
+   */
+  constructor(controller, book, pageText) {
+    this._controller = controller;
+    this._book = book;
+    this._pageText = pageText;
+    this._current = null;
+    this._curl = null;  // the word drawn into its page's image while a leaf turns: { page, rects }
+    this._layer = null;
+    this._end = null;   // ends the reading now (Reading's control)
+  }
+
+  /** The reading now, or null. */
+  get current() { return this._current; }
+
+  /** The browser's voices: [{ name, lang, default, local }]. */
+  async voices() {
+    return (await speechVoices()).map(({ name, lang, default: isDefault, local }) => ({ name, lang, default: isDefault, local }));
+  }
+
+  /** Whether readAloud() can read this book: a page has recorded narration, or the browser has a voice. */
+  async can() {
+    return this._book.entries.some((entry) => entry.narration) || (await speechVoices()).length > 0;
+  }
+
+  /** Starts reading at the open page (a reading already running stops first); resolves with the reading. */
+  async start(options) {
+    const settings = checkReadOptions(options);
+    this._current?.stop();
+    if (!settings.engine) settings.engine = await this._speech(settings);
+    this._book.alive();
+    this._current?.stop();  // one started meanwhile
+    this._layer ??= this._makeLayer();
+    const book = this._book;
+    const control = {};
+    const reading = new Reading({
+      openPages: () => book.openPages().filter((page) => page >= 0),
+      pageCount: book.pageCount,
+      emit: book.emit,
+      on: (type, listener) => {
+        this._controller.addEventListener(type, listener);
+        return () => this._controller.removeEventListener(type, listener);
+      },
+      script: (page) => this._script(page),
+      turn: () => book.turns().turn('forward'),
+      showWord: () => this._layer.update(),
+      curlWord: (word) => this._curlWord(word),
+      ended: (ended) => {
+        if (this._current !== ended) return;
+        this._current = null;
+        this._end = null;
+        book.duckSound(false);
+      },
+    }, settings, control);
+    this._current = reading;
+    this._end = control.end;
+    book.duckSound(true);
+    reading.start();
+    return reading;
+  }
+
+  /** The word marks page `index`'s image gets while a leaf turns (page-store.js `decorate`): [] or one mark a line. */
+  marksOn(index) {
+    return this._curl?.page === index ? this._curl.rects.map((rect) => ({ rect, reading: true })) : [];
+  }
+
+  /** The book goes: the reading ends (`readaloudend` with reason 'destroyed'), the mark goes. */
+  stop() {
+    this._end?.('destroyed');
+    this._layer?.remove();
+  }
+
+  // The engine for speech: the browser's, when it has a voice; null where a narrated book can do
+  // without (its pages without narration are passed over); an Error where nothing could read.
+  async _speech(settings) {
+    if (settings.voiceObject) return speechEngine();
+    const voices = await speechVoices();
+    if (voices.length === 0) {
+      if (this._book.entries.some((entry) => entry.narration)) return null;
+      throw new Error('conecurl: readAloud() found no voice: this browser\'s speech synthesis has none. '
+        + 'Install a speech voice, give the pages recorded narration (a page\'s `narration`), or pass an `engine`');
+    }
+    if (settings.voice !== undefined && !voices.some((v) => v.name === settings.voice || v.voice.voiceURI === settings.voice)) {
+      const names = voices.slice(0, 5).map((v) => `'${v.name}'`).join(', ');
+      throw new RangeError(`conecurl: readAloud() has no voice named '${settings.voice}' (this browser has ${voices.length}: ${names}${voices.length > 5 ? ', ...' : ''})`);
+    }
+    return speechEngine();
+  }
+
+  _makeLayer() {
+    const layer = createReadingMarkLayer(this._book.root, () => {
+      const word = this._current?.word;
+      return word && word.rects.length > 0 ? word : null;
+    });
+    this._book.addLayer(layer);
+    this._book.layoutLayers();
+    return layer;
+  }
+
+  async _script(page) {
+    const book = this._book;
+    const entry = book.entries[page];
+    return pageScript(page, {
+      entry,
+      record: () => this._pageText(page),
+      htmlBox: () => (entry.html ? (entry.html.assignedSlot ?? entry.html).parentElement : null),
+      lang: langOf(entry, book),
+    });
+  }
+
+  // The word drawn into (or, null, taken out of) its page's image for a turn; resolves once handed over.
+  async _curlWord(word) {
+    const before = this._curl;
+    this._curl = word && word.rects.length > 0 ? { page: word.page, rects: word.rects } : null;
+    const pages = new Set([before?.page, this._curl?.page].filter((page) => page !== undefined));
+    if (this._book.destroyed()) return;
+    await Promise.all([...pages].map((page) => this._book.store().remark(page).catch(() => {})));
+  }
+}
+
+// A page's language: an HTML page's own (its element's lang), the document's, the book's element's,
+// the web page's, else the browser's.
+function langOf(entry, book) {
+  return entry.html?.closest?.('[lang]')?.lang || book.document()?.lang
+    || book.root.closest?.('[lang]')?.lang || globalThis.document?.documentElement.lang || globalThis.navigator?.language || '';
+}

@@ -1,0 +1,263 @@
+// One reading aloud: the loop that says the open pages' words in order (a speech engine for text,
+// the audio file for recorded narration), marks each word as it is said, turns the book at the end of
+// the open pages and goes on at the next page's first word; and what a reader's own turn does to it.
+// Made by book-reader.js; the object a host holds is this class's instance (`book.readingAloud`).
+import { wordAt } from './page-script.js';
+import { playNarration } from './narration-player.js';
+
+/** A page with nothing to say (no text, no alt) is passed over after this pause. */
+export const SKIP_PAUSE_MS = 700;
+
+// A pause that can itself be paused: what a page with nothing to say plays.
+function silence(ms, onEnd) {
+  let left = ms;
+  let since = performance.now();
+  let timer = setTimeout(onEnd, left);
+  return {
+    pause() {
+      clearTimeout(timer);
+      left -= performance.now() - since;
+    },
+    resume() {
+      since = performance.now();
+      timer = setTimeout(onEnd, Math.max(0, left));
+    },
+    cancel() { clearTimeout(timer); },
+  };
+}
+
+export class Reading {
+  /**
+   * @param {object} book  what a reading needs of the book (book-reader.js): openPages(), pageCount(),
+   *   emit(type, detail), on(type, listener) -> off, script(page), turn(), showWord(word|null),
+   *   curlWord(word|null) -> Promise, ended(reading)
+   * @param {{ engine: object|null, voice?: string, rate: number, pitch: number, lang?: string, follow: boolean }} settings
+   * @param {object} control  filled in with end(reason): how its maker ends it (the book destroyed)
+   */
+  constructor(book, settings, control) {
+    this._book = book;
+    this._settings = settings;
+    this._state = 'reading';
+    this._page = book.openPages()[0];
+    this._word = null;
+    this._speaker = null;   // what says the page now: { pause, resume, cancel, audio?, rate? }
+    this._runs = 0;         // each (re)start of the loop; an older loop stops at its next step
+    this._held = null;      // while paused: the promise the loop waits on, and its release
+    this._own = null;       // our own turn in flight: { started: boolean }
+    this.finished = new Promise((resolve) => { this._finish = resolve; });
+    control.end = (reason) => this._end(reason);
+    this._off = [
+      book.on('turnstart', () => this._onTurnStart()),
+      book.on('turned', () => this._onTurned()),
+      book.on('turncancel', () => this._onTurnCancel()),
+      book.on('pageschange', () => this._end('pageschange')),
+    ];
+  }
+
+  /** 'reading', 'paused', 'waiting' (a reader's turn in flight, with `follow`) or 'ended'. */
+  get state() { return this._state; }
+  /** The page being read. */
+  get page() { return this._page; }
+  /** The word said now: { page, index, text, rects } (rects: [x, y, w, h] fractions of the page), or null. */
+  get word() { return this._word ? { ...this._word, rects: this._word.rects.map((r) => r.slice()) } : null; }
+  /** The <audio> element playing recorded narration now, or null (speech). */
+  get audio() { return this._speaker?.audio ?? null; }
+
+  /** Starts at the first open page. */
+  start() {
+    this._book.emit('readaloudstart', { page: this._page, lang: this._settings.lang ?? null, voice: this._settings.voice ?? null });
+    this._run(this._page, 0);
+  }
+
+  pause() {
+    if (this._state !== 'reading') return;
+    this._state = 'paused';
+    let release;
+    this._held = { wait: new Promise((resolve) => { release = resolve; }), release };
+    this._speaker?.pause();
+    this._book.emit('readaloudpause', { page: this._page });
+  }
+
+  resume() {
+    if (this._state !== 'paused') return;
+    this._state = 'reading';
+    const held = this._held;
+    this._held = null;
+    this._speaker?.resume();
+    held.release();
+    this._book.emit('readaloudresume', { page: this._page });
+  }
+
+  /** Stops reading: the speech or the audio stops, the mark goes, `readaloudend` with reason 'stopped'. */
+  stop() { this._end('stopped'); }
+
+  /**
+   * New voice, rate or pitch, now: narration changes its speed as it plays; speech starts again at
+   * the word being said.
+   */
+  update(changes) {
+    if (this._state === 'ended') return;
+    Object.assign(this._settings, changes);
+    if (this._speaker?.audio) {
+      this._speaker.audio.playbackRate = this._settings.rate;
+    } else if (this._speaker && this._state !== 'waiting') {
+      this._run(this._page, this._word?.page === this._page ? this._word.index : 0);
+    }
+  }
+
+  // ---- the loop --------------------------------------------------------------------------------
+
+  // Reads from word `from` of `page` (an open page) to the end of the open pages, turns, and on.
+  async _run(page, from) {
+    const run = ++this._runs;
+    this._silence();
+    const gone = () => run !== this._runs;
+    try {
+      let pages = this._book.openPages();
+      let at = Math.max(0, pages.indexOf(page));
+      for (;;) {
+        for (; at < pages.length; at++) {
+          const script = await this._book.script(pages[at]);
+          if (gone()) return;
+          this._page = pages[at];
+          this._book.emit('readaloudpage', { page: this._page, source: script.kind });
+          await this._say(script, from, gone);
+          if (gone()) return;
+          from = 0;
+        }
+        const last = pages[pages.length - 1];
+        if (last >= this._book.pageCount() - 1) return this._end('finished');
+        if (this._held) await this._held.wait;
+        if (gone()) return;
+        // The last word said stays marked on the leaf as it curls: drawn into its page's image.
+        await this._book.curlWord(this._word);
+        if (gone()) return;
+        this._own = { started: false };
+        const turned = await this._book.turn().catch(() => false);
+        this._own = null;
+        if (gone()) return;
+        await this._book.curlWord(null);
+        if (!turned) return this._end('finished');
+        pages = this._book.openPages();
+        at = 0;
+      }
+    } catch (error) {
+      if (!gone()) this._end('error', error);
+    }
+  }
+
+  // Says one page's script from word `from`; resolves when it is said (or the loop moved on).
+  async _say(script, from, gone) {
+    if (this._held) await this._held.wait;
+    if (gone()) return;
+    const { words } = script;
+    const { engine, rate, pitch, voice } = this._settings;
+    await new Promise((resolve, reject) => {
+      let mine = null;
+      // A speaker cancelled (the loop moved on) may still call back: only the one speaking now counts.
+      const done = () => {
+        if (this._speaker === mine) this._speaker = null;
+        resolve();
+      };
+      const failed = (error) => {
+        if (this._speaker === mine) this._speaker = null;
+        if (gone()) resolve(); else reject(error);
+      };
+      const said = (index) => { if (!gone() && index >= 0) this._mark(script, index); };
+      this._onCancel = resolve;  // a cancelled page resolves: the loop sees it is gone
+      if (script.kind === 'narration') {
+        mine = playNarration(script.audio, words, { from, rate, onWord: said, onEnd: done, onError: failed });
+      } else if (words.length === 0 || !engine || from >= words.length) {
+        mine = silence(SKIP_PAUSE_MS, done);
+      } else {
+        const offset = words[from].start;
+        mine = engine.speak(script.text.slice(offset), {
+          lang: this._settings.lang ?? script.lang, rate, pitch, voice,
+          onWord: (charIndex) => said(wordAt(words, charIndex + offset)),
+          onEnd: done,
+          onError: failed,
+        });
+      }
+      this._speaker = mine;
+      if (this._state === 'paused') mine?.pause();
+    });
+  }
+
+  _mark(script, index) {
+    if (this._state === 'ended') return;
+    const word = script.words[index];
+    this._word = { page: script.page, index, text: word.text, rects: word.rects };
+    this._book.showWord(this._word);
+    this._book.emit('readaloudword', { page: script.page, index, text: word.text, rects: word.rects.map((r) => r.slice()) });
+  }
+
+  // What says the page now stops, and its page's promise resolves.
+  _silence() {
+    const speaker = this._speaker;
+    this._speaker = null;
+    speaker?.cancel();
+    this._onCancel?.();
+    this._onCancel = null;
+  }
+
+  // ---- a reader's turns ------------------------------------------------------------------------
+
+  _onTurnStart() {
+    if (this._own && !this._own.started) {
+      this._own.started = true;
+      return;
+    }
+    this._readerTurned(false);
+  }
+
+  _onTurned() {
+    if (this._own) return;  // our own turn's landing: the loop goes on
+    if (this._state === 'waiting') {
+      this._state = this._held ? 'paused' : 'reading';
+      this._run(this._book.openPages()[0], 0);
+    } else {
+      this._readerTurned(true);  // a jump: no turnstart came first
+    }
+  }
+
+  _onTurnCancel() {
+    if (this._state !== 'waiting') return;
+    this._state = this._held ? 'paused' : 'reading';
+    this._run(this._word?.page ?? this._page, this._word?.index ?? 0);  // a drag let go: on where it was
+  }
+
+  // A reader turned (a drag, a key, flip()): reading stops, or with `follow` waits to go on at the new page.
+  _readerTurned(landed) {
+    if (this._state === 'ended') return;
+    if (!this._settings.follow) {
+      this._end('turned');
+      return;
+    }
+    this._runs++;
+    this._silence();
+    this._word = null;
+    this._book.showWord(null);
+    if (landed) {
+      this._run(this._book.openPages()[0], 0);
+    } else {
+      this._state = 'waiting';
+    }
+  }
+
+  _end(reason, error) {
+    if (this._state === 'ended') return;
+    this._state = 'ended';
+    this._runs++;
+    this._silence();
+    this._held?.release();
+    this._held = null;
+    this._word = null;
+    for (const off of this._off) off();
+    this._book.showWord(null);
+    this._book.curlWord(null).catch(() => {});
+    const detail = { reason, page: this._page, ...(error ? { error } : {}) };
+    this._book.ended(this);
+    this._book.emit('readaloudend', detail);
+    this._finish(detail);
+  }
+}
