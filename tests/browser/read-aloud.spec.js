@@ -305,3 +305,115 @@ test('browser: where speech synthesis has no voice, readAloud() rejects with an 
   expect(result.reading).toBeNull();
   expect(result.bad).toMatch(/'rate' must be a number from 0.1 to 10, got 20/);
 });
+
+// A book of numbered image pages (tests/browser/fixtures/test-pages.js) whose pages 0, 1 and 3 carry recorded
+// narration made in the page by web/demo/story-voice.js (a short generated WAV and its word times, each
+// word given a place on its page); page 1's word times come as a WebVTT file; page 2 has only an alt.
+async function openNarratedBook(page) {
+  // No speech voice here: the narrated pages play, the page without narration is passed over.
+  await page.addInitScript(() => {
+    const synth = new EventTarget();
+    Object.assign(synth, { getVoices: () => [], speak() { throw new Error('no voice'); }, cancel() {}, pause() {}, resume() {} });
+    Object.defineProperty(window, 'speechSynthesis', { value: synth, configurable: true });
+  });
+  await page.goto('/tests/browser/fixtures/flipbook-fixture.html');
+  await page.waitForFunction(() => document.body.dataset.ready);
+  await page.evaluate(async () => {
+    const { narrate, wordTimesVtt } = await import('/web/demo/story-voice.js');
+    const lines = { 0: 'Once upon a time', 1: 'a paper boat set sail', 3: 'The end.' };
+    const placed = (words) => words.map((w, i) => ({ ...w, rect: [0.1 + 0.2 * (i % 4), 0.2 + 0.1 * Math.floor(i / 4), 0.15, 0.06] }));
+    const pages = Array.from({ length: 4 }, (_, i) => {
+      const entry = { src: window.makeNumberedPage(i) };
+      if (!lines[i]) return { ...entry, alt: 'A picture without words' };
+      const said = narrate(lines[i].split(' '), { seed: i + 1 });
+      const src = URL.createObjectURL(new Blob([said.wav], { type: 'audio/wav' }));
+      const words = placed(said.words);
+      if (i !== 1) return { ...entry, narration: { src, words } };
+      // Page 1: a WebVTT file, a cue a word, each giving its place as JSON.
+      const vtt = wordTimesVtt(words).replace(/^(\d\d:[\d:.]+ --> [\d:.]+)\n(.+)$/gm, (whole, timing, text) => {
+        const word = words.find((w) => w.text === text);
+        return `${timing}\n${JSON.stringify({ text, rect: word.rect })}`;
+      });
+      return { ...entry, narration: { src, words: URL.createObjectURL(new Blob([vtt], { type: 'text/vtt' })) } };
+    });
+    window.narrated = { lines, pages };
+    window.book = await window.Flipbook.create(document.getElementById('container'), { pages, display: 'double', duration: 300 });
+    await window.book.whenIdle();
+    // The reading starts from a click, as a reader's would (the browser plays audio after a gesture).
+    const button = document.createElement('button');
+    button.id = 'read';
+    button.textContent = 'Read';
+    button.addEventListener('click', () => { window.started = window.book.readAloud().catch((e) => e); });
+    document.body.append(button);
+    window.log = [];
+    let audio = null;
+    window.book.addEventListener('readaloudword', (e) => {
+      const reading = window.book.readingAloud;
+      if (reading.audio && reading.audio !== audio) {
+        audio = reading.audio;
+        const page = e.detail.page;
+        audio.addEventListener('ended', () => window.log.push({ type: 'ended', page }));
+      }
+      window.log.push({ type: 'word', page: e.detail.page, text: e.detail.text, index: e.detail.index, time: reading.audio.currentTime,
+        marks: document.querySelectorAll('[data-reading]').length });
+    });
+    for (const type of ['readaloudpage', 'turnstart', 'turned', 'readaloudend']) {
+      window.book.addEventListener(type, (e) => window.log.push({ type, ...e.detail, ...(type === 'turnstart' ? { audioEnded: audio?.ended } : {}) }));
+    }
+  });
+}
+
+test('browser: recorded narration (a generated WAV, its word times, one page\'s as WebVTT) plays, marks each word at its time by the audio\'s currentTime, and turns when the audio ends', async ({ page }) => {
+  test.setTimeout(180_000);
+  await openNarratedBook(page);
+  expect(await page.evaluate(() => window.book.canReadAloud())).toBe(true);  // no voice, but narration
+  await page.click('#read');
+  await page.waitForFunction(() => window.log.some((e) => e.type === 'readaloudend'));
+  const { log, lines, times } = await page.evaluate(async () => {
+    const { narrate } = await import('/web/demo/story-voice.js');
+    const { lines } = window.narrated;
+    const times = Object.fromEntries(Object.entries(lines).map(([i, line]) => [i, narrate(line.split(' '), { seed: Number(i) + 1 }).words]));
+    return { log: window.log, lines, times };
+  });
+  expect(log.filter((e) => e.type === 'readaloudend')).toEqual([{ type: 'readaloudend', reason: 'finished', page: 3 }]);
+  // Every word of each narrated page, in order, each marked no sooner than its time in the audio.
+  for (const [index, line] of Object.entries(lines)) {
+    const words = log.filter((e) => e.type === 'word' && e.page === Number(index));
+    expect(words.map((w) => w.text)).toEqual(line.split(' '));
+    words.forEach((w, k) => {
+      expect(w.time).toBeGreaterThanOrEqual(times[index][k].start);
+      expect(w.marks).toBe(1);  // one rect a word, laid over the page while it lies flat
+    });
+  }
+  // The pages in order, what each read; the turn after the audio of the open pages ended.
+  expect(log.filter((e) => e.type === 'readaloudpage').map((e) => [e.page, e.source]))
+    .toEqual([[0, 'narration'], [1, 'narration'], [2, 'alt'], [3, 'narration']]);
+  // (The book hears the audio's `ended` before this test's listener does: the turn starts in between.)
+  const order = log.filter((e) => ['ended', 'turnstart', 'turned'].includes(e.type))
+    .map((e) => (e.type === 'ended' ? `ended ${e.page}` : e.type === 'turnstart' ? `turnstart after an ended audio: ${e.audioEnded}` : e.type));
+  expect(order.filter((e) => !e.startsWith('ended'))).toEqual(['turnstart after an ended audio: true', 'turned', 'turnstart after an ended audio: true', 'turned']);
+  expect(order.filter((e) => e.startsWith('ended'))).toEqual(['ended 0', 'ended 1', 'ended 3']);
+  expect(log.findIndex((e) => e.type === 'turnstart')).toBeGreaterThan(log.findLastIndex((e) => e.type === 'word' && e.page === 0));
+});
+
+test('browser: a narrated page\'s mark follows the audio when it is paused and seeked, and stop() silences and lets the audio go', async ({ page }) => {
+  test.setTimeout(180_000);
+  await openNarratedBook(page);
+  await page.click('#read');
+  await page.waitForFunction(() => window.log.some((e) => e.type === 'word' && e.page === 0));
+  const seeked = await page.evaluate(async () => {
+    const reading = window.book.readingAloud;
+    reading.pause();
+    const { audio } = reading;
+    const words = window.narrated.pages[0].narration.words;
+    audio.currentTime = (words[3].start + words[3].end) / 2;
+    await new Promise((resolve) => audio.addEventListener('seeked', resolve, { once: true }));
+    const after = { state: reading.state, paused: audio.paused, word: reading.word.text, index: reading.word.index };
+    audio.currentTime = words[1].start + 0.01;  // back: the mark goes back with it
+    await new Promise((resolve) => audio.addEventListener('seeked', resolve, { once: true }));
+    const back = reading.word.text;
+    reading.stop();
+    return { after, back, audioPaused: audio.paused, src: audio.getAttribute('src'), marks: document.querySelectorAll('[data-reading]').length, reading: window.book.readingAloud };
+  });
+  expect(seeked).toEqual({ after: { state: 'paused', paused: true, word: 'time', index: 3 }, back: 'upon', audioPaused: true, src: null, marks: 0, reading: null });
+});

@@ -41,7 +41,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     rememberPage: 'a non-empty string (the key it is kept under)',
     antialias: "'auto', true or false",
     resolution: "'auto', 'full' or a positive number of device pixels per CSS pixel",
-    on: 'an object of listeners by event name (ready, progress, pageerror, turnstart, turned, turncancel, resize, zoom, sharpened, link, pageschange, error, searchchange, fullscreenchange, download, print, passagelink, displaychange, middletap)',
+    on: 'an object of listeners by event name (ready, progress, pageerror, turnstart, turned, turncancel, resize, zoom, sharpened, link, pageschange, error, searchchange, fullscreenchange, download, print, passagelink, displaychange, middletap, readaloudstart, readaloudpage, readaloudword, readaloudpause, readaloudresume, readaloudend)',
     outline: 'an array of { title, page, children? }',
     download: 'a URL string',
     // viewer (issue 23): the shape here; the part and label names are the viewer's (viewer-options.test.mjs)
@@ -103,7 +103,7 @@ test('node: pages must be a non-empty array of page sources; each entry is check
   refuses({ pages: [{ alt: 'no source' }] }, `option 'pages[0].src' must be ${sources}; got undefined`);
   refuses({ pages: [{ src: 'a.png', alt: 5 }] }, "option 'pages[0].alt' must be a string (the page's text for screen readers); got 5");
   refuses({ pages: [{ src: 'a.png', hard: 'yes' }] }, "option 'pages[0].hard' must be true or false; got \"yes\"");
-  refuses({ pages: [{ src: 'a.png', title: 'x' }] }, "option 'pages[0]' has an unknown key 'title' (allowed: src, html, alt, hard, zoomSrc, thumbSrc, links)");
+  refuses({ pages: [{ src: 'a.png', title: 'x' }] }, "option 'pages[0]' has an unknown key 'title' (allowed: src, html, alt, hard, zoomSrc, thumbSrc, links, narration)");
   refuses({ pages: [{ src: 'a.png', zoomSrc: () => 'b.png' }] },
     "option 'pages[0].zoomSrc' must be a URL, HTMLImageElement, HTMLCanvasElement, ImageBitmap or Blob; got a function");
   refuses({ pages: [{ src: 'a.png', links: {} }] }, "option 'pages[0].links' must be an array of { rect, href } or { rect, page }; got an object");

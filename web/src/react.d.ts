@@ -32,6 +32,13 @@ export interface FlipbookEventProps {
   onDisplayChange?: (event: FlipbookEventMap['displaychange']) => void;
   /** A tap or click on the middle of the book, which turns nothing (a reader's bar can come back on it). */
   onMiddleTap?: (event: FlipbookEventMap['middletap']) => void;
+  /** Reading aloud started (readAloud()), moved to a page, said a word, paused, resumed or ended. */
+  onReadAloudStart?: (event: FlipbookEventMap['readaloudstart']) => void;
+  onReadAloudPage?: (event: FlipbookEventMap['readaloudpage']) => void;
+  onReadAloudWord?: (event: FlipbookEventMap['readaloudword']) => void;
+  onReadAloudPause?: (event: FlipbookEventMap['readaloudpause']) => void;
+  onReadAloudResume?: (event: FlipbookEventMap['readaloudresume']) => void;
+  onReadAloudEnd?: (event: FlipbookEventMap['readaloudend']) => void;
   /** The book could not be built, or a prop was refused (a TypeError naming it); without it, the console hears. */
   onError?: (event: CustomEvent<{ error: Error }>) => void;
 }

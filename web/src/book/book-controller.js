@@ -2,14 +2,16 @@
 // of Flipbook and StaticBook. It holds the options, pages and their states (page-store.js), zoom, size, the
 // open pages and events; turns are book-turns.js; its parts are wired to one port (`_makePort`) by
 // book-wiring.js and document-wiring.js (document API, viewer). A surface's calls: docs/architecture.md.
+// Over 350 lines because it is the whole public API of a book: each member a line or two here, its work in its parts.
 import { createShell } from './book-shell.js';
 import { BookEvents } from './book-events.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { BookTurns } from './book-turns.js';
 import {
   attachBookInput, followSurface, loadFirstView, loadOptionalParts, makeHtmlPages, makeLinkLayer, makeLivePages,
-  makePageStore, makeReadAloud, makeZoom, openingPageOf, prefetchOpening, startCompanions, watchBookSize,
+  makePageStore, makeZoom, openingPageOf, prefetchOpening, startCompanions, watchBookSize,
 } from './book-wiring.js';
+import { makeReadAloud } from './book-read-aloud.js';
 import { attachViewer, makeDocumentApi } from '../document/document-wiring.js';
 import { MAX_ZOOM, displayFor, openPages } from '../engine/layout.js';
 
@@ -167,11 +169,8 @@ export class BookController extends EventTarget {
   /** Prints the pages, unless a `print` listener prevents it; resolves whether it did. */
   async print() { this._alive(); return this._doc.print(); }
 
-  // ---- read-aloud (book-wiring.js makeReadAloud: read-aloud/ loaded on first use) ----
-  /**
-   * Reads the book aloud from the open page, word by word, turning at the end of the open pages:
-   * resolves with the reading ({ state, page, word, audio, pause(), resume(), stop(), update(), finished }).
-   */
+  // ---- read-aloud (book-read-aloud.js: read-aloud/ loaded on first use) ----
+  /** Reads aloud from the open page, word by word, turning at the end of the open pages; resolves with the reading. */
   async readAloud(options) { this._alive(); return this._reading.start(options); }
   /** The reading aloud now (what readAloud() resolved with), or null. */
   get readingAloud() { return this._reading.current(); }

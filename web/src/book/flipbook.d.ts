@@ -40,6 +40,92 @@ export interface PageEntry {
   thumbSrc?: PageImage;
   /** Clickable areas of the page, active while it lies open and flat. */
   links?: PageLink[];
+  /** Recorded narration: readAloud() plays it and marks each word at its time, in place of a speech voice. */
+  narration?: PageNarration;
+}
+
+/** A word of recorded narration: when it is said (seconds into the audio) and where it lies on the page. */
+export interface NarrationWord {
+  start: number;
+  end: number;
+  text: string;
+  /** [x, y, width, height] as fractions of the page (like a link's); needed where the page is an image, else found in the page's text. */
+  rect?: [number, number, number, number];
+}
+
+/** A page's recorded narration: its audio file and the times of its words. */
+export interface PageNarration {
+  /** The audio's URL (any format the browser plays: WAV, MP3, Ogg, AAC...). */
+  src: string;
+  /** The words with their times, or the URL of a WebVTT file (a cue a word, or <00:01.200> timestamps in a cue) or of a JSON array of them. */
+  words: NarrationWord[] | string;
+}
+
+/** Something that speaks text: readAloud({ engine }) takes any object with this speak(); the default wraps speechSynthesis. */
+export interface SpeechEngine {
+  speak(text: string, options: {
+    lang: string; rate: number; pitch: number; voice?: string;
+    /** Call at each word: its first character's index in `text`, and its length. */
+    onWord(charIndex: number, charLength: number): void;
+    /** Call once when all of `text` was said. */
+    onEnd(): void;
+    /** Call when it cannot go on: the reading ends with reason 'error'. */
+    onError?(error: Error): void;
+  }): { pause(): void; resume(): void; cancel(): void };
+}
+
+export interface ReadAloudOptions {
+  /** What speaks the pages without narration; default the browser's speechSynthesis. */
+  engine?: SpeechEngine;
+  /** A voice's name (readAloudVoices() lists them), or a SpeechSynthesisVoice; default the browser's for the language. */
+  voice?: string | SpeechSynthesisVoice;
+  /** Speed, 0.1 to 10 (default 1); for narration, the audio's playbackRate. */
+  rate?: number;
+  /** 0 to 2 (default 1). */
+  pitch?: number;
+  /** BCP 47 language of the speech; default the page's: an HTML page's lang, the document's, the web page's. */
+  lang?: string;
+  /** A reader's own turn moves the reading to the new page instead of stopping it (default false). */
+  follow?: boolean;
+}
+
+/** A word being read: its place in the page's words, its text and its rectangles (fractions of the page, one a line). */
+export interface ReadAloudWord {
+  page: number;
+  index: number;
+  text: string;
+  rects: Array<[number, number, number, number]>;
+}
+
+/** Why a reading ended: all read to the book's end, stop(), a reader's turn, pages changed, the book destroyed, or an error. */
+export type ReadAloudEndReason = 'finished' | 'stopped' | 'turned' | 'pageschange' | 'destroyed' | 'error';
+
+/** A reading aloud, as readAloud() resolves with it and `readingAloud` holds it until it ends. */
+export interface ReadAloud {
+  /** 'waiting': a reader's turn in flight, with `follow`. */
+  readonly state: 'reading' | 'paused' | 'waiting' | 'ended';
+  /** The page being read. */
+  readonly page: number;
+  /** The word said now, or null. */
+  readonly word: ReadAloudWord | null;
+  /** The <audio> element playing recorded narration now (null while a speech engine speaks). */
+  readonly audio: HTMLAudioElement | null;
+  pause(): void;
+  resume(): void;
+  /** Stops: the speech or audio stops, the mark goes, `readaloudend` with reason 'stopped'. */
+  stop(): void;
+  /** A new voice, rate or pitch at once: narration changes speed as it plays; speech starts again at the word being said. */
+  update(changes: { voice?: string; rate?: number; pitch?: number }): void;
+  /** Resolves with `readaloudend`'s detail when the reading ends. */
+  readonly finished: Promise<{ reason: ReadAloudEndReason; page: number; error?: Error }>;
+}
+
+/** A voice of the browser's speech synthesis. */
+export interface ReadAloudVoice {
+  name: string;
+  lang: string;
+  default: boolean;
+  local: boolean;
 }
 
 export interface FlipbookOptions {
@@ -382,6 +468,17 @@ export interface FlipbookEventMap {
    * while zoomed in; whatever `turnArea` is.
    */
   middletap: CustomEvent<{ x: number; y: number }>;
+  // read-aloud (issue 31)
+  /** readAloud() started reading at `page`, in `lang` (null: each page's) with `voice` (null: the default). */
+  readaloudstart: CustomEvent<{ page: number; lang: string | null; voice: string | null }>;
+  /** Reading reached `page`: it plays its recorded narration, says its text or alt, or passes over it ('none'). */
+  readaloudpage: CustomEvent<{ page: number; source: 'narration' | 'text' | 'alt' | 'none' }>;
+  /** A word is being said: marked on its page (`data-reading` over the flat page, in its image while it turns). */
+  readaloudword: CustomEvent<ReadAloudWord>;
+  readaloudpause: CustomEvent<{ page: number }>;
+  readaloudresume: CustomEvent<{ page: number }>;
+  /** The reading ended, and why. */
+  readaloudend: CustomEvent<{ reason: ReadAloudEndReason; page: number; error?: Error }>;
 }
 
 /** What the page sound (the `sound` option) is doing. */
@@ -399,6 +496,8 @@ export interface PageSoundStatus {
   speed: number;
   /** Landing taps played so far. */
   taps: number;
+  /** A voice is reading aloud: the whole page sound is lowered under it. */
+  ducked: boolean;
 }
 
 /** A leaf lying open at the settled position, and where it lies on the canvas (CSS px from its top-left). */
@@ -530,6 +629,20 @@ export class BookController extends EventTarget {
   download(): Promise<boolean>;
   /** Prints every page (drawn to images in a hidden frame) unless a `print` listener prevents it; resolves whether it did. */
   print(): Promise<boolean>;
+  // read-aloud (issue 31)
+  /**
+   * Reads the book aloud from the open page, word by word (recorded narration where a page has it, else
+   * the engine: the browser's speech synthesis), marking each word, turning at the end of the open pages.
+   * A reading already running stops first. Rejects with an Error where nothing can read (no voice and no
+   * narration), a TypeError or RangeError for a bad option.
+   */
+  readAloud(options?: ReadAloudOptions): Promise<ReadAloud>;
+  /** The reading aloud now, or null. */
+  readonly readingAloud: ReadAloud | null;
+  /** The browser's speech voices ([] where it has none; waits briefly for them to be listed). */
+  readAloudVoices(): Promise<ReadAloudVoice[]>;
+  /** Whether readAloud() can read this book: a page has narration, or the browser has a voice. */
+  canReadAloud(): Promise<boolean>;
   destroy(): void;
   addEventListener<K extends keyof FlipbookEventMap>(type: K, listener: (event: FlipbookEventMap[K]) => void,
     options?: boolean | AddEventListenerOptions): void;

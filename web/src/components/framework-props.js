@@ -17,7 +17,8 @@ export const FIXED_PROPS = OPTION_PROPS.filter((name) => !LIVE_OPTIONS.includes(
 const HANDLER_WORDS = {
   pageerror: 'PageError', turnstart: 'TurnStart', turncancel: 'TurnCancel', pageschange: 'PagesChange',
   searchchange: 'SearchChange', fullscreenchange: 'FullscreenChange', passagelink: 'PassageLink',
-  displaychange: 'DisplayChange', middletap: 'MiddleTap',
+  displaychange: 'DisplayChange', middletap: 'MiddleTap', readaloudstart: 'ReadAloudStart', readaloudpage: 'ReadAloudPage',
+  readaloudword: 'ReadAloudWord', readaloudpause: 'ReadAloudPause', readaloudresume: 'ReadAloudResume', readaloudend: 'ReadAloudEnd',
 };
 /** 'turned' -> 'onTurned', 'pageerror' -> 'onPageError', ... for every book event. */
 export const EVENT_HANDLERS = Object.fromEntries(BOOK_EVENTS.map((type) => [

@@ -21,12 +21,13 @@ export function playNarration(src, words, { from = 0, rate = 1, onWord, onEnd, o
   let said = -1;
   let frame = 0;
   let over = false;
+  // The word at currentTime; words a late frame passed over are still told, in order (a seek back is not).
   const follow = () => {
     const now = wordAtTime(words, audio.currentTime);
-    if (now !== said && now >= 0) {
-      said = now;
-      onWord?.(now);
-    }
+    if (now === said || now < 0) return;
+    const from = now > said ? said + 1 : now;
+    said = now;
+    for (let i = from; i <= now; i++) onWord?.(i);
   };
   const tick = () => {
     follow();
