@@ -417,3 +417,52 @@ test('browser: a narrated page\'s mark follows the audio when it is paused and s
   });
   expect(seeked).toEqual({ after: { state: 'paused', paused: true, word: 'time', index: 3 }, back: 'upon', audioPaused: true, src: null, marks: 0, reading: null });
 });
+
+test('browser: live HTML pages are read from their text, in their own language, each word marked over its place in the element', async ({ page }) => {
+  await page.goto('/tests/browser/fixtures/html-fixture.html');
+  await page.waitForFunction(() => document.body.dataset.ready);
+  await page.evaluate(async () => {
+    const french = window.makeTextPage('Le café est chaud.');
+    french.lang = 'fr-FR';
+    const pages = [window.makeTextPage('The cat sat on the mat.'), french, window.makeNumberedPage(2), window.makeNumberedPage(3)];
+    window.book = await window.Flipbook.create(window.container, { pages, display: 'single', duration: 300 });
+    await window.book.whenIdle();
+  });
+  await installEngine(page);
+  await page.evaluate(() => window.book.readAloud({ engine: window.engine }));
+  await page.waitForFunction(() => window.engine.calls.length === 1);
+  const first = await page.evaluate(() => {
+    window.sayWords(2);  // "The cat": the mark lies over "cat" in the page's element
+    const mark = document.querySelector('[data-reading]').getBoundingClientRect();
+    const range = document.createRange();
+    const text = document.querySelector('.html-page p').firstChild;  // page 0's paragraph
+    range.setStart(text, 4);
+    range.setEnd(text, 7);
+    const word = range.getBoundingClientRect();
+    return { call: window.calls()[0], mark: mark.toJSON(), word: word.toJSON() };
+  });
+  expect(first.call.text.trim()).toBe('The cat sat on the mat.');
+  expect(first.call.lang).toBe('en');  // the web page's <html lang="en">
+  // The mark covers the word (a pixel or two of padding around it).
+  expect(first.mark.left).toBeLessThanOrEqual(first.word.left + 0.5);
+  expect(first.mark.right).toBeGreaterThanOrEqual(first.word.right - 0.5);
+  expect(first.mark.top).toBeLessThanOrEqual(first.word.top + 0.5);
+  expect(first.mark.bottom).toBeGreaterThanOrEqual(first.word.bottom - 0.5);
+  expect(first.mark.width).toBeLessThan(first.word.width + 8);
+  await page.evaluate(() => { window.sayWords(100); window.finish(); });
+  await page.waitForFunction(() => window.engine.calls.length === 2);
+  const second = await page.evaluate(() => window.calls()[1]);
+  expect(second.text.trim()).toBe('Le café est chaud.');
+  expect(second.lang).toBe('fr-FR');
+  // Pages 2 and 3 are images without alt or text: passed over after a short pause each, to the end.
+  await page.evaluate(() => {
+    window.ending = window.book.readingAloud.finished;
+    window.sayWords(100);
+    window.finish();
+  });
+  const end = await page.evaluate(() => window.ending);
+  expect(end).toEqual({ reason: 'finished', page: 3 });
+  const pages = await page.evaluate(() => window.events.filter((e) => e.type === 'readaloudpage').map((e) => [e.page, e.source]));
+  expect(pages).toEqual([[0, 'text'], [1, 'text'], [2, 'none'], [3, 'none']]);
+  expect(await page.evaluate(() => window.engine.calls.length)).toBe(2);
+});
