@@ -191,6 +191,26 @@ test('browser: a reader\'s own turn stops the reading at once; with follow: true
   await page.evaluate(() => window.book.readingAloud.stop());
 });
 
+test('browser: with follow: true, a drag let go short of the spine (turnstart, then turncancel) goes on at the word it was on', async ({ page }) => {
+  await openPdfBook(page, { startPage: 1 });
+  await installEngine(page);
+  await page.evaluate(() => window.book.readAloud({ engine: window.engine, follow: true }));
+  await page.waitForFunction(() => window.engine.calls.length === 1);
+  await page.evaluate(() => window.sayWords(4));  // "Chapter One: Zebras The"
+  // What the drag module tells the book as a reader takes hold of a corner and lets it fall back.
+  const held = await page.evaluate(() => {
+    window.book.dispatchEvent(new CustomEvent('turnstart', { detail: { direction: 'forward', page: 1, drag: true } }));
+    return { state: window.book.readingAloud.state, cancelled: window.calls()[0].cancelled, marks: document.querySelectorAll('[data-reading]').length };
+  });
+  expect(held).toEqual({ state: 'waiting', cancelled: true, marks: 0 });
+  await page.evaluate(() => window.book.dispatchEvent(new CustomEvent('turncancel', { detail: { page: 1 } })));
+  await page.waitForFunction(() => window.engine.calls.length === 2);
+  const again = await page.evaluate(() => ({ text: window.calls()[1].text, state: window.book.readingAloud.state }));
+  expect(again.state).toBe('reading');
+  expect(again.text.split(/\s+/)).toEqual(pageWords(1).slice(3));  // from "The", the word it was on
+  await page.evaluate(() => window.book.readingAloud.stop());
+});
+
 test('browser: stop() and destroy() mid-word leave nothing behind: engine cancelled, no mark, no listener, readaloudend said once', async ({ page }) => {
   await openPdfBook(page, { sound: true });
   await installEngine(page);

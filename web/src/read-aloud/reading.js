@@ -44,6 +44,7 @@ export class Reading {
     this._runs = 0;         // each (re)start of the loop; an older loop stops at its next step
     this._held = null;      // while paused: the promise the loop waits on, and its release
     this._own = null;       // our own turn in flight: { started: boolean }
+    this._heldAt = null;    // where a reader's drag found the reading: { page, index }, to go on there if it falls back
     this.finished = new Promise((resolve) => { this._finish = resolve; });
     control.end = (reason) => this._end(reason);
     this._off = [
@@ -223,7 +224,8 @@ export class Reading {
   _onTurnCancel() {
     if (this._state !== 'waiting') return;
     this._state = this._held ? 'paused' : 'reading';
-    this._run(this._word?.page ?? this._page, this._word?.index ?? 0);  // a drag let go: on where it was
+    const { page, index } = this._heldAt;
+    this._run(page, index);  // a drag let go: on at the word it was on
   }
 
   // A reader turned (a drag, a key, flip()): reading stops, or with `follow` waits to go on at the new page.
@@ -235,6 +237,7 @@ export class Reading {
     }
     this._runs++;
     this._silence();
+    this._heldAt = { page: this._word?.page ?? this._page, index: this._word?.index ?? 0 };
     this._word = null;
     this._book.showWord(null);
     if (landed) {
