@@ -330,6 +330,8 @@ export interface ControlParts {
   download?: boolean;
   /** Default: shown for a PDF book. */
   print?: boolean;
+  /** Read aloud (play and pause) and Voice and speed: shown once the book's `canReadAloud()` resolves true. */
+  readAloud?: boolean;
 }
 
 /** The viewer's texts (the `labels` option); `{n}` and `{total}` are filled in with numbers. */
@@ -371,6 +373,18 @@ export interface ViewerLabels {
   read?: string;
   /** The reading bar's button that leaves reading mode: 'Exit reading'. */
   exitReading?: string;
+  /** The button that starts reading aloud, or resumes it: 'Read aloud'. */
+  readAloud?: string;
+  /** That button while the book reads aloud: 'Pause reading'. */
+  pauseReading?: string;
+  /** The button of the voice and speed popup, and the popup's name: 'Voice and speed'. */
+  readAloudSettings?: string;
+  /** The popup's voice select: 'Voice'. */
+  voice?: string;
+  /** The popup's speed select: 'Speed'. */
+  speed?: string;
+  /** The voice select's first choice, no voice named: "Browser's default". */
+  defaultVoice?: string;
 }
 
 /** Where a page stands: not wanted yet ('idle'), loading, loaded, or failed (with why, as `pageerror` said). */

@@ -8,6 +8,7 @@ import { checkControls, checkLabels, shownParts } from './viewer-options.js';
 import { installViewerStyle } from './viewer-style.js';
 import { createToolbar } from './toolbar.js';
 import { createPanel } from './panel.js';
+import { createReadAloudMenu } from './read-aloud-menu.js';
 import { thumbnailsPanel } from './thumbnails-panel.js';
 import { contentsPanel } from './contents-panel.js';
 import { searchPanel } from './search-panel.js';
@@ -59,8 +60,12 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
     thumbnails: () => toggle('thumbnails'),
     contents: () => toggle('contents'),
     search: () => toggle('search'),
+    readAloud: () => readAloud.press(),
+    readAloudSettings: () => readAloud.toggleMenu(),
   }, { fullscreenKey: fullscreenApi ? 'fullscreen' : 'read' });
   viewer.append(toolbar.element, toolbar.menu.element);
+  const readAloud = parts.readAloud ? readAloudPart() : null;
+  if (readAloud) viewer.append(readAloud.menu.element);
   const contents = [];
   for (const [kind, make] of Object.entries(PANEL_KINDS)) {
     if (!parts[kind]) continue;
@@ -71,7 +76,7 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
   const openPanel = () => Object.values(panels).find((panel) => panel.isOpen());
   reading = readingMode(book, {
     container, viewer, toolbar,
-    busy: () => Boolean(openPanel()) || toolbar.menu.isOpen(),
+    busy: () => Boolean(openPanel()) || toolbar.menu.isOpen() || Boolean(readAloud?.menu.isOpen()),
     changed: () => { layout(); show(); },
   });
 
@@ -131,6 +136,85 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
       });
     }
     toolbar.fit();
+    readAloud?.menu.place();
+  }
+
+  // Read aloud: its two buttons shown once the book says it can read aloud. Read aloud starts reading
+  // with the popup's voice and speed, pauses and resumes; it follows the book's readaloud* events, so
+  // it says what the reading does whoever started or paused it. The popup's choices change the reading
+  // under way at once.
+  function readAloudPart() {
+    const button = toolbar.buttons.readAloud;
+    const live = () => {
+      const now = book.readingAloud;
+      return now && now.state !== 'ended' ? now : null;
+    };
+    // A call whose failure the viewer has nothing to say about (the book's events say what happened).
+    const quietly = (call) => {
+      try {
+        Promise.resolve(call()).catch(() => {});
+      } catch { /* the reading had ended */ }
+    };
+    const menu = createReadAloudMenu(text, toolbar.buttons.readAloudSettings, {
+      anchorOf: () => toolbar.focusTarget('readAloudSettings'),
+      voices: () => book.readAloudVoices(),
+      lang: () => languageOf(book.element),
+      changed: (change) => {
+        const now = live();
+        if (now) quietly(() => now.update(change));
+      },
+    });
+    const showState = (state) => {  // 'reading' (or waiting), 'paused' or 'ended'
+      const on = state === 'reading' || state === 'waiting';
+      button.setAttribute('aria-pressed', String(on));
+      toolbar.relabel('readAloud', on ? 'pauseReading' : 'readAloud', on ? 'pauseReading' : 'readAloud');
+    };
+    const showNow = () => showState(live()?.state ?? 'ended');
+    const events = {
+      readaloudstart: () => showState('reading'),
+      readaloudresume: () => showState('reading'),
+      readaloudpause: () => showState('paused'),
+      // Ended; and once the book's own work for that end is done, what it reads now (a reading stopped
+      // by a new readAloud() may say it ended after the new one started).
+      readaloudend: () => {
+        showState('ended');
+        queueMicrotask(showNow);
+      },
+    };
+    for (const [type, listener] of Object.entries(events)) book.addEventListener(type, listener);
+    let removed = false;
+    if (typeof book.canReadAloud === 'function') {
+      Promise.resolve().then(() => book.canReadAloud()).then((can) => {
+        if (can !== true || removed) return;
+        toolbar.setPresent('readAloud', true);
+        showNow();
+      }, () => {});
+    }
+    return {
+      menu,
+      press() {
+        const now = live();
+        if (now?.state === 'paused') quietly(() => now.resume());
+        else if (now) quietly(() => now.pause());
+        else {
+          // Called within the press (speech may want the reader's gesture); a refusal leaves the button as it was.
+          let started;
+          try {
+            started = book.readAloud(menu.choice());
+          } catch (error) {
+            started = Promise.reject(error);
+          }
+          Promise.resolve(started).then(showNow, showNow);
+        }
+        showNow();
+      },
+      toggleMenu: () => (menu.isOpen() ? menu.close(false) : menu.open()),
+      remove() {
+        removed = true;
+        for (const [type, listener] of Object.entries(events)) book.removeEventListener(type, listener);
+        menu.remove();
+      },
+    };
   }
 
   // A search hit shown while a sheet covers part of the screen: when its place on the page lies under
@@ -196,6 +280,7 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
       coarse.removeEventListener?.('change', resized);
       for (const [type, listener] of Object.entries(events)) book.removeEventListener(type, listener);
       for (const part of contents) part.remove();
+      readAloud?.remove();
       for (const panel of Object.values(panels)) panel.close();
       toolbar.remove();
       viewer.remove();
@@ -203,4 +288,14 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
       Object.assign(book.element.style, bookStyle);
     },
   };
+}
+
+// The language `element` is in: its own or an ancestor's lang, through shadow roots (a <cone-flipbook
+// lang="fr">), else the document's.
+function languageOf(element) {
+  for (let node = element; node; node = node.getRootNode().host) {
+    const given = node.closest('[lang]');
+    if (given) return given.lang;
+  }
+  return element.ownerDocument.documentElement.lang;
 }

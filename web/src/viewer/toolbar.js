@@ -2,6 +2,8 @@
 // and the page field ("3 of 12"; a page number typed and Enter opens it), in one role="toolbar" row
 // with roving focus; the controls its width cannot hold move into the More menu (more-menu.js),
 // measured, least used first. What the buttons do is the caller's (attach-controls.js): `actions` by part.
+// A part may be made but absent (Read aloud, until the book says it can read aloud): hidden, and fitted
+// as if it were not there.
 import { icon } from './viewer-icons.js';
 import { fill } from './viewer-labels.js';
 import { rovingFocus } from './roving-focus.js';
@@ -10,7 +12,7 @@ import { createMoreMenu } from './more-menu.js';
 // part -> [label key, icon, text shown beside the icon on a wide book]; in toolbar order, groups by null.
 const LAYOUT = [
   ['previous', 'previous', false], ['page'], ['next', 'next', false], null,
-  ['zoom'], null,
+  ['zoom'], ['readAloud'], null,
   ['thumbnails', 'thumbnails', true], ['contents', 'contents', true], ['search', 'search', true], null,
   ['download', 'download', false], ['print', 'print', false], ['fullscreen', 'fullscreen', false],
 ];
@@ -18,11 +20,13 @@ const LAYOUT = [
 const PANELS = ['thumbnails', 'contents', 'search'];
 /**
  * The parts that move into the More menu when the toolbar's width cannot hold them, least used first
- * (each moves only once those before it did). Previous, Next and the page field always stay.
+ * (each moves only once those before it did). Previous, Next and the page field always stay. Read
+ * aloud moves after Zoom: zoom has gestures besides its buttons (pinch, double-tap, the wheel), while
+ * a book reading itself is paused with its button alone, which should then be one press away.
  */
-export const OVERFLOW_ORDER = ['print', 'download', 'fullscreen', 'contents', 'thumbnails', 'zoom', 'search'];
+export const OVERFLOW_ORDER = ['print', 'download', 'fullscreen', 'contents', 'thumbnails', 'zoom', 'readAloud', 'search'];
 // The buttons a part is made of.
-const BUTTONS_OF = { zoom: ['zoomOut', 'zoomIn'] };
+const BUTTONS_OF = { zoom: ['zoomOut', 'zoomIn'], readAloud: ['readAloud', 'readAloudSettings'] };
 const buttonsOf = (part) => BUTTONS_OF[part] ?? [part];
 
 function makeButton(labels, key, iconName, textShown) {
@@ -51,16 +55,20 @@ export function createToolbar(labels, parts, actions, { fullscreenKey = 'fullscr
   const buttons = {};
   let pageField = null;
   let showPage = null;
-  let lastGroupEmpty = true;
+  let group = [];  // the parts since the last gap
+  const gaps = [];  // { gap, group }: a gap and the parts before it
   for (const entry of LAYOUT) {
     if (entry === null) {
-      if (!lastGroupEmpty) element.append(Object.assign(document.createElement('span'), { className: 'conecurl-gap' }));
-      lastGroupEmpty = true;
+      if (group.length > 0) {
+        gaps.push({ gap: Object.assign(document.createElement('span'), { className: 'conecurl-gap' }), group });
+        element.append(gaps.at(-1).gap);
+      }
+      group = [];
       continue;
     }
     const [part] = entry;
     if (!parts[part]) continue;
-    lastGroupEmpty = false;
+    group.push(part);
     if (part === 'page') {
       ({ field: pageField, display: showPage } = makePageField(labels, actions.page));
       element.append(pageField);
@@ -68,6 +76,13 @@ export function createToolbar(labels, parts, actions, { fullscreenKey = 'fullscr
       buttons.zoomOut = makeButton(labels, 'zoomOut', 'zoomOut', false);
       buttons.zoomIn = makeButton(labels, 'zoomIn', 'zoomIn', false);
       element.append(buttons.zoomOut, buttons.zoomIn);
+    } else if (part === 'readAloud') {
+      buttons.readAloud = makeButton(labels, 'readAloud', 'readAloud', false);
+      buttons.readAloudSettings = makeButton(labels, 'readAloudSettings', 'readAloudSettings', false);
+      buttons.readAloud.setAttribute('aria-pressed', 'false');
+      buttons.readAloudSettings.setAttribute('aria-haspopup', 'dialog');
+      buttons.readAloudSettings.setAttribute('aria-expanded', 'false');
+      element.append(buttons.readAloud, buttons.readAloudSettings);
     } else if (part === 'fullscreen') {
       buttons.fullscreen = makeButton(labels, fullscreenKey, fullscreenKey === 'read' ? 'read' : 'fullscreen', false);
       element.append(buttons.fullscreen);
@@ -104,8 +119,14 @@ export function createToolbar(labels, parts, actions, { fullscreenKey = 'fullscr
   // OVERFLOW_ORDER moves into the menu. Measured on the real widths (labels, fonts, a coarse pointer's
   // 44 px targets), again whenever the toolbar's width changes.
   let reading = false;
-  const present = (part) => buttonsOf(part).every((name) => buttons[name]) && !(reading && part === 'fullscreen');
+  const absent = new Set(buttons.readAloud ? ['readAloud'] : []);
+  const present = (part) => buttonsOf(part).every((name) => buttons[name]) && !absent.has(part)
+    && !(reading && part === 'fullscreen');
   const setShown = (part, on) => { for (const name of buttonsOf(part)) buttons[name].hidden = !on; };
+  // A group of absent parts alone (Read aloud, with zoom hidden) takes no gap either.
+  const tidyGaps = () => { for (const { gap, group: parts } of gaps) gap.hidden = parts.every((part) => absent.has(part)); };
+  for (const part of absent) setShown(part, false);
+  tidyGaps();
   const fits = () => element.scrollWidth <= element.clientWidth;
   let moved = [];
   function fit() {
@@ -157,6 +178,26 @@ export function createToolbar(labels, parts, actions, { fullscreenKey = 'fullscr
     moved: () => [...moved],
     /** Where focus goes for a part's button: the button, or the More button while the part is in the menu. */
     focusTarget: (name) => (buttons[name] && !buttons[name].hidden ? buttons[name] : menu.button),
+    /** Shows a part made absent (`on`), or takes it away again (hidden, and not in the menu); fits again. */
+    setPresent(part, on) {
+      if (!buttons[buttonsOf(part)[0]] || absent.has(part) === !on) return;
+      if (on) absent.delete(part);
+      else {
+        absent.add(part);
+        setShown(part, false);
+      }
+      tidyGaps();
+      fit();
+    },
+    /** Names button `name` by label `key` with icon `iconName`, in the toolbar and in the More menu. */
+    relabel(name, key, iconName) {
+      for (const control of [buttons[name], menu.items[name]]) {
+        if (!control) continue;
+        control.querySelector('span').textContent = labels[key];
+        if (control.title) control.title = labels[key];
+        control.querySelector('svg').replaceWith(icon(iconName));
+      }
+    },
     /** Reading mode: Exit shown, Fullscreen (or Read) hidden. */
     setReading(on) {
       reading = on;

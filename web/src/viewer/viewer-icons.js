@@ -20,6 +20,9 @@ const PATHS = {
   more: ['M5 12h.01', 'M12 12h.01', 'M19 12h.01'],
   read: ['M4 5h6a2 2 0 0 1 2 2v12a2 2 0 0 0-2-2H4z', 'M20 5h-6a2 2 0 0 0-2 2v12a2 2 0 0 1 2-2h6z'],
   exit: ['M9 4v5H4', 'M15 4v5h5', 'M15 20v-5h5', 'M9 20v-5H4'],
+  readAloud: ['M4 9.5h3.5L12 5.5v13l-4.5-4H4z', 'M15.5 9a4 4 0 0 1 0 6', 'M18.5 6.5a7.5 7.5 0 0 1 0 11'],
+  pauseReading: ['M9 5.5v13', 'M15 5.5v13'],
+  readAloudSettings: ['M4 7h16', 'M4 17h16', 'M9 4.5v5', 'M15 14.5v5'],
 };
 
 /** The SVG icon named `name` (a key of PATHS), hidden from screen readers. */

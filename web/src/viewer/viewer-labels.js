@@ -29,6 +29,12 @@ export const DEFAULT_LABELS = Object.freeze({
   more: 'More',
   read: 'Read',
   exitReading: 'Exit reading',
+  readAloud: 'Read aloud',
+  pauseReading: 'Pause reading',
+  readAloudSettings: 'Voice and speed',
+  voice: 'Voice',
+  speed: 'Speed',
+  defaultVoice: 'Browser\'s default',
 });
 export const LABEL_KEYS = Object.keys(DEFAULT_LABELS);
 

@@ -2,8 +2,11 @@
 // message saying what is allowed), and the parts of the toolbar a `controls` value shows.
 import { LABEL_KEYS } from './viewer-labels.js';
 
-/** The toolbar's parts, in their order on it; `controls: { thumbnails: false }` hides one. */
-export const CONTROL_PARTS = ['previous', 'next', 'page', 'zoom', 'fullscreen', 'thumbnails', 'contents', 'search', 'download', 'print'];
+/**
+ * The toolbar's parts; `controls: { thumbnails: false }` hides one. `readAloud` (Read aloud and Voice
+ * and speed) shows only once the book says it can read aloud (`canReadAloud()`).
+ */
+export const CONTROL_PARTS = ['previous', 'next', 'page', 'zoom', 'fullscreen', 'thumbnails', 'contents', 'search', 'download', 'print', 'readAloud'];
 
 const plain = (value) => value !== null && typeof value === 'object' && Object.getPrototypeOf(value) === Object.prototype;
 

@@ -93,6 +93,22 @@ const VIEWER_CSS = `
 .conecurl-menu button:hover, .conecurl-menu button:focus { background: var(--conecurl-panel-hover, rgba(0, 0, 0, 0.07)); }
 .conecurl-menu button[data-on="true"] { box-shadow: inset 4px 0 var(--conecurl-accent, #3d7be0); font-weight: 700; }
 .conecurl-viewer .conecurl-menu :is(button):focus-visible { outline-color: var(--conecurl-accent, #3d7be0); }
+.conecurl-read-menu {
+  right: auto; gap: 10px; padding: 10px 12px 12px; width: max-content; min-width: 200px;
+  max-width: min(320px, calc(100vw - 8px)); margin-bottom: 4px;
+}
+.conecurl-read-menu[data-below] { margin: 4px 0 0; }
+.conecurl-read-field { display: flex; flex-direction: column; gap: 4px; min-width: 0; }
+.conecurl-read-field[hidden] { display: none; }
+.conecurl-read-field label { font-weight: 600; }
+.conecurl-read-menu select {
+  font: inherit; width: 100%; height: 34px; padding: 0 6px; box-sizing: border-box; border-radius: 6px;
+  border: 1px solid #8d8a83; background: #ffffff; color: #1d1d1b; text-overflow: ellipsis; cursor: pointer;
+}
+.conecurl-read-menu select:focus { outline: none; }
+.conecurl-read-menu select:focus-visible {
+  outline: var(--conecurl-focus-ring, 3px solid #8ab4ff); outline-color: var(--conecurl-accent, #3d7be0); outline-offset: 1px;
+}
 .conecurl-viewer[data-reading] { position: absolute; left: 0; right: 0; bottom: 0; z-index: 2; }
 .conecurl-viewer[data-reading][data-bar-hidden] { transform: translateY(100%); visibility: hidden; }
 @media (prefers-reduced-motion: no-preference) {
@@ -106,6 +122,7 @@ const VIEWER_CSS = `
   .conecurl-viewer.conecurl-viewer .conecurl-page-field { height: 44px; }
   .conecurl-viewer.conecurl-viewer[data-narrow] .conecurl-page-field { width: 5em; }
   .conecurl-viewer .conecurl-search-row input { height: 44px; }
+  .conecurl-viewer .conecurl-read-menu select { height: 44px; }
 }
 .conecurl-viewer[data-coarse] .conecurl-panel {
   position: fixed; left: 0; right: 0; top: auto; bottom: 0; z-index: 2147483001; width: 100%; max-width: none;
