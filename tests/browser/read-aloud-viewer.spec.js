@@ -201,29 +201,29 @@ test('browser: Read aloud and Voice and speed stay hidden while canReadAloud() i
   await expect(page.locator('[data-control^=readAloud]')).toHaveCount(0);
 });
 
-test('browser: Read aloud calls readAloud() with the popup\'s voice and speed; the same button pauses and resumes, its name and aria-pressed following', async ({ page }) => {
+test('browser: Read aloud calls readAloud() with the popup\'s voice and speed; the same button pauses and resumes, its name (Read aloud, Pause reading) and its lit state following', async ({ page }) => {
   await openReading(page);
   const toolbar = page.getByRole('toolbar');
   const read = toolbar.locator('[data-control=readAloud]');
   await expect(read).toBeVisible();
-  await expect(read).toHaveAttribute('aria-pressed', 'false');
+  await expect(read).toHaveAttribute('data-on', 'false');
   await expect(read).toHaveAccessibleName('Read aloud');
   // Nothing chosen: the browser's default voice (no voice given), speed 1.
   await read.click();
   expect(await lastCall(page, 'readAloud')).toEqual(['readAloud', { rate: 1, keys: ['rate'] }]);
-  await expect(read).toHaveAttribute('aria-pressed', 'true');
+  await expect(read).toHaveAttribute('data-on', 'true');
   await expect(read).toHaveAccessibleName('Pause reading');
   await expect(read).toHaveAttribute('title', 'Pause reading');
   await read.click();
   expect(await lastCall(page, 'pause')).toEqual(['pause']);
-  await expect(read).toHaveAttribute('aria-pressed', 'false');
+  await expect(read).toHaveAttribute('data-on', 'false');
   await expect(read).toHaveAccessibleName('Read aloud');
   expect(await page.evaluate(() => window.book.readingAloud.state)).toBe('paused');
   await read.click();
   expect(await lastCall(page, 'resume')).toEqual(['resume']);
-  await expect(read).toHaveAttribute('aria-pressed', 'true');
+  await expect(read).toHaveAttribute('data-on', 'true');
   await page.evaluate(() => window.finishReading());
-  await expect(read).toHaveAttribute('aria-pressed', 'false');
+  await expect(read).toHaveAttribute('data-on', 'false');
   // A voice and a speed chosen: the next reading is given them.
   await toolbar.getByRole('button', { name: 'Voice and speed' }).click();
   const popup = page.getByRole('dialog', { name: 'Voice and speed' });
@@ -235,7 +235,7 @@ test('browser: Read aloud calls readAloud() with the popup\'s voice and speed; t
   await expect(popup).toBeHidden();
   await read.click();
   expect(await lastCall(page, 'readAloud')).toEqual(['readAloud', { voice: 'Daniel', rate: 1.5, keys: ['voice', 'rate'] }]);
-  await expect(read).toHaveAttribute('aria-pressed', 'true');
+  await expect(read).toHaveAttribute('data-on', 'true');
 });
 
 test('browser: the button follows the host\'s reading: readAloud(), pause(), resume(), stop() and the reading\'s end, called outside the viewer', async ({ page }) => {
@@ -243,24 +243,24 @@ test('browser: the button follows the host\'s reading: readAloud(), pause(), res
   const read = page.locator('[role=toolbar] [data-control=readAloud]');
   await expect(read).toBeVisible();
   await page.evaluate(() => window.book.readAloud({ rate: 2 }));
-  await expect(read).toHaveAttribute('aria-pressed', 'true');
+  await expect(read).toHaveAttribute('data-on', 'true');
   await expect(read).toHaveAccessibleName('Pause reading');
   await page.evaluate(() => window.book.readingAloud.pause());
-  await expect(read).toHaveAttribute('aria-pressed', 'false');
+  await expect(read).toHaveAttribute('data-on', 'false');
   await expect(read).toHaveAccessibleName('Read aloud');
   await page.evaluate(() => window.book.readingAloud.resume());
-  await expect(read).toHaveAttribute('aria-pressed', 'true');
+  await expect(read).toHaveAttribute('data-on', 'true');
   // The host's reading is paused by the viewer's button.
   await read.click();
   expect(await lastCall(page, 'pause')).toEqual(['pause']);
-  await expect(read).toHaveAttribute('aria-pressed', 'false');
+  await expect(read).toHaveAttribute('data-on', 'false');
   await page.evaluate(() => window.book.readingAloud.stop());
   await expect(read).toHaveAccessibleName('Read aloud');
   expect(await page.evaluate(() => window.book.readingAloud)).toBeNull();
   // Stopped, a press starts a new reading (not a resume).
   await read.click();
   expect((await calls(page)).filter(([name]) => name === 'readAloud')).toHaveLength(2);
-  await expect(read).toHaveAttribute('aria-pressed', 'true');
+  await expect(read).toHaveAttribute('data-on', 'true');
 });
 
 test('browser: a readAloud() that rejects (no voice) leaves the button at Read aloud, not pressed, and nothing on the page broken', async ({ page }) => {
@@ -270,10 +270,10 @@ test('browser: a readAloud() that rejects (no voice) leaves the button at Read a
   await read.click();
   await page.waitForFunction(() => window.readAloudCalls.some(([name]) => name === 'readAloud'));
   await answered(page);
-  await expect(read).toHaveAttribute('aria-pressed', 'false');
+  await expect(read).toHaveAttribute('data-on', 'false');
   await expect(read).toHaveAccessibleName('Read aloud');
   await read.click();  // and again: the same
-  await expect(read).toHaveAttribute('aria-pressed', 'false');
+  await expect(read).toHaveAttribute('data-on', 'false');
 });
 
 test('browser: the Voice and speed popup by keyboard: Enter opens it on Voice, Tab and Shift+Tab go between the selects, Escape closes it and gives focus back to its button', async ({ page }) => {
@@ -348,7 +348,7 @@ test('browser: a voice or speed chosen while reading changes the reading under w
   const read = toolbar.locator('[data-control=readAloud]');
   await expect(read).toBeVisible();
   await read.click();
-  await expect(read).toHaveAttribute('aria-pressed', 'true');
+  await expect(read).toHaveAttribute('data-on', 'true');
   await toolbar.getByRole('button', { name: 'Voice and speed' }).click();
   const popup = page.getByRole('dialog', { name: 'Voice and speed' });
   await popup.getByLabel('Speed').selectOption('1.25');
@@ -358,11 +358,11 @@ test('browser: a voice or speed chosen while reading changes the reading under w
   await popup.getByLabel('Voice').selectOption('');  // back to the browser's default: voice given as undefined
   expect(await lastCall(page, 'update')).toEqual(['update', { keys: ['voice'] }]);
   expect((await calls(page)).filter(([name]) => name === 'readAloud' || name === 'stop')).toHaveLength(1);
-  await expect(read).toHaveAttribute('aria-pressed', 'true');
+  await expect(read).toHaveAttribute('data-on', 'true');
   // Paused, a choice still goes to the reading (it resumes with it).
   await page.keyboard.press('Escape');
   await read.click();
-  await expect(read).toHaveAttribute('aria-pressed', 'false');
+  await expect(read).toHaveAttribute('data-on', 'false');
   await toolbar.getByRole('button', { name: 'Voice and speed' }).click();
   await popup.getByLabel('Speed').selectOption('0.75');
   expect(await lastCall(page, 'update')).toEqual(['update', { rate: 0.75, keys: ['rate'] }]);
@@ -385,7 +385,7 @@ test('browser: axe-core finds no serious or critical violation on the toolbar wi
   await openReading(page);
   const toolbar = page.getByRole('toolbar');
   await toolbar.locator('[data-control=readAloud]').click();
-  await expect(toolbar.locator('[data-control=readAloud]')).toHaveAttribute('aria-pressed', 'true');
+  await expect(toolbar.locator('[data-control=readAloud]')).toHaveAttribute('data-on', 'true');
   await toolbar.getByRole('button', { name: 'Voice and speed' }).click();
   const popup = page.getByRole('dialog', { name: 'Voice and speed' });
   await expect(popup).toBeVisible();

@@ -1,10 +1,12 @@
 // Read-aloud as the controller holds it before anything is read: read-aloud/book-reader.js imported
-// at the first call, and the word read aloud handed to the page images (`marksOn`) once it is.
+// at the first readAloud(), and the word read aloud handed to the page images (`marksOn`) once it is.
+// Whether a book can read aloud, and the voices, are answered without it (the toolbar asks at once).
+import { speechVoices } from '../read-aloud/speech-engine.js';
 
 /**
- * Read-aloud (read-aloud/book-reader.js, imported at the first call): readAloud(), readingAloud,
+ * Read-aloud (read-aloud/book-reader.js, imported at the first readAloud()): readAloud(), readingAloud,
  * readAloudVoices(), canReadAloud(); `pageText(index)` is a document page's text record.
- * @param {BookPort} book
+ * @param {import('./book-wiring.js').BookPort} book
  */
 export function makeReadAloud(controller, book, pageText) {
   let reader = null;
@@ -16,8 +18,10 @@ export function makeReadAloud(controller, book, pageText) {
   return {
     start: async (options) => (await load()).start(options),
     current: () => reader?.current ?? null,
-    voices: async () => (await load()).voices(),
-    can: async () => (await load()).can(),
+    /** The browser's voices: [{ name, lang, default, local }]. */
+    voices: async () => (await speechVoices()).map(({ name, lang, default: isDefault, local }) => ({ name, lang, default: isDefault, local })),
+    /** Whether readAloud() can read this book: a page has recorded narration, or the browser has a voice. */
+    can: async () => book.entries.some((entry) => entry.narration) || (await speechVoices()).length > 0,
     /** The word read aloud, drawn into its page's image while its leaf turns: the marks of page `index`. */
     marksOn: (index) => reader?.marksOn(index) ?? [],
     stop: () => reader?.stop(),

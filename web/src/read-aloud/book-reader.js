@@ -1,7 +1,7 @@
-// Read-aloud as a book has it (`readAloud()`, `readingAloud`, `readAloudVoices()`, `canReadAloud()`):
+// Read-aloud as a book has it (`readAloud()`, `readingAloud`):
 // the options checked, the voice found, each page's script made, the word marked over the flat page
 // (layers/reading-mark.js) or drawn into a curling one, the page sound ducked while a voice speaks.
-// Imported at a book's first call of any of them (book-wiring.js makeReadAloud).
+// Imported at a book's first readAloud() (book/book-read-aloud.js).
 import { Reading } from './reading.js';
 import { pageScript } from './page-script.js';
 import { speechEngine, speechVoices } from './speech-engine.js';
@@ -50,16 +50,6 @@ export class BookReader {
 
   /** The reading now, or null. */
   get current() { return this._current; }
-
-  /** The browser's voices: [{ name, lang, default, local }]. */
-  async voices() {
-    return (await speechVoices()).map(({ name, lang, default: isDefault, local }) => ({ name, lang, default: isDefault, local }));
-  }
-
-  /** Whether readAloud() can read this book: a page has recorded narration, or the browser has a voice. */
-  async can() {
-    return this._book.entries.some((entry) => entry.narration) || (await speechVoices()).length > 0;
-  }
 
   /** Starts reading at the open page (a reading already running stops first); resolves with the reading. */
   async start(options) {

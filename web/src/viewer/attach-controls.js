@@ -166,7 +166,9 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
     });
     const showState = (state) => {  // 'reading' (or waiting), 'paused' or 'ended'
       const on = state === 'reading' || state === 'waiting';
-      button.setAttribute('aria-pressed', String(on));
+      // A play/pause button as media players have it: its name says what a press does (no aria-pressed
+      // beside a name that changes); `data-on` shows it lit while the book reads.
+      button.dataset.on = String(on);
       toolbar.relabel('readAloud', on ? 'pauseReading' : 'readAloud', on ? 'pauseReading' : 'readAloud');
     };
     const showNow = () => showState(live()?.state ?? 'ended');

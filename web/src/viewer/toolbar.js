@@ -157,14 +157,14 @@ export function createToolbar(labels, parts, actions, { fullscreenKey = 'fullscr
   const mirror = (name) => {  // a menu item says what its button says
     const item = menu.items[name];
     if (!item) return;
-    for (const attribute of ['aria-disabled', 'aria-expanded', 'aria-pressed']) {
+    for (const attribute of ['aria-disabled', 'aria-expanded', 'aria-pressed', 'data-on']) {
       const value = buttons[name].getAttribute(attribute);
       const mirrored = attribute === 'aria-disabled' ? attribute : 'data-on';  // a menuitem has no aria-pressed
       if (value !== null) item.setAttribute(mirrored, value);
     }
   };
   const states = new MutationObserver((records) => { for (const record of records) mirror(record.target.dataset.control); });
-  for (const button of Object.values(buttons)) states.observe(button, { attributes: true, attributeFilter: ['aria-disabled', 'aria-expanded', 'aria-pressed'] });
+  for (const button of Object.values(buttons)) states.observe(button, { attributes: true, attributeFilter: ['aria-disabled', 'aria-expanded', 'aria-pressed', 'data-on'] });
 
   return {
     element,

@@ -19,7 +19,7 @@ const VIEWER_CSS = `
   padding: 0 8px; cursor: pointer; justify-content: center;
 }
 .conecurl-viewer button:hover { background: var(--conecurl-toolbar-hover, rgba(255, 255, 255, 0.14)); }
-.conecurl-viewer button[aria-pressed="true"], .conecurl-viewer button[aria-expanded="true"] {
+.conecurl-viewer button[aria-pressed="true"], .conecurl-viewer button[aria-expanded="true"], .conecurl-toolbar button[data-on="true"] {
   background: var(--conecurl-accent, #3d7be0); color: var(--conecurl-accent-fg, #ffffff);
 }
 .conecurl-viewer button[aria-disabled="true"] { opacity: 0.45; cursor: default; }
