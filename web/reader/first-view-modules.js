@@ -16,6 +16,7 @@ export const FIRST_VIEW_MODULES = [
   'web/src/viewer/contents-panel.js',
   'web/src/viewer/more-menu.js',
   'web/src/viewer/panel.js',
+  'web/src/viewer/read-aloud-menu.js',
   'web/src/viewer/reading-mode.js',
   'web/src/viewer/roving-focus.js',
   'web/src/viewer/search-panel.js',
