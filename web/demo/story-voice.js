@@ -36,7 +36,7 @@ function syllables(word) {
 function consonant(cluster) {
   if (!cluster) return null;
   if (/[sfzcxh]|th|sh|ch/.test(cluster)) return { seconds: 0.07, gain: 0.22, hiss: true };
-  if (/[ptkbdgqj]/.test(cluster)) return { seconds: 0.025, gain: 0.8, hiss: false };
+  if (/[ptkbdgqj]/.test(cluster)) return { seconds: 0.03, gain: 0.5, hiss: false };
   return { seconds: 0.04, gain: 0, hiss: false };  // m n l r w v: voiced, the vowel starts low and soft
 }
 
