@@ -192,6 +192,8 @@ test('browser: demo shows its picture book that reads itself: every page has nar
 
 test('browser: demo "Read aloud" reads the book with book.readAloud() where there is one, and says why not where there is none', async ({ page }) => {
   const problems = await openReady(page, '/web/demo/');
+  await page.selectOption('#source', 'story');  // recorded narration: no wait on a browser's voices
+  await expect(page.locator('#where')).toHaveText(/ of 8$/, { timeout: 30_000 });
   await expect(page.locator('#read-aloud')).toHaveText('Read aloud');
   const reads = await page.evaluate(() => typeof window.conecurlDemo.book.readAloud === 'function');
   if (!reads) {
@@ -204,7 +206,7 @@ test('browser: demo "Read aloud" reads the book with book.readAloud() where ther
       for (const type of ['readaloudstart', 'readaloudend']) window.conecurlDemo.book.addEventListener(type, () => window.heard.push(type));
     });
     await page.click('#read-aloud');
-    await page.waitForFunction(() => window.heard.length > 0 || document.querySelector('#status').textContent);
+    await page.waitForFunction(() => window.heard.length > 0 || document.querySelector('#status').textContent, null, { timeout: 30_000 });
     if (await page.evaluate(() => window.heard[0] === 'readaloudstart' && window.heard.length === 1)) {
       await expect(page.locator('#read-aloud')).toHaveText('Stop');
       await page.click('#read-aloud');
