@@ -131,6 +131,91 @@ test('browser: demo shows its PDF example through pdf.js, and the contents links
   expect(problems).toEqual([]);
 });
 
+test('browser: demo shows its picture book that reads itself: every page has narration whose WAV decodes to its length, and every word\'s box covers its ink', async ({ page }) => {
+  await page.setViewportSize({ width: 1440, height: 900 });  // a spread of two 300 CSS px pages beside the toolbar
+  const problems = await openReady(page, '/web/demo/');
+  await page.selectOption('#source', 'story');
+  await expect(page.locator('#where')).toHaveText('Page 1 of 8', { timeout: 30_000 });
+  await expect(page.getByRole('toolbar', { name: 'Book controls' })).toBeVisible();  // controls: true
+  await page.evaluate(() => window.conecurlDemo.book.whenIdle());
+  const pages = await page.evaluate(async () => {
+    const context = new OfflineAudioContext(1, 1, 22050);
+    const entries = window.conecurlDemo.storyPages();
+    const out = [];
+    for (const entry of entries) {
+      const { src, words } = entry.narration;
+      const bytes = new Uint8Array(await (await fetch(src)).arrayBuffer());
+      const view = new DataView(bytes.buffer);
+      const expected = view.getUint32(40, true) / 2 / view.getUint32(24, true);  // data bytes / 2 / rate
+      const audio = await context.decodeAudioData(bytes.buffer.slice(0));
+      const canvas = entry.src();
+      const g = canvas.getContext('2d');
+      const inked = words.map(({ rect: [x, y, w, h] }) => {
+        const box = [Math.floor(x * canvas.width), Math.floor(y * canvas.height), Math.ceil(w * canvas.width), Math.ceil(h * canvas.height)];
+        const { data } = g.getImageData(...box);
+        let dark = 0;
+        for (let i = 0; i < data.length; i += 4) if (data[i] + data[i + 1] + data[i + 2] < 3 * 90) dark++;
+        return dark / (data.length / 4);
+      });
+      out.push({ src, alt: entry.alt, expected, decoded: audio.duration, channels: audio.numberOfChannels, words, inked,
+        aspect: canvas.width / canvas.height });
+    }
+    return out;
+  });
+  expect(pages.length).toBe(8);
+  expect(pages[0].words.map((w) => w.text).join(' ')).toBe('The Little Paper Boat');  // the cover reads its title
+  for (const [index, entry] of pages.entries()) {
+    expect(entry.src, `page ${index + 1}`).toMatch(/^blob:/);
+    expect(entry.channels).toBe(1);
+    expect(Math.abs(entry.decoded - entry.expected), `page ${index + 1}: ${entry.decoded} s decoded, ${entry.expected} s in the WAV`).toBeLessThan(0.01);
+    expect(entry.words.length).toBeGreaterThan(0);
+    expect(entry.aspect).toBeCloseTo(0.8, 5);
+    let before = 0;
+    entry.words.forEach((word, i) => {
+      const [x, y, w, h] = word.rect;
+      const where = `page ${index + 1}, "${word.text}"`;
+      expect(word.start, where).toBeGreaterThanOrEqual(before);
+      expect(word.end, where).toBeGreaterThan(word.start);
+      expect(word.end, where).toBeLessThanOrEqual(entry.expected);
+      before = word.end;
+      expect(Math.min(x, y, w, h), `${where}: ${word.rect}`).toBeGreaterThan(0);
+      expect(Math.max(x + w, y + h), `${where}: ${word.rect}`).toBeLessThan(1);
+      expect(entry.inked[i], `${where}: dark ink in its box`).toBeGreaterThan(0.08);
+    });
+    // The words are the page's text, in order (as its alt text says it, the covers with a label before).
+    expect(entry.alt.endsWith(entry.words.map((w) => w.text).join(' '))).toBe(true);
+  }
+  await page.click('#next');
+  await expect(page.locator('#where')).toHaveText('Pages 2–3 of 8', { timeout: 30_000 });
+  expect(problems).toEqual([]);
+});
+
+test('browser: demo "Read aloud" reads the book with book.readAloud() where there is one, and says why not where there is none', async ({ page }) => {
+  const problems = await openReady(page, '/web/demo/');
+  await page.selectOption('#source', 'story');  // recorded narration: no wait on a browser's voices
+  await expect(page.locator('#where')).toHaveText(/ of 8$/, { timeout: 30_000 });
+  await expect(page.locator('#read-aloud')).toHaveText('Read aloud');
+  const reads = await page.evaluate(() => typeof window.conecurlDemo.book.readAloud === 'function');
+  if (!reads) {
+    await page.click('#read-aloud');
+    await expect(page.locator('#status')).toHaveText(/no book\.readAloud\(\)/);
+  } else {
+    // Without waiting for a voice: the book says it started (or why not), and the button follows it.
+    await page.evaluate(() => {
+      window.heard = [];
+      for (const type of ['readaloudstart', 'readaloudend']) window.conecurlDemo.book.addEventListener(type, () => window.heard.push(type));
+    });
+    await page.click('#read-aloud');
+    await page.waitForFunction(() => window.heard.length > 0 || document.querySelector('#status').textContent, null, { timeout: 30_000 });
+    if (await page.evaluate(() => window.heard[0] === 'readaloudstart' && window.heard.length === 1)) {
+      await expect(page.locator('#read-aloud')).toHaveText('Stop');
+      await page.click('#read-aloud');
+      await expect(page.locator('#read-aloud')).toHaveText('Read aloud');
+    }
+  }
+  expect(problems).toEqual([]);
+});
+
 test('browser: the demo passes axe-core with no serious or critical violation (contrast, names matching visible text, ...)', async ({ page }) => {
   await openReady(page, '/web/demo/');  // the demo says it is ready once the plot and the readout are drawn
   await page.evaluate(() => window.conecurlDemo.book.whenIdle());  // and the book's pages

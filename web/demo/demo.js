@@ -1,11 +1,13 @@
 // Demo wiring: the forty-page book in a Flipbook (the public class, as a user would use it), its
 // controls, and the schedule the engine computes (theta, Ay, rho over t) plotted beside it with a
-// scrubber that poses the next turn's exact frame.
+// scrubber that poses the next turn's exact frame. The Book choice swaps in the PDF, the HTML magazine or
+// the narrated picture book (demo-story.js); Read aloud reads whichever is open.
 import { Flipbook } from '../src/index.js';
 import { loadEngine } from '../src/engine.js';
 import { DEMO_PAGE_COUNT, drawBookPage, isHardPage } from './book-pages.js';
 import { makeDemoPdf } from './demo-pdf.js';
 import { magazinePages } from './demo-magazine.js';
+import { storyPages } from './demo-story.js';
 
 const $ = (id) => document.getElementById(id);
 const deg = 180 / Math.PI;
@@ -70,6 +72,29 @@ function showWhere() {
   $('where').textContent = first === last ? `Page ${first + 1} of ${count}` : `Pages ${first + 1}–${last + 1} of ${count}`;
 }
 
+// A package without read-aloud (issue 31) refuses a page entry's `narration`: give it the pages without.
+const narratedPages = (pages) => (typeof Flipbook.prototype.readAloud === 'function' ? pages
+  : pages.map(({ narration, ...page }) => page));
+
+let reading = false;
+function showReading(on) {
+  reading = on;
+  $('read-aloud').textContent = on ? 'Stop' : 'Read aloud';
+}
+
+// Reads the open book aloud (its narration where a page has one, else the browser's voice), or stops.
+async function readAloud() {
+  $('status').textContent = '';
+  try {
+    if (reading) book.readingAloud?.stop();
+    else if (typeof book.readAloud === 'function') await book.readAloud();
+    else throw new Error('this build of conecurl has no book.readAloud()');
+  } catch (error) {
+    showReading(false);
+    if (error?.name !== 'AbortError') $('status').textContent = String(error?.message || error);  // not a Stop
+  }
+}
+
 // Direction, schedule and speed are fixed for a book's life: changing one makes a new book at the page.
 function buildBook(startPage) {
   building = building.then(async () => {
@@ -77,9 +102,10 @@ function buildBook(startPage) {
     const source = $('source').value;
     const pdf = source === 'pdf';
     if (pdf) pdfBytes ??= await makeDemoPdf();
-    const pages = source === 'html' ? magazinePages() : PAGES;
+    const pages = source === 'html' ? magazinePages() : source === 'story' ? narratedPages(storyPages()) : PAGES;
     book = await Flipbook.create($('book'), {
       ...(pdf ? { pdf: pdfBytes, controls: true } : { pages }),  // the PDF as a document: toolbar, thumbnails, search
+      ...(source === 'story' ? { controls: true } : {}),  // the picture book with the toolbar (its Read button)
       startPage: source === 'drawn' ? startPage : 0,
       display: $('display').value,
       direction: $('direction').value,
@@ -90,8 +116,11 @@ function buildBook(startPage) {
       gutter: $('gutter').checked,
       thickness: $('thickness').checked,
       sound: $('sound').checked,
-      label: 'The Curl of the Page, a demo book',
+      label: source === 'story' ? 'The Little Paper Boat, a picture book that reads itself' : 'The Curl of the Page, a demo book',
     });
+    showReading(false);
+    book.addEventListener('readaloudstart', () => showReading(true));
+    book.addEventListener('readaloudend', () => showReading(false));
     book.addEventListener('turnstart', () => { document.body.dataset.state = 'turning'; });
     for (const type of ['turned', 'turncancel']) {
       book.addEventListener(type, () => {
@@ -124,6 +153,7 @@ async function main() {
     book.flip(page - 1).catch((error) => { $('status').textContent = error.message; });
   });
   $('prev').addEventListener('click', () => book.prev());
+  $('read-aloud').addEventListener('click', readAloud);
   $('scrub').addEventListener('input', () => {
     const t = Number($('scrub').value);
     book.previewTurn('forward', t);
@@ -133,13 +163,15 @@ async function main() {
     $(id).addEventListener('change', () => buildBook(book.page));
   }
   $('schedule').addEventListener('change', () => showSchedule(Number($('scrub').value)));
-  $('display').addEventListener('change', () => book.setOptions({ display: $('display').value }));  // live
+  // Live changes wait for a book being built (a new source, say), or they would reach the one it replaces.
+  const live = (options) => building.then(() => book.setOptions(options));
+  $('display').addEventListener('change', () => live({ display: $('display').value }));
   // Live: the effects, the stacks' thickness and the page sound (it starts with the next gesture on the book).
   for (const id of ['lighting', 'shadows', 'gutter', 'thickness', 'sound']) {
-    $(id).addEventListener('change', () => book.setOptions({ [id]: $(id).checked }));
+    $(id).addEventListener('change', () => live({ [id]: $(id).checked }));
   }
   // For the console and scripts/measure-turn.mjs (which times the engine's own BookView).
-  window.conecurlDemo = { engine, get book() { return book; } };
+  window.conecurlDemo = { engine, get book() { return book; }, storyPages };
   document.body.dataset.ready = 'true';
 }
 
