@@ -190,29 +190,33 @@ test('browser: demo shows its picture book that reads itself: every page has nar
   expect(problems).toEqual([]);
 });
 
-test('browser: demo "Read aloud" reads the book with book.readAloud() where there is one, and says why not where there is none', async ({ page }) => {
+test('browser: demo "Read aloud" on the picture book plays the cover\'s narration, marks its words, turns by itself and reads on; Stop stops it', async ({ page }) => {
+  test.setTimeout(180_000);
   const problems = await openReady(page, '/web/demo/');
-  await page.selectOption('#source', 'story');  // recorded narration: no wait on a browser's voices
+  await page.selectOption('#source', 'story');  // recorded narration: no speech voice needed
   await expect(page.locator('#where')).toHaveText(/ of 8$/, { timeout: 30_000 });
-  await expect(page.locator('#read-aloud')).toHaveText('Read aloud');
-  const reads = await page.evaluate(() => typeof window.conecurlDemo.book.readAloud === 'function');
-  if (!reads) {
-    await page.click('#read-aloud');
-    await expect(page.locator('#status')).toHaveText(/no book\.readAloud\(\)/);
-  } else {
-    // Without waiting for a voice: the book says it started (or why not), and the button follows it.
-    await page.evaluate(() => {
-      window.heard = [];
-      for (const type of ['readaloudstart', 'readaloudend']) window.conecurlDemo.book.addEventListener(type, () => window.heard.push(type));
-    });
-    await page.click('#read-aloud');
-    await page.waitForFunction(() => window.heard.length > 0 || document.querySelector('#status').textContent, null, { timeout: 30_000 });
-    if (await page.evaluate(() => window.heard[0] === 'readaloudstart' && window.heard.length === 1)) {
-      await expect(page.locator('#read-aloud')).toHaveText('Stop');
-      await page.click('#read-aloud');
-      await expect(page.locator('#read-aloud')).toHaveText('Read aloud');
+  await page.evaluate(() => {
+    window.heard = [];
+    const { book } = window.conecurlDemo;
+    for (const type of ['readaloudstart', 'readaloudpage', 'readaloudword', 'turned', 'readaloudend']) {
+      book.addEventListener(type, (e) => window.heard.push({ type, page: e.detail.page, text: e.detail.text, reason: e.detail.reason,
+        marks: document.querySelectorAll('[data-reading]').length }));
     }
-  }
+  });
+  await expect(page.locator('#read-aloud')).toHaveText('Read aloud');
+  await page.click('#read-aloud');
+  await expect(page.locator('#read-aloud')).toHaveText('Stop');
+  // The cover's title, word by word, each marked; then the book turns itself and page 1 is read.
+  await page.waitForFunction(() => window.heard.some((e) => e.type === 'readaloudword' && e.page === 1), null, { timeout: 60_000 });
+  const heard = await page.evaluate(() => window.heard);
+  expect(heard.filter((e) => e.type === 'readaloudword' && e.page === 0).map((e) => e.text)).toEqual(['The', 'Little', 'Paper', 'Boat']);
+  expect(heard.filter((e) => e.type === 'readaloudword').every((e) => e.marks > 0)).toBe(true);
+  expect(heard.filter((e) => e.type !== 'readaloudword').map((e) => `${e.type} ${e.page}`).slice(0, 4))
+    .toEqual(['readaloudstart 0', 'readaloudpage 0', 'turned 1', 'readaloudpage 1']);
+  await page.click('#read-aloud');
+  await expect(page.locator('#read-aloud')).toHaveText('Read aloud');
+  expect(await page.evaluate(() => window.heard.filter((e) => e.type === 'readaloudend').map((e) => e.reason))).toEqual(['stopped']);
+  expect(await page.locator('[data-reading]').count()).toBe(0);
   expect(problems).toEqual([]);
 });
 

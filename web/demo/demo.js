@@ -72,10 +72,6 @@ function showWhere() {
   $('where').textContent = first === last ? `Page ${first + 1} of ${count}` : `Pages ${first + 1}–${last + 1} of ${count}`;
 }
 
-// A package without read-aloud (issue 31) refuses a page entry's `narration`: give it the pages without.
-const narratedPages = (pages) => (typeof Flipbook.prototype.readAloud === 'function' ? pages
-  : pages.map(({ narration, ...page }) => page));
-
 let reading = false;
 function showReading(on) {
   reading = on;
@@ -87,8 +83,7 @@ async function readAloud() {
   $('status').textContent = '';
   try {
     if (reading) book.readingAloud?.stop();
-    else if (typeof book.readAloud === 'function') await book.readAloud();
-    else throw new Error('this build of conecurl has no book.readAloud()');
+    else await book.readAloud();
   } catch (error) {
     showReading(false);
     if (error?.name !== 'AbortError') $('status').textContent = String(error?.message || error);  // not a Stop
@@ -102,7 +97,7 @@ function buildBook(startPage) {
     const source = $('source').value;
     const pdf = source === 'pdf';
     if (pdf) pdfBytes ??= await makeDemoPdf();
-    const pages = source === 'html' ? magazinePages() : source === 'story' ? narratedPages(storyPages()) : PAGES;
+    const pages = source === 'html' ? magazinePages() : source === 'story' ? storyPages() : PAGES;
     book = await Flipbook.create($('book'), {
       ...(pdf ? { pdf: pdfBytes, controls: true } : { pages }),  // the PDF as a document: toolbar, thumbnails, search
       ...(source === 'story' ? { controls: true } : {}),  // the picture book with the toolbar (its Read button)
