@@ -8,12 +8,15 @@ const synthOf = () => globalThis.speechSynthesis ?? null;
 
 /**
  * The browser's voices as { name, lang, default, local } (and `voice`, the SpeechSynthesisVoice); []
- * where there is no speech synthesis or it has no voice once `waitMs` passed without `voiceschanged`.
+ * where there is no speech synthesis or it has no voice once `waitMs` passed without `voiceschanged`
+ * (waited for the first time only).
  */
 export async function speechVoices(synth = synthOf(), waitMs = VOICES_WAIT_MS) {
   if (!synth || typeof synth.getVoices !== 'function') return [];
   let voices = synth.getVoices();
-  if (voices.length === 0 && typeof synth.addEventListener === 'function') {
+  // Waited for once a page: a browser that listed none by then has none (a later voiceschanged is read at once).
+  if (voices.length === 0 && typeof synth.addEventListener === 'function' && !waited.has(synth)) {
+    waited.add(synth);
     voices = await new Promise((resolve) => {
       const done = () => {
         clearTimeout(timer);
@@ -26,6 +29,7 @@ export async function speechVoices(synth = synthOf(), waitMs = VOICES_WAIT_MS) {
   }
   return voices.map((voice) => ({ name: voice.name, lang: voice.lang, default: Boolean(voice.default), local: Boolean(voice.localService), voice }));
 }
+const waited = new WeakSet();
 
 /**
  * The engine over `speechSynthesis`: speak(text, { lang, rate, pitch, voice, onWord, onEnd, onError })
