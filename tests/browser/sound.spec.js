@@ -187,7 +187,7 @@ test('browser: sound: under prefers-reduced-motion no AudioContext is made and t
   await page.keyboard.press('ArrowRight');
   await page.waitForFunction(() => window.book.page >= 3);
   expect(await contexts(page)).toEqual([]);
-  expect(await page.evaluate(() => window.book.sound)).toEqual({ state: 'silent', gain: 0, target: 0, speed: 0, taps: 0 });
+  expect(await page.evaluate(() => window.book.sound)).toEqual({ state: 'silent', gain: 0, target: 0, speed: 0, taps: 0, ducked: false, level: 0 });
   expect(problems).toEqual([]);
 });
 
@@ -210,4 +210,20 @@ test('browser: sound: <cone-flipbook sound muted> sets the options; the muted at
   expect(result.seen).toEqual([[true, true, 'muted', true], [false, 'waiting'], [true, 'muted', 'true'], [false, 'off']]);
   expect(result.same).toBe(true);
   expect(problems).toEqual([]);
+});
+
+test('browser: sound: a voice reading aloud ducks the page sound (its level glides to 0.3) and gives it back when it stops', async ({ page }) => {
+  await countContexts(page);
+  await openReady(page, FIXTURE);
+  await open(page, { sound: true });
+  await page.evaluate(() => window.book.element.focus());
+  await page.keyboard.press('Shift');  // the gesture that makes the AudioContext (a key that turns nothing)
+  await page.waitForFunction(() => window.book.sound.level === 1);
+  // A speech engine that says nothing until told: the reading stays on page 2.
+  await page.evaluate(() => window.book.readAloud({ engine: { speak: () => ({ pause() {}, resume() {}, cancel() {} }) } }));
+  expect(await page.evaluate(() => window.book.sound.ducked)).toBe(true);
+  await page.waitForFunction(() => window.book.sound.level < 0.31);
+  await page.evaluate(() => window.book.readingAloud.stop());
+  expect(await page.evaluate(() => window.book.sound.ducked)).toBe(false);
+  await page.waitForFunction(() => window.book.sound.level > 0.99);
 });

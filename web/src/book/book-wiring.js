@@ -333,7 +333,7 @@ function soundOf(controller, book, module) {
       if (sound) return sound.status;
       const { sound: on, muted } = book.settings;
       const state = !on ? 'off' : muted ? 'muted' : !book.animates() ? 'silent' : 'waiting';
-      return Object.freeze({ state, gain: 0, target: 0, speed: 0, taps: 0, ducked });
+      return Object.freeze({ state, gain: 0, target: 0, speed: 0, taps: 0, ducked, level: 0 });
     },
   };
 }

@@ -510,8 +510,10 @@ export interface PageSoundStatus {
   speed: number;
   /** Landing taps played so far. */
   taps: number;
-  /** A voice is reading aloud: the whole page sound is lowered under it. */
+  /** A voice is reading aloud: the whole page sound is lowered under it (to 0.3 of its level). */
   ducked: boolean;
+  /** The whole sound's level now, as its master GainNode has it: 1, gliding to 0.3 while ducked (0 without an AudioContext). */
+  level: number;
 }
 
 /** A leaf lying open at the settled position, and where it lies on the canvas (CSS px from its top-left). */

@@ -191,7 +191,7 @@ export function startPageSound(book, root, { animates }) {
       else if (settings.muted) state = 'muted';
       else if (!animates()) state = 'silent';
       else if (graph) state = graph.context.state;
-      return Object.freeze({ state, gain: graph ? graph.rustle.gain.value : 0, target, speed, taps, ducked });
+      return Object.freeze({ state, gain: graph ? graph.rustle.gain.value : 0, target, speed, taps, ducked, level: graph ? graph.master.gain.value : 0 });
     },
   };
 }
