@@ -1,5 +1,6 @@
 // Draws every page of the demo's forty-page book on a 2D canvas at run time, so the demo ships no image
 // files and the browser tests can tell the pages apart by the large page number each one carries.
+import { mulberry32 } from './seeded-random.js';
 
 /** Number of pages in the demo book (covers included). */
 export const DEMO_PAGE_COUNT = 40;
@@ -135,17 +136,6 @@ function frame(index, W, H) {
   const x0 = left ? outer : inner;
   const x1 = W - (left ? inner : outer);
   return { index, number: index + 1, W, H, s, left, x0, x1, width: x1 - x0, top: 0.115 * H, bottom: 0.88 * H };
-}
-
-function mulberry32(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
 }
 
 const widthCache = new Map();

@@ -1,5 +1,6 @@
 // A tiny murmuring voice for the demo's picture book: no recordings ship and nothing is downloaded, so each
 // page's narration is synthesised here (a WAV and its word times), in the browser or in Node.
+import { mulberry32 } from './seeded-random.js';
 
 const VOWELS = {  // formant frequencies (Hz) of a few vowels, F1 F2 F3, and a gain that evens their loudness
   a: [730, 1090, 2440, 1.5], e: [530, 1840, 2480, 1], i: [300, 2200, 2950, 0.45], o: [570, 840, 2410, 1],
@@ -7,17 +8,6 @@ const VOWELS = {  // formant frequencies (Hz) of a few vowels, F1 F2 F3, and a g
 };
 const BANDWIDTHS = [80, 100, 140];
 const FORMANT_GAINS = [1, 0.55, 0.25];
-
-function mulberry32(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
 
 /** A word's syllables: each a vowel group (its vowel) and the consonants before it (its onset). */
 function syllables(word) {
