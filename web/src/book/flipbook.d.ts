@@ -114,7 +114,10 @@ export interface ReadAloud {
   resume(): void;
   /** Stops: the speech or audio stops, the mark goes, `readaloudend` with reason 'stopped'. */
   stop(): void;
-  /** A new voice, rate or pitch at once: narration changes speed as it plays; speech starts again at the word being said. */
+  /**
+   * A new voice, rate or pitch at once: narration changes speed as it plays; speech starts again at the
+   * word being said. A TypeError or RangeError names a bad change (as readAloud() checks it).
+   */
   update(changes: { voice?: string; rate?: number; pitch?: number }): void;
   /** Resolves with `readaloudend`'s detail when the reading ends. */
   readonly finished: Promise<{ reason: ReadAloudEndReason; page: number; error?: Error }>;

@@ -11,25 +11,38 @@ import { describeValue } from '../engine/describe-value.js';
 const OPTION_KEYS = ['engine', 'voice', 'rate', 'pitch', 'lang', 'follow'];
 const RANGES = { rate: [0.1, 10], pitch: [0, 2] };
 
-/** readAloud()'s options checked, defaults filled in; a TypeError or RangeError names what is wrong. */
-export function checkReadOptions(options = {}) {
-  if (options === null || typeof options !== 'object') throw new TypeError(`conecurl: readAloud() takes an options object, got ${describeValue(options)}`);
+/** readAloud()'s options checked, defaults filled in; a TypeError or RangeError names what is wrong (and `call`). */
+export function checkReadOptions(options = {}, call = 'readAloud()') {
+  if (options === null || typeof options !== 'object') throw new TypeError(`conecurl: ${call} takes an options object, got ${describeValue(options)}`);
   const unknown = Object.keys(options).find((key) => !OPTION_KEYS.includes(key));
-  if (unknown !== undefined) throw new TypeError(`conecurl: readAloud() has no option '${unknown}' (allowed: ${OPTION_KEYS.join(', ')})`);
+  if (unknown !== undefined) throw new TypeError(`conecurl: ${call} has no option '${unknown}' (allowed: ${OPTION_KEYS.join(', ')})`);
   const { engine = null, voice, rate = 1, pitch = 1, lang, follow = false } = options;
   if (engine !== null && typeof engine?.speak !== 'function') {
-    throw new TypeError(`conecurl: readAloud() 'engine' must have speak(text, { lang, rate, pitch, voice, onWord, onEnd }) returning { pause, resume, cancel }; got ${describeValue(engine)}`);
+    throw new TypeError(`conecurl: ${call} 'engine' must have speak(text, { lang, rate, pitch, voice, onWord, onEnd }) returning { pause, resume, cancel }; got ${describeValue(engine)}`);
   }
   if (voice !== undefined && !(typeof voice === 'string' && voice !== '') && !(typeof voice === 'object' && voice !== null && typeof voice.name === 'string')) {
-    throw new TypeError(`conecurl: readAloud() 'voice' must be a voice's name (readAloudVoices() lists them) or a SpeechSynthesisVoice; got ${describeValue(voice)}`);
+    throw new TypeError(`conecurl: ${call} 'voice' must be a voice's name (readAloudVoices() lists them) or a SpeechSynthesisVoice; got ${describeValue(voice)}`);
   }
   for (const [name, value] of [['rate', rate], ['pitch', pitch]]) {
     const [low, high] = RANGES[name];
-    if (!(Number.isFinite(value) && value >= low && value <= high)) throw new RangeError(`conecurl: readAloud() '${name}' must be a number from ${low} to ${high}, got ${describeValue(value)}`);
+    if (!(Number.isFinite(value) && value >= low && value <= high)) throw new RangeError(`conecurl: ${call} '${name}' must be a number from ${low} to ${high}, got ${describeValue(value)}`);
   }
-  if (lang !== undefined && !(typeof lang === 'string' && lang !== '')) throw new TypeError(`conecurl: readAloud() 'lang' must be a language tag such as 'en-GB', got ${describeValue(lang)}`);
-  if (typeof follow !== 'boolean') throw new TypeError(`conecurl: readAloud() 'follow' must be true or false, got ${describeValue(follow)}`);
+  if (lang !== undefined && !(typeof lang === 'string' && lang !== '')) throw new TypeError(`conecurl: ${call} 'lang' must be a language tag such as 'en-GB', got ${describeValue(lang)}`);
+  if (typeof follow !== 'boolean') throw new TypeError(`conecurl: ${call} 'follow' must be true or false, got ${describeValue(follow)}`);
   return { engine, voice: typeof voice === 'object' ? voice.name : voice, voiceObject: typeof voice === 'object' ? voice : null, rate, pitch, lang, follow };
+}
+
+const UPDATE_KEYS = ['voice', 'rate', 'pitch'];
+
+/** A reading's update() checked: only voice, rate and pitch, each as readAloud() takes it. */
+export function checkUpdate(changes) {
+  if (changes === null || typeof changes !== 'object') throw new TypeError(`conecurl: update() takes { voice, rate, pitch }, got ${describeValue(changes)}`);
+  const unknown = Object.keys(changes).find((key) => !UPDATE_KEYS.includes(key));
+  if (unknown !== undefined) throw new TypeError(`conecurl: update() has no option '${unknown}' (allowed: ${UPDATE_KEYS.join(', ')})`);
+  const given = Object.fromEntries(Object.entries(changes).filter(([, value]) => value !== undefined));
+  const checked = checkReadOptions(given, 'update()');
+  // A voice given as undefined goes back to the default one.
+  return Object.fromEntries(Object.keys(changes).map((key) => [key, checked[key]]));
 }
 
 export class BookReader {
@@ -70,6 +83,7 @@ export class BookReader {
         return () => this._controller.removeEventListener(type, listener);
       },
       script: (page) => this._script(page),
+      checkUpdate,
       turn: () => book.turns().turn('forward'),
       showWord: () => this._layer.update(),
       curlWord: (word) => this._curlWord(word),

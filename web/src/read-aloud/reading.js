@@ -29,7 +29,7 @@ function silence(ms, onEnd) {
 export class Reading {
   /**
    * @param {object} book  what a reading needs of the book (book-reader.js): openPages(), pageCount(),
-   *   emit(type, detail), on(type, listener) -> off, script(page), turn(), showWord(word|null),
+   *   emit(type, detail), on(type, listener) -> off, script(page), checkUpdate(changes), turn(), showWord(word|null),
    *   curlWord(word|null) -> Promise, ended(reading)
    * @param {{ engine: object|null, voice?: string, rate: number, pitch: number, lang?: string, follow: boolean }} settings
    * @param {object} control  filled in with end(reason): how its maker ends it (the book destroyed)
@@ -97,8 +97,9 @@ export class Reading {
    * the word being said.
    */
   update(changes) {
+    const checked = this._book.checkUpdate(changes);  // a TypeError or RangeError names a bad one
     if (this._state === 'ended') return;
-    Object.assign(this._settings, changes);
+    Object.assign(this._settings, checked);
     if (this._speaker?.audio) {
       this._speaker.audio.playbackRate = this._settings.rate;
     } else if (this._speaker && this._state !== 'waiting') {
