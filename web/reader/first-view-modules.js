@@ -1,6 +1,6 @@
 // The modules the reader page (reader.js) imports on the way to a published book's first spread, beyond
 // reader.js's static imports: the book imports them when its options ask (the document, the toolbar, the
-// page in the address, the edge marks, the text layer). `conecurl publish` preloads them from index.html
+// page in the address, the edge marks, the text layer, the toolbar's Read aloud asking for voices). `conecurl publish` preloads them from index.html
 // so they come in one round trip with the rest; publish.spec checks this list against what the page asks for.
 export const FIRST_VIEW_MODULES = [
   'web/src/book/page-memory.js',
@@ -12,6 +12,7 @@ export const FIRST_VIEW_MODULES = [
   'web/src/layers/edge-tabs.js',
   'web/src/layers/text-layer.js',
   'web/src/layers/text-measure.js',
+  'web/src/read-aloud/speech-engine.js',
   'web/src/viewer/attach-controls.js',
   'web/src/viewer/contents-panel.js',
   'web/src/viewer/more-menu.js',

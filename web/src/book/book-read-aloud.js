@@ -1,7 +1,7 @@
 // Read-aloud as the controller holds it before anything is read: read-aloud/book-reader.js imported
 // at the first readAloud(), and the word read aloud handed to the page images (`marksOn`) once it is.
-// Whether a book can read aloud, and the voices, are answered without it (the toolbar asks at once).
-import { speechVoices } from '../read-aloud/speech-engine.js';
+// Whether a book can read aloud, and the voices, are answered with read-aloud/speech-engine.js alone
+// (the toolbar asks at once); a book that never asks fetches neither.
 
 /**
  * Read-aloud (read-aloud/book-reader.js, imported at the first readAloud()): readAloud(), readingAloud,
@@ -15,6 +15,7 @@ export function makeReadAloud(controller, book, pageText) {
     book.alive();
     return (reader ??= new BookReader(controller, book, pageText));
   }));
+  const speechVoices = async () => (await import('../read-aloud/speech-engine.js')).speechVoices();
   return {
     start: async (options) => (await load()).start(options),
     current: () => reader?.current ?? null,
