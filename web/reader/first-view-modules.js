@@ -1,7 +1,8 @@
 // The modules the reader page (reader.js) imports on the way to a published book's first spread, beyond
 // reader.js's static imports: the book imports them when its options ask (the document, the toolbar, the
-// page in the address, the edge marks, the text layer, the toolbar's Read aloud asking for voices). `conecurl publish` preloads them from index.html
-// so they come in one round trip with the rest; publish.spec checks this list against what the page asks for.
+// page in the address, the edge marks, the text layer, the voices its Read aloud button asks for).
+// `conecurl publish` preloads them from index.html so they come in one round trip with the rest;
+// publish.spec checks this list against what the page asks for.
 export const FIRST_VIEW_MODULES = [
   'web/src/book/page-memory.js',
   'web/src/document/book-outline.js',
