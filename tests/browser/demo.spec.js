@@ -220,6 +220,36 @@ test('browser: demo "Read aloud" on the picture book plays the cover\'s narratio
   expect(problems).toEqual([]);
 });
 
+test('browser: demo "Read aloud" on the PDF brochure reads with the browser\'s voice: speechSynthesis.speak gets the cover\'s text in the page\'s language, and the toolbar shows its Read button', async ({ page }) => {
+  // A browser with one voice (this machine's Chromium has none): speak() records what it is given.
+  await page.addInitScript(() => {
+    const synth = new EventTarget();
+    const voice = { name: 'Demo Voice', lang: 'en-GB', default: true, localService: true, voiceURI: 'demo' };
+    Object.assign(synth, { spoken: [], getVoices: () => [voice], speak(u) { this.spoken.push(u); }, cancel() {}, pause() {}, resume() {} });
+    Object.defineProperty(window, 'speechSynthesis', { value: synth, configurable: true });
+    window.SpeechSynthesisUtterance = class extends EventTarget {
+      constructor(text) {
+        super();
+        Object.assign(this, { text, lang: '', rate: 1, pitch: 1, voice: null });
+      }
+    };
+  });
+  await page.setViewportSize({ width: 1440, height: 900 });
+  const problems = await openReady(page, '/web/demo/');
+  await page.selectOption('#source', 'pdf');
+  await expect(page.locator('#where')).toHaveText(/ of 12$/, { timeout: 30_000 });
+  await expect(page.locator('[role=toolbar] [data-control=readAloud]')).toBeVisible();
+  await page.click('#read-aloud');
+  await page.waitForFunction(() => window.speechSynthesis.spoken.length === 1, null, { timeout: 30_000 });
+  const spoken = await page.evaluate(() => ({ text: window.speechSynthesis.spoken[0].text, lang: window.speechSynthesis.spoken[0].lang }));
+  expect(spoken.text).toContain('a PDF shown with pdf.js, curled on a cone');
+  expect(spoken.lang).toBe(await page.evaluate(() => document.documentElement.lang));
+  await expect(page.locator('#read-aloud')).toHaveText('Stop');
+  await page.click('#read-aloud');
+  await expect(page.locator('#read-aloud')).toHaveText('Read aloud');
+  expect(problems).toEqual([]);
+});
+
 test('browser: the demo passes axe-core with no serious or critical violation (contrast, names matching visible text, ...)', async ({ page }) => {
   await openReady(page, '/web/demo/');  // the demo says it is ready once the plot and the readout are drawn
   await page.evaluate(() => window.conecurlDemo.book.whenIdle());  // and the book's pages
