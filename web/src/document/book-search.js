@@ -3,7 +3,7 @@
 // `searchchange` event. Marks are drawn into the pages' images (pages/marked-page.js, through the page
 // store's `decorate` hook, document-wiring.js) and laid over the flat pages as elements (layers/search-hits.js).
 // Made by the book's first search(), showHit() or clearSearch(); a document's index starts after the book opens.
-import { foldQuery, htmlPageHits } from './text-index.js';
+import { foldQuery, htmlPageBox, htmlPageHits } from './text-index.js';
 import { createSearchHitsLayer } from '../layers/search-hits.js';
 import { describeValue } from '../engine/describe-value.js';
 
@@ -74,7 +74,7 @@ export class BookSearch {
         if (signal?.aborted) throw abortError();
         const entry = entries[page];
         if (entry.html) {
-          const box = (entry.html.assignedSlot ?? entry.html).parentElement;
+          const box = htmlPageBox(entry.html);
           if (box) hits.push(...htmlPageHits(page, entry.html, box, query));
         } else if (index) {
           hits.push(...await Promise.race([index.hits(page, query), aborted]));

@@ -178,6 +178,9 @@ export class TextIndex {
 
 // ---- HTML pages ---------------------------------------------------------------------------------
 
+/** The box an HTML page's element lies in (its sheet's content area, through the slot it is given), or null while not laid in. */
+export const htmlPageBox = (element) => (element.assignedSlot ?? element).parentElement;
+
 /**
  * The hits of `query` (folded) in an HTML page's element, rects from a Range over each match relative
  * to `box` (the page's box: its sheet's content area). Read at the time of the search: the page is live.

@@ -3,6 +3,7 @@
 // the search hits are (search-hits.js), removed while a leaf moves. While the leaf turns, the mark is
 // drawn into the page's image instead (pages/marked-page.js), so it curls with the paper.
 import { READING_FILL } from '../pages/marked-page.js';
+import { markBox } from './search-hits.js';
 
 /**
  * An overlay layer (book-controller.js lays it over the open pages while the book rests).
@@ -24,15 +25,12 @@ export function createReadingMarkLayer(root, markNow) {
     const key = place ? JSON.stringify([place, mark.rects]) : '';
     if (key === shown) return;
     shown = key;
-    layer.replaceChildren(...(place ? mark.rects.map(([fx, fy, fw, fh]) => {
+    layer.replaceChildren(...(place ? mark.rects.map((rect) => {
       const element = document.createElement('div');
       element.dataset.reading = '';
       element.dataset.page = String(mark.page);
-      const pad = Math.max(1, place.height * 0.002);
-      element.style.cssText = 'position:absolute;box-sizing:border-box;border-radius:3px;mix-blend-mode:multiply;'
-        + `background:${READING_FILL};`
-        + `left:${place.x + fx * place.width - pad}px;top:${place.y + fy * place.height - pad}px;`
-        + `width:${fw * place.width + 2 * pad}px;height:${fh * place.height + 2 * pad}px;`;
+      element.style.cssText = `position:absolute;box-sizing:border-box;border-radius:3px;mix-blend-mode:multiply;background:${READING_FILL};`
+        + markBox(place, rect, Math.max(1, place.height * 0.002));
       return element;
     }) : []));
   };

@@ -6,6 +6,16 @@
 // themselves only over a live HTML page, whose element covers its texture.
 
 /**
+ * Where a mark over `rect` ([x, y, w, h] fractions of the page placed at `place`: { x, y, width, height }
+ * in CSS px of the book's element) lies, `pad` CSS px around it: its left, top, width and height as CSS.
+ * The word read aloud (reading-mark.js) is laid by it too.
+ */
+export function markBox(place, [fx, fy, fw, fh], pad = 0) {
+  return `left:${place.x + fx * place.width - pad}px;top:${place.y + fy * place.height - pad}px;`
+    + `width:${fw * place.width + 2 * pad}px;height:${fh * place.height + 2 * pad}px;`;
+}
+
+/**
  * An overlay layer (book-controller.js lays it over the open pages while the book rests).
  * @param {HTMLElement} root  the book's element (position: relative); the layer covers it
  * @param {{ marksOn: (page: number) => Array<{ rect: number[], current: boolean }>, live: (page: number) => boolean }} book
@@ -34,9 +44,7 @@ export function createSearchHitsLayer(root, { marksOn, live }) {
           mark.dataset.searchHit = '';
           mark.dataset.page = String(place.page);
           if (current) mark.dataset.current = '';
-          mark.style.cssText = `position:absolute;box-sizing:border-box;border-radius:2px;`
-            + `left:${place.x + fx * place.width}px;top:${place.y + fy * place.height}px;`
-            + `width:${fw * place.width}px;height:${fh * place.height}px;`
+          mark.style.cssText = `position:absolute;box-sizing:border-box;border-radius:2px;${markBox(place, [fx, fy, fw, fh])}`
             + (tint ? `background:${current ? 'rgba(255,140,0,0.45)' : 'rgba(255,214,0,0.45)'};mix-blend-mode:multiply;` : '')
             + (current ? 'outline:2px solid rgba(220,110,0,0.9);outline-offset:1px;' : '');
           elements.push(mark);

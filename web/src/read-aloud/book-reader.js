@@ -7,6 +7,7 @@ import { pageScript } from './page-script.js';
 import { speechEngine, speechVoices } from './speech-engine.js';
 import { createReadingMarkLayer } from '../layers/reading-mark.js';
 import { describeValue } from '../engine/describe-value.js';
+import { languageOf } from '../engine/language.js';
 
 const OPTION_KEYS = ['engine', 'voice', 'rate', 'pitch', 'lang', 'follow'];
 const RANGES = { rate: [0.1, 10], pitch: [0, 2] };
@@ -145,7 +146,6 @@ export class BookReader {
     return pageScript(page, {
       entry,
       record: () => this._pageText(page),
-      htmlBox: () => (entry.html ? (entry.html.assignedSlot ?? entry.html).parentElement : null),
       lang: langOf(entry, book),
     });
   }
@@ -160,9 +160,8 @@ export class BookReader {
   }
 }
 
-// A page's language: an HTML page's own (its element's lang), the document's, the book's element's,
-// the web page's, else the browser's.
+// A page's language: an HTML page's own (its element's nearest lang), else the document's, else the
+// book element's (engine/language.js).
 function langOf(entry, book) {
-  return entry.html?.closest?.('[lang]')?.lang || book.document()?.lang
-    || book.root.closest?.('[lang]')?.lang || globalThis.document?.documentElement.lang || globalThis.navigator?.language || '';
+  return (entry.html ? languageOf(entry.html) : book.document()?.lang) || languageOf(book.root);
 }

@@ -79,6 +79,5 @@ export function playNarration(src, words, { from = 0, rate = 1, onWord, onEnd, o
       audio.removeAttribute('src');
       audio.load();  // lets the file go
     },
-    set rate(value) { audio.playbackRate = value; },
   };
 }

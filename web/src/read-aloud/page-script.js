@@ -1,6 +1,6 @@
 // What read-aloud says on a page and where each of its words lies on the page: the page's script,
 // from its recorded narration, a document's text record, a live HTML page's text or its alt text.
-import { recordRects, htmlPageText, foldText } from '../document/text-index.js';
+import { recordRects, htmlPageBox, htmlPageText, foldText } from '../document/text-index.js';
 import { loadWordTimes } from './word-times.js';
 
 const WORDS = /\S+/gu;
@@ -22,11 +22,11 @@ export function wordAt(words, charIndex) {
  * times), 'text' (a document's or an HTML page's text, words with their rects), 'alt' (the page's alt
  * text: words without places) or 'none' (nothing to say: skipped with a short pause).
  * @param {number} page
- * @param {{ entry: object, record: () => Promise<object|null>, htmlBox: () => Element|null, lang: string }} from
- *   entry: the page's entry; record: a document's text record of it (null for other books); htmlBox: an HTML page's box
+ * @param {{ entry: object, record: () => Promise<object|null>, lang: string }} from
+ *   entry: the page's entry; record: a document's text record of it (null for other books)
  */
-export async function pageScript(page, { entry, record, htmlBox, lang }) {
-  const text = await pageText(entry, record, htmlBox);
+export async function pageScript(page, { entry, record, lang }) {
+  const text = await pageText(entry, record);
   if (entry.narration) {
     const timed = await loadWordTimes(entry.narration.words, `page ${page} narration.words`);
     return { page, kind: 'narration', text: text.text, words: placeTimedWords(timed, text), lang, audio: entry.narration.src };
@@ -38,9 +38,9 @@ export async function pageScript(page, { entry, record, htmlBox, lang }) {
 }
 
 // The page's own text and where a range of it lies: a document's record, a live HTML page's text, or none.
-async function pageText(entry, record, htmlBox) {
+async function pageText(entry, record) {
   if (entry.html) {
-    const box = htmlBox();
+    const box = htmlPageBox(entry.html);
     const read = htmlPageText(entry.html);
     return { text: read.text, rects: (start, end) => (box ? read.rects(start, end, box) : []) };
   }

@@ -40,11 +40,12 @@ export class Reading {
     this._state = 'reading';
     this._page = book.openPages()[0];
     this._word = null;
-    this._speaker = null;   // what says the page now: { pause, resume, cancel, audio?, rate? }
+    this._speaker = null;   // what says the page now: { pause, resume, cancel, audio? }
     this._runs = 0;         // each (re)start of the loop; an older loop stops at its next step
     this._held = null;      // while paused: the promise the loop waits on, and its release
     this._own = null;       // our own turn in flight: { started: boolean }
     this._heldAt = null;    // where a reader's drag found the reading: { page, index }, to go on there if it falls back
+    this._onCancel = null;  // resolves the page being said when the loop moves on (_silence)
     this.finished = new Promise((resolve) => { this._finish = resolve; });
     control.end = (reason) => this._end(reason);
     this._off = [

@@ -3,6 +3,7 @@
 // its height), the panels over the book's side (on a phone, sheets fixed to the screen), reading mode,
 // all in the book's container so fullscreen takes them.
 import { MAX_ZOOM } from '../engine/layout.js';
+import { languageOf } from '../engine/language.js';
 import { viewerLabels } from './viewer-labels.js';
 import { checkControls, checkLabels, shownParts } from './viewer-options.js';
 import { installViewerStyle } from './viewer-style.js';
@@ -290,14 +291,4 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
       Object.assign(book.element.style, bookStyle);
     },
   };
-}
-
-// The language `element` is in: its own or an ancestor's lang, through shadow roots (a <cone-flipbook
-// lang="fr">), else the document's.
-function languageOf(element) {
-  for (let node = element; node; node = node.getRootNode().host) {
-    const given = node.closest('[lang]');
-    if (given) return given.lang;
-  }
-  return element.ownerDocument.documentElement.lang;
 }

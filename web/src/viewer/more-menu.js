@@ -6,6 +6,30 @@ import { icon } from './viewer-icons.js';
 
 let menuCount = 0;
 
+/** A closed popup of the toolbar (`role` 'menu' or 'dialog', named `label`), styled as the More menu. */
+export function popupElement(id, role, label, className = 'conecurl-menu') {
+  const element = document.createElement('div');
+  element.className = className;
+  element.id = id;
+  element.hidden = true;
+  element.setAttribute('role', role);
+  element.setAttribute('aria-label', label);
+  return element;
+}
+
+/**
+ * A popup opened by a control at `at` (its client rect): above it where there is room on the screen,
+ * else below it (`data-below`), never taller than the screen leaves it, `margin` CSS px kept. The
+ * Voice and speed popup (read-aloud-menu.js) is placed by it too.
+ */
+export function placeByAnchor(element, at, margin) {
+  const above = at.top;
+  const below = window.innerHeight - at.bottom;
+  const up = above >= Math.min(below, element.scrollHeight) || above >= element.scrollHeight;
+  element.toggleAttribute('data-below', !up);
+  element.style.maxHeight = `${Math.max(44, Math.floor((up ? above : below) - margin))}px`;
+}
+
 /**
  * The More button and its menu. `items`: [{ part, label, iconName }] in menu order; `press(part)` runs
  * when one is chosen. The caller puts `button` in the toolbar and `element` beside the toolbar.
@@ -27,12 +51,7 @@ export function createMoreMenu(labels, items, press) {
   buttonText.textContent = labels.more;
   button.append(icon('more'), buttonText);
 
-  const element = document.createElement('div');
-  element.className = 'conecurl-menu';
-  element.id = id;
-  element.hidden = true;
-  element.setAttribute('role', 'menu');
-  element.setAttribute('aria-label', labels.more);
+  const element = popupElement(id, 'menu', labels.more);
   const byPart = {};
   for (const { part, label, iconName } of items) {
     const item = document.createElement('button');
@@ -56,13 +75,7 @@ export function createMoreMenu(labels, items, press) {
     if (!element.hidden) return;
     element.hidden = false;
     button.setAttribute('aria-expanded', 'true');
-    // Above the button where there is room on the screen, else below it; never past the screen.
-    const at = button.getBoundingClientRect();
-    const above = at.top;
-    const below = window.innerHeight - at.bottom;
-    const up = above >= Math.min(below, element.scrollHeight) || above >= element.scrollHeight;
-    element.toggleAttribute('data-below', !up);
-    element.style.maxHeight = `${Math.max(44, Math.floor((up ? above : below) - 4))}px`;
+    placeByAnchor(element, button.getBoundingClientRect(), 4);
     const list = shown();
     list[focusAt === 'last' ? list.length - 1 : 0]?.focus();
     document.addEventListener('pointerdown', onOutside, true);

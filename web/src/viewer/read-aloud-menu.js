@@ -1,5 +1,6 @@
 // The Read aloud part's "Voice and speed" popup: the reader's voice and speed, kept between readings,
 // in two native selects over the toolbar; what a choice does (readAloud(), update()) is the caller's.
+import { placeByAnchor, popupElement } from './more-menu.js';
 
 /** The speeds offered, as `rate` (1: the voice's own). */
 export const SPEEDS = [0.5, 0.75, 1, 1.25, 1.5, 2];
@@ -38,12 +39,7 @@ export function voicesInOrder(voices, lang) {
  */
 export function createReadAloudMenu(labels, button, { anchorOf, voices, lang, changed }) {
   const id = `conecurl-read-menu-${++popupCount}`;
-  const element = document.createElement('div');
-  element.className = 'conecurl-menu conecurl-read-menu';
-  element.id = id;
-  element.hidden = true;
-  element.setAttribute('role', 'dialog');
-  element.setAttribute('aria-label', labels.readAloudSettings);
+  const element = popupElement(id, 'dialog', labels.readAloudSettings, 'conecurl-menu conecurl-read-menu');
   button.setAttribute('aria-controls', id);
 
   const field = (text, name) => {
@@ -87,8 +83,8 @@ export function createReadAloudMenu(labels, button, { anchorOf, voices, lang, ch
   }
   const selects = () => [voice, speed].filter(({ row }) => !row.hidden).map(({ select }) => select);
 
-  // Above the anchor where there is room on the screen, else below it; from the anchor's left edge,
-  // moved left as far as the screen's right edge asks.
+  // Above the anchor where there is room on the screen, else below it (more-menu.js placeByAnchor);
+  // from the anchor's left edge, moved left as far as the screen's right edge asks.
   function place() {
     if (element.hidden) return;
     const holder = element.offsetParent ?? element.parentElement;
@@ -99,11 +95,7 @@ export function createReadAloudMenu(labels, button, { anchorOf, voices, lang, ch
     const screenWidth = element.ownerDocument.documentElement.clientWidth || window.innerWidth;
     const left = Math.max(EDGE, Math.min(at.left, screenWidth - element.offsetWidth - EDGE));
     element.style.left = `${Math.round(left - box.left)}px`;
-    const above = at.top;
-    const below = window.innerHeight - at.bottom;
-    const up = above >= Math.min(below, element.scrollHeight) || above >= element.scrollHeight;
-    element.toggleAttribute('data-below', !up);
-    element.style.maxHeight = `${Math.max(44, Math.floor((up ? above : below) - 2 * EDGE))}px`;  // its margin too
+    placeByAnchor(element, at, 2 * EDGE);  // its margin too
   }
 
   let opens = 0;  // a close, or another open, while the voices are awaited wins

@@ -79,7 +79,6 @@ export function createToolbar(labels, parts, actions, { fullscreenKey = 'fullscr
     } else if (part === 'readAloud') {
       buttons.readAloud = makeButton(labels, 'readAloud', 'readAloud', false);
       buttons.readAloudSettings = makeButton(labels, 'readAloudSettings', 'readAloudSettings', false);
-      buttons.readAloud.setAttribute('aria-pressed', 'false');
       buttons.readAloudSettings.setAttribute('aria-haspopup', 'dialog');
       buttons.readAloudSettings.setAttribute('aria-expanded', 'false');
       element.append(buttons.readAloud, buttons.readAloudSettings);
