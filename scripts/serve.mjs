@@ -19,9 +19,10 @@ const types = {
 
 /**
  * Serves `root` on 127.0.0.1:`port` (0: any free port). `home` is where '/' redirects, if anywhere.
- * Resolves with { server, url } once listening.
+ * `headHtml`, if given, goes first into every HTML page's <head> (tests put a listener there that must
+ * run before the page's own scripts). Resolves with { server, url } once listening.
  */
-export function serveDirectory(root, { port = 0, home = null } = {}) {
+export function serveDirectory(root, { port = 0, home = null, headHtml = '' } = {}) {
   root = path.resolve(root);
   const server = http.createServer((req, res) => {
     const url = new URL(req.url, `http://${host}`);
@@ -45,7 +46,9 @@ export function serveDirectory(root, { port = 0, home = null } = {}) {
         'Cache-Control': 'no-cache',
         ...(url.searchParams.get('cors') === '1' ? { 'Access-Control-Allow-Origin': '*' } : {}),
       });
-      res.end(data);
+      const html = headHtml && path.extname(file) === '.html';
+      const text = html && data.toString('utf8');
+      res.end(!html ? data : /<head[^>]*>/i.test(text) ? text.replace(/<head[^>]*>/i, (head) => head + headHtml) : headHtml + text);
     });
   });
   return new Promise((resolve, reject) => {

@@ -1,0 +1,4 @@
+// The cross-engine suite in Firefox (journeys.mjs): `node --test tests/engines/firefox.test.mjs` runs it alone.
+import { engineSuite } from './journeys.mjs';
+
+engineSuite('firefox');

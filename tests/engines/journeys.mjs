@@ -1,0 +1,325 @@
+// The cross-engine suite (issue 36): the journeys a reader and a host make, run in Firefox and in WebKit
+// (firefox.test.mjs, webkit.test.mjs) with the Chromium suite's assertions wherever the engine allows.
+// One browser per engine on an Xvfb display of its own; every page gets tests/engines/heard.js first, so
+// what a page throws is heard even where the driver hears no console.
+import { after, before, describe, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { PNG } from 'pngjs';
+import pixelmatch from 'pixelmatch';
+import { launchEngine, startDisplay, engineExecutables } from '../../scripts/engines.mjs';
+import { serveDirectory } from '../../scripts/serve.mjs';
+import { documentJourneys } from './documents.mjs';
+import { readAloudJourneys } from './read-aloud.mjs';
+
+const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
+const FLIPBOOK = '/tests/browser/fixtures/flipbook-fixture.html';
+const HTML = '/tests/browser/fixtures/html-fixture.html';
+const UPDATE = process.env.CONECURL_UPDATE_REFERENCES === '1';
+
+/** Reference images of one engine: tests/engines/references/ENGINE/NAME.png. */
+const referencePath = (engine, name) => path.join(root, 'tests/engines/references', engine, `${name}.png`);
+
+/** The part of a PNG inside `rect` (CSS px at ratio 1), as a PNG. */
+function cropTo(buffer, { x, y, width, height }) {
+  const png = PNG.sync.read(buffer);
+  const [left, top] = [Math.max(0, Math.round(x)), Math.max(0, Math.round(y))];
+  const w = Math.min(Math.round(width), png.width - left);
+  const h = Math.min(Math.round(height), png.height - top);
+  const out = new PNG({ width: w, height: h });
+  PNG.bitblt(png, out, left, top, w, h, 0, 0);
+  return out;
+}
+
+/**
+ * Compares `png` with the engine's reference image NAME (rewritten instead under
+ * scripts/update-references.sh). Tolerance as the Chromium suite's: a pixel differs past 0.1, and at most
+ * 0.5% of pixels may (software rasterisers are deterministic on one machine; other CPUs antialias a little
+ * differently). A failure leaves the actual image and the difference beside the build's logs.
+ */
+function matchesReference(engine, name, png) {
+  const file = referencePath(engine, name);
+  if (UPDATE) {
+    fs.mkdirSync(path.dirname(file), { recursive: true });
+    fs.writeFileSync(file, PNG.sync.write(png));
+    return;
+  }
+  assert.ok(fs.existsSync(file), `no reference image ${path.relative(root, file)}: run scripts/update-references.sh and look at it`);
+  const want = PNG.sync.read(fs.readFileSync(file));
+  assert.deepEqual([png.width, png.height], [want.width, want.height], `${name}: size differs from the reference`);
+  const diff = new PNG({ width: png.width, height: png.height });
+  const differ = pixelmatch(png.data, want.data, diff.data, png.width, png.height, { threshold: 0.1 });
+  if (differ > 0.005 * png.width * png.height) {
+    const out = path.join(root, 'build/test-logs/engines', engine);
+    fs.mkdirSync(out, { recursive: true });
+    fs.writeFileSync(path.join(out, `${name}-actual.png`), PNG.sync.write(png));
+    fs.writeFileSync(path.join(out, `${name}-diff.png`), PNG.sync.write(diff));
+    assert.fail(`${name}: ${differ} pixels differ from the reference (${(100 * differ / (png.width * png.height)).toFixed(2)}%); see ${path.relative(root, out)}`);
+  }
+}
+
+// --- in-page helpers (run inside the page: they see only their arguments and the page) ---
+
+/** What the book shows at fractions of its resting rectangle: a page index by its colour, 'paper', 'none' or 'other'. */
+function shownAt(points) {
+  const book = window.book;
+  book.surface.drawNow();
+  const pixels = book.surface.readPixels();
+  const rect = book.restingRect();
+  const ratio = pixels.width / book.surface.canvas.clientWidth;
+  return points.map(([fx, fy]) => {
+    const x = Math.round((rect.x + fx * rect.width) * ratio);
+    const y = Math.round((rect.y + fy * rect.height) * ratio);
+    const i = (y * pixels.width + x) * 4;
+    const [r, g, b, a] = Array.from(pixels.data.slice(i, i + 4));
+    if (a < 16) return 'none';
+    const index = window.pageAtColor([r, g, b], 12);
+    if (index >= 0) return index;
+    return Math.min(r, g, b) > 200 && Math.max(r, g, b) - Math.min(r, g, b) < 25 ? 'paper' : `other(${r},${g},${b})`;
+  });
+}
+
+/** Opens window.book in the flipbook fixture with `options` and records its events in window.events. */
+async function openBookIn(options) {
+  await window.openBook(options);
+  window.events = [];
+  for (const type of ['turnstart', 'turned', 'turncancel', 'zoom', 'pageerror']) {
+    window.book.addEventListener(type, (e) => window.events.push({ type, ...e.detail }));
+  }
+  await window.settle();
+  return { page: window.book.page, display: window.book.display };
+}
+
+/**
+ * Defines ENGINE's suite: a node:test `describe` whose tests share one browser. Test names say what they
+ * prove and that they need the engine (`(firefox)`, `(webkit)`).
+ */
+export function engineSuite(engine) {
+  describe(`${engine}`, { concurrency: false }, () => {
+    let display, server, base, browser;
+    const url = (p) => new URL(p, base).href;
+    const evaluate = (fn, ...args) => browser.evaluate(fn, ...args);
+
+    /** Opens PATH and waits until it says it is ready (or why not); returns nothing, asserts no error. */
+    async function open(p) {
+      await browser.goto(url(p));
+      await browser.waitFor(() => document.body && (document.body.dataset.ready || document.body.dataset.error));
+      const error = await evaluate(() => document.body.dataset.error || null);
+      assert.equal(error, null, `${p} reported an error`);
+    }
+    /** What the open page (and its same-origin frames) threw, rejected or logged as an error. */
+    const heard = () => evaluate(() => [window, ...Array.from(document.querySelectorAll('iframe'), (f) => f.contentWindow)]
+      .flatMap((w) => { try { return w.__heard || []; } catch { return []; } }));
+    /** A test of ENGINE: FN, then nothing heard in the page it left open. */
+    const journey = (name, fn, options = {}) => test(`${engine}: ${name} (browser: ${engine})`, options, async () => {
+      await fn();
+      assert.deepEqual(await heard(), [], 'the page threw, rejected or logged an error');
+    });
+
+    before(async () => {
+      const exe = engineExecutables(engine);
+      display = await startDisplay(exe.xvfb);
+      const heardJs = '<script src="/tests/engines/heard.js"></script>';
+      ({ server, url: base } = await serveDirectory(root, { headHtml: heardJs }));
+      browser = await launchEngine(engine, { display: display.display, width: 800, height: 600 });
+      console.log(`# ${engine}: ${browser.version} on ${display.display}, serving ${base}`);
+    });
+    after(async () => {
+      await browser?.close();
+      server?.close();
+      display?.stop();
+    });
+
+    journey('the demo\'s book draws its cover and its pages, and matches the reference images at rest and at t = 0.15, 0.6 and 0.95', async () => {
+      await open('/web/demo/?page=2');
+      const book = await evaluate(() => {
+        const b = window.conecurlDemo.book;
+        const box = document.getElementById('book').getBoundingClientRect();
+        return { page: b.page, surface: b.surface.kind, box: { x: box.x, y: box.y, width: box.width, height: box.height } };
+      });
+      assert.equal(book.surface, 'webgl', 'the demo drew with WebGL2');
+      assert.equal(book.page, 2);
+      // Drawn: the book's canvas holds many colours, not one.
+      const colours = await evaluate(() => {
+        const s = window.conecurlDemo.book.surface;
+        s.drawNow();
+        const px = s.readPixels();
+        const seen = new Set();
+        for (let i = 0; i < px.data.length; i += 4 * 97) seen.add((px.data[i] >> 4) << 8 | (px.data[i + 1] >> 4) << 4 | px.data[i + 2] >> 4);
+        return seen.size;
+      });
+      assert.ok(colours > 20, `the canvas shows ${colours} colours`);
+      await evaluate(() => window.conecurlDemo.book.whenIdle());
+      matchesReference(engine, 'demo-at-rest', cropTo(await browser.screenshot(), book.box));
+      for (const t of [0.15, 0.6, 0.95]) {
+        await open(`/web/demo/?page=2&t=${t}`);
+        await evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
+        matchesReference(engine, `demo-turn-t${t}`, cropTo(await browser.screenshot(), book.box));
+      }
+    });
+
+    journey('a corner dragged with real pointer input follows the pointer and turns the page past the spine; a click, the arrow keys and a fling turn too', async () => {
+      await open(FLIPBOOK);
+      assert.deepEqual(await evaluate(openBookIn, { pages: 10, display: 'double', startPage: 2, duration: 300 }), { page: 1, display: 'double' });
+      // Drag the right page's bottom corner over the spine, in steps, and hold it there.
+      const from = await evaluate(() => window.halfPoint(0.985, 0.97));
+      const to = await evaluate(() => window.halfPoint(0.15, 0.9));
+      const path = Array.from({ length: 9 }, (_, i) => ({ x: from.x + ((to.x - from.x) * i) / 8, y: from.y + ((to.y - from.y) * i) / 8 }));
+      await browser.drag(path, { release: false });
+      const held = await evaluate(() => ({ flying: window.book.surface.book.frame().filter((l) => !l.resting).length, turned: window.events.length }));
+      assert.deepEqual(held, { flying: 1, turned: 1 }, 'the pointer holds a leaf (its turnstart heard, nothing landed)');
+      await browser.mouse.up();
+      await browser.waitFor(() => window.events.some((e) => e.type === 'turned'));
+      await evaluate(() => window.settle());
+      assert.equal(await evaluate(() => window.book.page), 3, 'let go past the spine, the page turned');
+      assert.deepEqual(await evaluate(shownAt, [[0.2, 0.85], [0.8, 0.85]]), [3, 4]);
+
+      // A click on the right page turns forward.
+      const right = await evaluate(() => window.halfPoint(0.75, 0.5));
+      await browser.click(right.x, right.y);
+      await browser.waitFor(() => window.events.filter((e) => e.type === 'turned').length === 2);
+      await evaluate(() => window.settle());
+      assert.equal(await evaluate(() => window.book.page), 5);
+
+      // The keys, with the book focused: back, then forward.
+      await evaluate(() => window.book.element.focus());
+      await browser.key('ArrowLeft');
+      await browser.waitFor(() => window.events.filter((e) => e.type === 'turned').length === 3);
+      await evaluate(() => window.settle());
+      assert.equal(await evaluate(() => window.book.page), 3);
+      await browser.key('ArrowRight');
+      await browser.waitFor(() => window.events.filter((e) => e.type === 'turned').length === 4);
+      await evaluate(() => window.settle());
+      assert.equal(await evaluate(() => window.book.page), 5);
+
+      // A fling: a short quick stroke from the corner, let go well short of the spine, still turns.
+      const corner = await evaluate(() => window.halfPoint(0.985, 0.9));
+      const short = await evaluate(() => window.halfPoint(0.75, 0.9));
+      await browser.drag([corner, { x: corner.x - 6, y: corner.y }, { x: (corner.x + short.x) / 2, y: corner.y }, short]);
+      await browser.waitFor(() => window.events.filter((e) => e.type === 'turned' || e.type === 'turncancel').length > 4);
+      await evaluate(() => window.settle());
+      assert.deepEqual(await evaluate(() => [window.book.page, window.events.filter((e) => e.type === 'turncancel').length]), [7, 0], 'the fling turned the page');
+      assert.deepEqual(await evaluate(shownAt, [[0.2, 0.85], [0.8, 0.85]]), [7, 8]);
+    });
+
+    journey('hard covers, right-to-left, vertical, single and double display turn and show the right pages', async () => {
+      await open(FLIPBOOK);
+      const cases = [
+        { options: { pages: 8, display: 'double', hardCovers: true }, at: [[0.25, 0.85], [0.75, 0.85]], after: 1, shows: [1, 2] },
+        { options: { pages: 8, display: 'double', direction: 'rtl', startPage: 1 }, at: [[0.2, 0.85], [0.8, 0.85]], after: 3, shows: [4, 3] },
+        { options: { pages: 8, display: 'double', direction: 'vertical', startPage: 1 }, at: [[0.5, 0.2], [0.5, 0.8]], after: 3, shows: [3, 4] },
+        { options: { pages: 8, display: 'single', startPage: 2 }, at: [[0.5, 0.85]], after: 3, shows: [3] },
+      ];
+      for (const { options, at, after: page, shows } of cases) {
+        await evaluate(openBookIn, { duration: 300, ...options });
+        assert.equal(await evaluate(() => window.book.next()), true, JSON.stringify(options));
+        await evaluate(() => window.settle());
+        assert.equal(await evaluate(() => window.book.page), page, `page after next() with ${JSON.stringify(options)}`);
+        assert.deepEqual(await evaluate(shownAt, at), shows, `shown with ${JSON.stringify(options)}`);
+      }
+      // A hard cover turns as a board by drag too: the cover of a closed book, dragged from its edge.
+      await evaluate(openBookIn, { pages: 8, display: 'double', hardCovers: true, duration: 300 });
+      const edge = await evaluate(() => window.halfPoint(0.98, 0.5));
+      const left = await evaluate((y) => ({ x: window.book.surface.canvas.getBoundingClientRect().left + 12, y }), edge.y);
+      await browser.drag(Array.from({ length: 7 }, (_, i) => ({ x: edge.x + ((left.x - edge.x) * i) / 6, y: edge.y })));
+      await browser.waitFor(() => window.events.some((e) => e.type === 'turned'));
+      await evaluate(() => window.settle());
+      assert.equal(await evaluate(() => window.book.page), 1);
+    });
+
+    journey('a double-click zooms in at the pointer, a drag pans, a click does not turn while zoomed, 0 zooms back', async () => {
+      await open(FLIPBOOK);
+      await evaluate(openBookIn, { pages: 8, display: 'double', startPage: 2, duration: 300 });
+      const point = await evaluate(() => window.halfPoint(0.3, 0.6));
+      await browser.doubleClick(point.x, point.y);
+      await browser.waitFor(() => window.book.zoom === 2);
+      await evaluate(() => window.settle());
+      assert.equal(await evaluate(() => window.book.page), 1, 'the double-click did not turn');
+      const before = await evaluate(() => window.book.restingRect());
+      await browser.drag([point, { x: point.x - 20, y: point.y - 10 }, { x: point.x - 40, y: point.y - 20 }, { x: point.x - 60, y: point.y - 30 }]);
+      const moved = await evaluate(() => window.book.restingRect());
+      assert.ok(Math.abs(moved.x - before.x + 60) < 1.5 && Math.abs(moved.y - before.y + 30) < 1.5,
+        `a drag pans by the pointer's move: ${moved.x - before.x}, ${moved.y - before.y}`);
+      await evaluate(() => window.settle());
+      assert.deepEqual(await evaluate(() => [window.book.page, window.events.filter((e) => e.type === 'turnstart').length]), [1, 0]);
+      await evaluate(() => window.book.element.focus());
+      await browser.key('0');
+      await browser.waitFor(() => window.book.zoom === 1);
+    });
+
+    journey('a context lost mid-turn pauses it; restored, every texture is back and the turn lands', async () => {
+      await open(FLIPBOOK);
+      await evaluate(openBookIn, { pages: 12, display: 'double', duration: 1000, startPage: 1 });
+      await evaluate(() => { window.turning = window.book.next(); });
+      await browser.waitFor(() => (window.book.surface.book.frame().find((leaf) => !leaf.resting)?.curl.rho ?? 0) > 0.3);
+      await evaluate(async () => {
+        const canvas = window.book.surface.canvas;
+        window.loseExtension = canvas.getContext('webgl2').getExtension('WEBGL_lose_context');
+        const lost = new Promise((resolve) => canvas.addEventListener('webglcontextlost', resolve, { once: true }));
+        window.loseExtension.loseContext();
+        await lost;
+      });
+      assert.deepEqual(await evaluate(() => [window.book.surface.contextLost, window.book.animating, window.events.filter((e) => e.type === 'turned').length]), [true, true, 0]);
+      await evaluate(async () => {
+        const canvas = window.book.surface.canvas;
+        await new Promise((resolve) => setTimeout(resolve));  // a later task than the loss
+        const restored = new Promise((resolve) => canvas.addEventListener('webglcontextrestored', resolve, { once: true }));
+        window.loseExtension.restoreContext();
+        await restored;
+      });
+      assert.equal(await evaluate(() => window.turning), true);
+      await evaluate(() => window.settle());
+      const textures = await evaluate(() => {
+        const { surface: view, residentPages: cached } = window.book;
+        return { missing: cached.filter((i) => !view.renderer.hasPageImage(i)), page: window.book.page };
+      });
+      assert.deepEqual(textures, { missing: [], page: 3 });
+      assert.deepEqual(await evaluate(shownAt, [[0.2, 0.85], [0.8, 0.85]]), [3, 4]);
+    });
+
+    journey('a phone-sized screen (390x844, in an iframe where the window cannot be that narrow) shows one page filling the width and turns', async () => {
+      await browser.setViewport(800, 900);
+      try {
+        await browser.goto(url('/tests/engines/phone-frame.html?src=/web/demo/'));
+        await browser.waitFor(() => window.frameReady);
+        const phone = await evaluate(() => {
+          const w = document.querySelector('iframe').contentWindow;
+          const b = w.conecurlDemo.book;
+          const box = w.document.getElementById('book').getBoundingClientRect();
+          return { innerWidth: w.innerWidth, display: b.display, width: Math.round(box.width), page: b.page };
+        });
+        assert.deepEqual(phone, { innerWidth: 390, display: 'single', width: phone.width, page: 0 });
+        assert.ok(phone.width >= 340, `the book is ${phone.width} px wide on a 390 px screen`);
+        await evaluate(() => new Promise((resolve) => {
+          const b = document.querySelector('iframe').contentWindow.conecurlDemo.book;
+          b.addEventListener('turned', () => resolve(), { once: true });
+          b.next();
+        }));
+        assert.equal(await evaluate(() => document.querySelector('iframe').contentWindow.conecurlDemo.book.page), 1);
+      } finally {
+        await browser.setViewport(800, 600);
+      }
+    });
+
+    journey('page errors are heard: an error thrown and a promise rejected in the page reach the suite, where the driver hears no console', async () => {
+      await open(FLIPBOOK);
+      await evaluate(() => {
+        setTimeout(() => { throw new Error('thrown for the test'); });
+        Promise.reject(new Error('rejected for the test'));
+      });
+      const got = await browser.waitFor(() => window.__heard.length >= 2 && window.__heard.slice());
+      assert.ok(got.some((line) => /thrown for the test/.test(line)), got.join(' | '));
+      assert.ok(got.some((line) => /rejected for the test/.test(line)), got.join(' | '));
+      await evaluate(() => { window.__heard.length = 0; });
+    });
+
+    // The journeys of the other files, on the same browser: documents (live HTML pages, the PDF viewer, a
+    // published site) and read-aloud on the engine's own voices.
+    const context = { engine, url, open, evaluate, journey, heard, get browser() { return browser; } };
+    documentJourneys(context);
+    readAloudJourneys(context);
+  });
+}
