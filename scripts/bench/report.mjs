@@ -1,6 +1,7 @@
 // Turns the raw runs of `npm run bench` into the summary (medians with ranges, ratios of conecurl to every
 // other contender from the same repetition, the targets against the floor and the peers, before and after
-// when a baseline checkout was measured too, the drawing buffers), a Markdown table and an SVG chart of frame intervals.
+// when a baseline checkout was measured too, the drawing buffers, conecurl against the WebGL floor in each engine),
+// a Markdown table and an SVG chart of frame intervals.
 import { summarize } from './metrics.mjs';
 
 export const LIBRARY_NAMES = {
@@ -85,6 +86,11 @@ export const FLOOR_TARGETS = [
   { id: 'phone-turn-asked', screen: 'phone', figure: 'phone: turn duration (in the page, mean over the turns)', metric: 'turnOverAsked', unit: '', against: 'asked', bound: 'most', limit: 1.05, why: 'On a phone' },
   { id: 'phone-first-page', screen: 'phone', figure: 'phone: first page shown (navigation to first rendered book)', metric: 'firstFrameMs', unit: 'ms', against: 'floor-webgl', bound: 'most', limit: 1.1, why: 'On a phone' },
 ];
+
+// The engine rows: conecurl against the WebGL floor drawn in the same engine, these figures of METRICS.
+export const ENGINE_LIBS = ['conecurl', 'floor-webgl'];
+export const ENGINE_METRICS = ['frames', 'frameMedianMs', 'frameP95Ms', 'turnOverAsked', 'firstFrameMs'];
+const ENGINE_NAMES = { chromium: 'Chromium', firefox: 'Firefox', webkit: 'WebKit' };
 
 /** The screen a configuration is judged as: 'desktop' unless it says otherwise. */
 export const screenOf = (config) => config.screen ?? 'desktop';
@@ -178,6 +184,45 @@ export function summarizeRuns(runs, configs, loadBytes) {
     floorTargets: evaluateFloorTargets(configs, summary, ratios, loadBytes),
     beforeAfter: withBaseline ? evaluateBeforeAfter(configs, summary, ratios, loadBytes) : null,
   };
+}
+
+/**
+ * One engine's figures from its runs in one configuration: per figure of ENGINE_METRICS, conecurl's and the
+ * floor's medians over the repetitions (with ranges), and conecurl / floor within a repetition.
+ */
+export function engineFigures(runs) {
+  const ok = runs.filter((r) => r.result);
+  const reps = [...new Set(ok.map((r) => r.rep))];
+  return Object.fromEntries(ENGINE_METRICS.map((key) => {
+    const get = METRICS.find(([k]) => k === key)[4];
+    const value = (lib, rep) => { const run = ok.find((r) => r.lib === lib && r.rep === rep); return run ? get(run.result) : NaN; };
+    const [mine, floor] = ENGINE_LIBS.map((lib) => range(ok.filter((r) => r.lib === lib).map((r) => get(r.result))));
+    return [key, { conecurl: mine, floor, ratio: range(reps.map((rep) => value('conecurl', rep) / value('floor-webgl', rep))) }];
+  }));
+}
+
+/**
+ * The engine rows, all from one run, in the configuration the other engines were measured in
+ * (`engines.config`, from run.mjs's measureEngines): Chromium's from its runs of that configuration, then
+ * one per other engine. A row is { engine, browser, renderer, config, figures, failed } or, for an engine
+ * not installed or not started, { engine, note }.
+ */
+export function summarizeEngines(runs, engines, configs, meta) {
+  const config = configs.find((c) => c.id === engines?.config);
+  if (!config) return [];
+  const row = (engine, browser, mine) => ({
+    engine, browser, config: config.id,
+    renderer: mine.find((r) => r.result?.renderer)?.result.renderer ?? null,
+    figures: engineFigures(mine),
+    failed: mine.filter((r) => r.error).length,
+  });
+  const rows = [row('chromium', meta.chromium, runs.filter((r) => r.config === config.id && ENGINE_LIBS.includes(r.lib)))];
+  for (const [engine, info] of Object.entries(engines.info)) {
+    if (info.missing) rows.push({ engine, note: `not installed: ${info.missing}` });
+    else if (info.failed) rows.push({ engine, note: `did not start: ${info.failed}` });
+    else rows.push(row(engine, info.version, engines.runs.filter((r) => r.engine === engine)));
+  }
+  return rows;
 }
 
 /**
@@ -316,8 +361,42 @@ function drawingLine(config, summary, meta) {
     + `${libs.map(([lib, s]) => `${shortName(lib, meta)} ${drawingText(s.drawing)}`).join('; ')}.`;
 }
 
+/** What the engine rows are, in words: which configuration, how each engine was driven, what draws Firefox's WebGL. */
+function engineText(engineRows, configs) {
+  const config = configs.find((c) => c.id === engineRows[0].config);
+  return `conecurl against the WebGL floor drawn in the same engine, in ${config ? `${config.id} (${config.label})` : 'one configuration'}: `
+    + 'the same harness page, book and turns in each, the figures read by the same code in the page (requestAnimationFrame '
+    + 'timestamps for the frames, the turn from its start to its landing, navigation start to the book\'s first drawn frame). '
+    + 'Chromium\'s row is from the runs above (a fresh headless browser per measurement). Firefox and WebKit run through '
+    + 'scripts/engines.mjs on an Xvfb display, one browser per engine for all its measurements, after one visit that is not measured, '
+    + 'order alternated per repetition. Firefox\'s WebGL2 draws on llvmpipe, Mesa\'s software rasteriser: what a reader without '
+    + 'a GPU (or whose GPU the browser will not use) really meets. Cells: conecurl vs the floor, medians over the repetitions '
+    + '(range), then conecurl / floor within a repetition, median. CPU and memory are Chromium\'s figures (CDP) and are not read in the others.';
+}
+
+/** The engine rows as a Markdown table: per figure "conecurl vs floor (conecurl / floor)"; an engine not measured says why. */
+export function engineTable(engineRows) {
+  const heads = ENGINE_METRICS.map((key) => { const [, label, unit] = METRICS.find(([k]) => k === key); return unit && unit !== 'x' ? `${label} (${unit})` : label; });
+  const lines = [`| engine | WebGL renderer | ${heads.join(' | ')} |`, `|---|---|${heads.map(() => '---').join('|')}|`];
+  for (const row of engineRows) {
+    const name = ENGINE_NAMES[row.engine] ?? row.engine;
+    if (row.note) {
+      lines.push(`| ${name} | ${row.note} | ${heads.map(() => '–').join(' | ')} |`);
+      continue;
+    }
+    const cells = ENGINE_METRICS.map((key) => {
+      const decimals = METRICS.find(([k]) => k === key)[3];
+      const f = row.figures[key];
+      return `${cell(f.conecurl, decimals)} vs ${cell(f.floor, decimals)} (${fmt(f.ratio?.median, 2)}x)`;
+    });
+    const failed = row.failed ? `, ${row.failed} run${row.failed > 1 ? 's' : ''} failed` : '';
+    lines.push(`| ${name} (${row.browser}${failed}) | ${row.renderer ?? '–'} | ${cells.join(' | ')} |`);
+  }
+  return lines;
+}
+
 /** The Markdown report: setting, targets (against the floor, then the peers), then one table per configuration. */
-export function markdown({ meta, loadBytes, summary, ratios, targets, floorTargets = [], beforeAfter = null, configs }) {
+export function markdown({ meta, loadBytes, summary, ratios, targets, floorTargets = [], beforeAfter = null, configs, engineRows = [] }) {
   const lines = [];
   lines.push(`# conecurl benchmark`);
   lines.push('');
@@ -339,6 +418,14 @@ export function markdown({ meta, loadBytes, summary, ratios, targets, floorTarge
   lines.push('');
   lines.push(...floorTargetTable(floorTargets));
   lines.push('');
+  if (engineRows.length) {
+    lines.push('## Three engines');
+    lines.push('');
+    lines.push(engineText(engineRows, configs));
+    lines.push('');
+    lines.push(...engineTable(engineRows));
+    lines.push('');
+  }
   if (beforeAfter) {
     lines.push('## Before and after');
     lines.push('');
@@ -402,7 +489,7 @@ const README_COLUMNS = [
   ['rendererPssMB', 'renderer MB', 0],
 ];
 
-export function readmeTables({ meta, loadBytes, summary, targets, floorTargets = [], beforeAfter = null, configs }) {
+export function readmeTables({ meta, loadBytes, summary, targets, floorTargets = [], beforeAfter = null, configs, engineRows = [] }) {
   const lines = [];
   lines.push(`Run of ${meta.date.slice(0, 10)}: ${meta.reps} repetitions, ${meta.turns} turns of ${meta.turnDurationMs} ms, ${meta.cpus} CPUs, `
     + `load average ${meta.loadavgStart[0].toFixed(1)} at the start and ${meta.loadavgEnd[0].toFixed(1)} at the end, ${Math.round(meta.wallSeconds / 60)} min. `
@@ -421,6 +508,12 @@ export function readmeTables({ meta, loadBytes, summary, targets, floorTargets =
   const dense = configs.map((c) => [c, Object.values(summary[c.id]).find((s) => s.drawing)?.drawing])
     .filter(([, d]) => d && d.devicePixelRatio !== 1);
   for (const [config] of dense) lines.push(drawingLine(config, summary, meta), '');
+  if (engineRows.length) {
+    lines.push(engineText(engineRows, configs));
+    lines.push('');
+    lines.push(...engineTable(engineRows));
+    lines.push('');
+  }
   lines.push(`Load bytes, gzip -9: ${Object.entries(loadBytes).map(([lib, b]) => `${lib === BASELINE ? `conecurl before (${baselineCommit(meta)})` : lib} `
     + `${(b.totalGzip / 1024).toFixed(1)} KB`).join(', ')}.`);
   lines.push('');

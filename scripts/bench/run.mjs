@@ -1,5 +1,5 @@
 // `npm run bench`: conecurl against page-flip, turn.js and the two floors (the smallest WebGL and 2D-canvas
-// books) in one run, in headless Chromium on this machine. Generates the page images, bundles the libraries, measures every library x configuration
+// books) in one run, in headless Chromium on this machine, then conecurl against the WebGL floor in Firefox and WebKit. Generates the page images, bundles the libraries, measures every library x configuration
 // x repetition in a fresh browser (order alternated), then writes JSON, Markdown and an SVG chart.
 // With --baseline <dir> (another checkout of conecurl, e.g. a git worktree of an older commit with its dist/
 // built), that tree's conecurl is measured too, in the same run, and the report shows before and after.
@@ -9,6 +9,7 @@
 //        [--duration 600] [--turns 10] [--port 8095] [--out bench-results] [--baseline ../conecurl-before] [--publish]
 //        [--skip-publish-rate] (leaves out publish-rate.mjs, the pages per second of `conecurl publish`, run last)
 //        [--skip-first-spread] (leaves out first-spread.mjs: a published PDF's first spread on a throttled phone against pdf.js's)
+//        [--engines firefox,webkit|none] (the other engines measured after Chromium, in the run's first desktop configuration)
 import { spawn, spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import http from 'node:http';
@@ -16,11 +17,12 @@ import os from 'node:os';
 import path from 'node:path';
 import { chromium } from '@playwright/test';
 import { BASELINE, bundleBaseline, bundleLibraries, checkoutCommit, LIBRARIES } from './bundle.mjs';
-import { measureOnce } from './measure.mjs';
+import { firstFrame, measureInEngine, measureOnce } from './measure.mjs';
+import { ENGINES, engineExecutables, launchEngine, startDisplay } from '../engines.mjs';
 import { chromiumLaunchOptions } from '../chromium.mjs';
 import { summarize } from './metrics.mjs';
 import { writePageImages } from './page-images.mjs';
-import { frameChart, markdown, readmeTables, summarizeRuns } from './report.mjs';
+import { ENGINE_LIBS, frameChart, screenOf, markdown, readmeTables, summarizeEngines, summarizeRuns } from './report.mjs';
 import { PHONES, phoneUse } from '../../tests/browser/phone.js';
 
 const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
@@ -41,6 +43,7 @@ function parseArgs(argv) {
   const options = {
     reps: 3, configs: CONFIGS.map((c) => c.id), libs: [...LIBRARIES], duration: 600, turns: 10, idleMs: 2000,
     port: Number(process.env.CONECURL_BENCH_PORT) || 8095, out: 'bench-results', publish: false, baseline: null, publishRate: true, firstSpread: true,
+    engines: [...ENGINES],
   };
   for (let i = 0; i < argv.length; i++) {
     const name = argv[i];
@@ -62,6 +65,12 @@ function parseArgs(argv) {
     else if (name === '--skip-publish-rate') options.publishRate = false;
     else if (name === '--skip-first-spread') options.firstSpread = false;
     else if (name === '--baseline') options.baseline = path.resolve(value());
+    else if (name === '--engines') {
+      const list = value().split(',').filter((v) => v !== 'none');
+      const unknown = list.filter((v) => !ENGINES.includes(v));
+      if (unknown.length) throw new Error(`bench: unknown engines ${unknown.join(', ')} (known: ${ENGINES.join(', ')}, or none)`);
+      options.engines = list;
+    }
     else if (name === '--configs' || name === '--libs') {
       const list = value().split(',');
       const known = name === '--configs' ? CONFIGS.map((c) => c.id) : LIBRARIES;
@@ -70,8 +79,9 @@ function parseArgs(argv) {
       options[name.slice(2)] = list;
     } else throw new Error(`bench: unknown argument ${name}`);
   }
-  const full = options.reps >= 3 && options.configs.length === CONFIGS.length && options.libs.length === LIBRARIES.length;
-  if (options.publish && !full) throw new Error('bench: --publish needs the full run (all configurations and libraries, 3+ repetitions)');
+  const full = options.reps >= 3 && options.configs.length === CONFIGS.length && options.libs.length === LIBRARIES.length
+    && options.engines.length === ENGINES.length;
+  if (options.publish && !full) throw new Error('bench: --publish needs the full run (all configurations, libraries and engines, 3+ repetitions)');
   return options;
 }
 
@@ -129,6 +139,80 @@ function wrongWasm(result, lib, bundlesDir, base) {
   return null;
 }
 
+const firstLine = (error) => String(error && error.message ? error.message : error).split('\n')[0];
+
+/**
+ * The other engines' rows: conecurl and the WebGL floor (ENGINE_LIBS) in Firefox and WebKit through
+ * scripts/engines.mjs, in `config` (the run's first desktop configuration), at the harness URL Chromium
+ * was measured at. One Xvfb display, one browser per engine (launched after the previous one closed) kept
+ * for all its measurements, each repetition's order alternated as Chromium's; first one visit that is not
+ * measured, so that no measured page pays the browser's first page and WebGL context. Returns { config,
+ * info: { engine: { version } | { missing } | { failed } }, runs }: an engine that is not installed, or
+ * does not start, says so instead of stopping the run.
+ */
+async function measureEngines({ engines, config, reps, turns, duration, harnessUrl, check }) {
+  const info = {};
+  const runs = [];
+  if (!config) {
+    for (const engine of engines) info[engine] = { missing: 'the run has no desktop configuration to measure it in' };
+    return { config: null, info, runs };
+  }
+  const { width, height } = config.use.viewport;
+  let display = null;
+  try {
+    for (const engine of engines) {
+      let exe;
+      try {
+        exe = engineExecutables(engine);
+      } catch (error) {
+        info[engine] = { missing: firstLine(error) };
+        console.log(`bench: ${engine} not measured: ${info[engine].missing}`);
+        continue;
+      }
+      let browser = null;
+      try {
+        display ??= await startDisplay(exe.xvfb);
+        browser = await launchEngine(engine, { display: display.display, width, height });
+        info[engine] = { version: browser.version };
+        await browser.goto(harnessUrl(ENGINE_LIBS[0], config));
+        await firstFrame(browser.evaluate);
+      } catch (error) {
+        info[engine] = { failed: firstLine(error) };
+        console.log(`bench: ${engine} did not start: ${info[engine].failed}`);
+        await browser?.close().catch(() => {});
+        continue;
+      }
+      try {
+        for (let rep = 1; rep <= reps; rep++) {
+          for (const lib of rep % 2 ? ENGINE_LIBS : [...ENGINE_LIBS].reverse()) {
+            const run = { engine, rep, config: config.id, lib, loadavg: os.loadavg()[0] };
+            const t0 = Date.now();
+            try {
+              run.result = await measureInEngine(browser, { url: harnessUrl(lib, config), turns, askedTurnMs: duration, turnTimeoutMs: 30000 });
+              const wrong = check(run.result, lib);
+              if (wrong) throw new Error(wrong);
+              const f = summarize(run.result.intervals);
+              console.log(`[${engine} ${rep}/${reps}] ${config.id} ${lib}: first frame ${run.result.firstFrameMs.toFixed(0)} ms, `
+                + `${run.result.frames} frames, median ${f.median.toFixed(1)} ms, p95 ${f.p95.toFixed(1)} ms, WebGL ${run.result.renderer} `
+                + `(${((Date.now() - t0) / 1000).toFixed(0)} s)`);
+            } catch (error) {
+              delete run.result;
+              run.error = firstLine(error);
+              console.log(`[${engine} ${rep}/${reps}] ${config.id} ${lib}: FAILED ${run.error}`);
+            }
+            runs.push(run);
+          }
+        }
+      } finally {
+        await browser.close().catch(() => {});
+      }
+    }
+  } finally {
+    display?.stop();
+  }
+  return { config: config.id, info, runs };
+}
+
 async function main() {
   const options = parseArgs(process.argv.slice(2));
   const out = path.resolve(root, options.out);
@@ -160,6 +244,11 @@ async function main() {
   const base = `http://127.0.0.1:${options.port}`;
   const relative = (dir) => `/${path.relative(root, dir).split(path.sep).join('/')}`;
 
+  const harnessUrl = (lib, config) => `${base}/scripts/bench/harness.html?${new URLSearchParams({
+    lib, pages: String(config.pages), display: config.display, duration: String(options.duration),
+    bundles: relative(bundleDirs[lib]), images: relative(path.join(out, 'pages')),
+  })}`;
+
   const plan = [];
   for (let rep = 0; rep < options.reps; rep++) {
     configs.forEach((config, c) => {
@@ -170,13 +259,10 @@ async function main() {
   console.log(`bench: ${plan.length} measurements (${options.reps} repetitions x ${configs.length} configurations x ${contenders.length} libraries)`);
 
   const runs = [];
+  let engines = { config: null, info: {}, runs: [] };
   try {
     for (const [index, { rep, config, lib }] of plan.entries()) {
-      const query = new URLSearchParams({
-        lib, pages: String(config.pages), display: config.display, duration: String(options.duration),
-        bundles: relative(bundleDirs[lib]), images: relative(path.join(out, 'pages')),
-      });
-      const url = `${base}/scripts/bench/harness.html?${query}`;
+      const url = harnessUrl(lib, config);
       const t0 = Date.now();
       const run = { rep, config: config.id, lib, loadavg: os.loadavg()[0] };
       try {
@@ -193,11 +279,16 @@ async function main() {
           + `${run.result.wasm.length ? `, wasm ${run.result.wasm.map((w) => `${w.url.slice(base.length)} ${w.bytes} B`).join(', ')}` : ''}`
           + ` (${((Date.now() - t0) / 1000).toFixed(0)} s)`);
       } catch (error) {
-        run.error = String(error && error.message ? error.message : error).split('\n')[0];
+        run.error = firstLine(error);
         console.log(`[${index + 1}/${plan.length}] rep ${rep} ${config.id} ${lib}: FAILED ${run.error}`);
       }
       runs.push(run);
     }
+    engines = await measureEngines({
+      engines: options.engines, config: configs.find((c) => screenOf(c) === 'desktop'), reps: options.reps, turns: options.turns,
+      duration: options.duration, harnessUrl,
+      check: (result, lib) => (lib === 'conecurl' ? wrongWasm(result, lib, bundleDirs[lib], base) : null),
+    });
   } finally {
     server.kill();
   }
@@ -218,8 +309,9 @@ async function main() {
     ...(baseline ? { baseline, commit: checkoutCommit(root) } : {}),
   };
   const { summary, ratios, targets, floorTargets, beforeAfter } = summarizeRuns(runs, configs, loadBytes);
-  const report = { meta, configs, loadBytes, floorTargets, targets, ...(beforeAfter ? { beforeAfter } : {}), summary, ratios, runs };
-  const md = markdown({ meta, loadBytes, summary, ratios, targets, floorTargets, beforeAfter, configs });
+  const engineRows = summarizeEngines(runs, engines, configs, meta);
+  const report = { meta, configs, loadBytes, floorTargets, targets, ...(beforeAfter ? { beforeAfter } : {}), summary, ratios, engineRows, runs, engineRuns: engines.runs };
+  const md = markdown({ meta, loadBytes, summary, ratios, targets, floorTargets, beforeAfter, configs, engineRows });
   fs.mkdirSync(out, { recursive: true });
   fs.writeFileSync(path.join(out, 'latest.json'), `${JSON.stringify(report, null, 1)}\n`);
   fs.writeFileSync(path.join(out, 'latest.md'), md);
@@ -228,7 +320,7 @@ async function main() {
     const docs = path.join(root, 'docs/bench');
     fs.mkdirSync(docs, { recursive: true });
     for (const file of ['latest.json', 'latest.md', 'frame-intervals.svg']) fs.copyFileSync(path.join(out, file), path.join(docs, file));
-    publishToBenchDoc(readmeTables({ meta, loadBytes, summary, targets, floorTargets, beforeAfter, configs }));
+    publishToBenchDoc(readmeTables({ meta, loadBytes, summary, targets, floorTargets, beforeAfter, configs, engineRows }));
   }
   console.log(`\n${md}`);
   console.log(`bench: wrote ${path.relative(root, out)}/latest.{json,md} and frame-intervals.svg${options.publish ? `, copied to docs/bench/ and ${BENCH_DOC}` : ''}`
@@ -248,7 +340,7 @@ async function main() {
       if (spread.status !== 0) process.exitCode = 1;
     }
   }
-  if (runs.some((r) => r.error)) {
+  if ([...runs, ...engines.runs].some((r) => r.error)) {
     console.error('bench: some measurements failed (see above)');
     process.exitCode = 1;
   }

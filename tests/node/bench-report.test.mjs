@@ -1,13 +1,14 @@
 // Node tests of the benchmark's arithmetic and page images (not of any speed): order statistics,
 // ratios taken within one repetition, the target verdicts (against the peers and against the floor),
 // that the report shows the floor targets (the phone configuration judged by its own) and, with a baseline
-// checkout, before and after, and that the generated PNGs are valid.
+// checkout, before and after, the engine rows (conecurl against the WebGL floor in each engine, an engine
+// not installed saying so), and that the generated PNGs are valid.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import zlib from 'node:zlib';
 import { summarize } from '../../scripts/bench/metrics.mjs';
 import {
-  BEFORE_AFTER, drawingText, FLOOR_TARGETS, floorLimitText, markdown, readmeTables, summarizeRuns,
+  BEFORE_AFTER, drawingText, ENGINE_METRICS, FLOOR_TARGETS, floorLimitText, markdown, readmeTables, summarizeEngines, summarizeRuns,
 } from '../../scripts/bench/report.mjs';
 import { drawPage, encodePalettePng, PAGE_HEIGHT, PAGE_WIDTH } from '../../scripts/bench/page-images.mjs';
 
@@ -22,9 +23,10 @@ test('node: bench summarize gives the median of an even count and the nearest-ra
 });
 
 // A run result with just what the report reads; `scale` multiplies every figure.
-function fakeResult({ frameMs, mainMs, gpuMs, idle = 0.5, first = 1000, textures, frames = 3, turnMs = 1000, askedTurnMs = 1000, drawing }) {
+function fakeResult({ frameMs, mainMs, gpuMs, idle = 0.5, first = 1000, textures, frames = 3, turnMs = 1000, askedTurnMs = 1000, drawing, renderer }) {
   return {
     ...(drawing ? { drawing } : {}),
+    ...(renderer ? { renderer } : {}),
     firstFrameMs: first,
     turnSeconds: turnMs / 1000,
     askedTurnMs,
@@ -426,4 +428,89 @@ test('node: bench report and published tables have a phone row, its targets\' ve
   assert.match(md, /^Drawing buffers in single-20 \(device pixel ratio 1\): conecurl 800x1100 px/m);
   assert.ok(md.includes('## Phone, single page, 390x844 at ratio 3, 20 pages'));
   assert.equal(drawingText(null), '–');
+});
+
+// Chromium's runs of two configurations and Firefox's of the first (two repetitions, the machine slower in
+// the second), WebKit not installed: what run.mjs's measureEngines returns beside the Chromium runs.
+function engineFixture() {
+  const configs = [
+    { id: 'double-20', display: 'double', pages: 20, label: 'Two-page spread, 1600x1100, 20 pages' },
+    { id: 'single-20', display: 'single', pages: 20, label: 'Single page, 800x1100, 20 pages' },
+  ];
+  const result = (frames, first, turnMs, renderer) => fakeResult({ frameMs: 600 / frames, frames, first, turnMs, askedTurnMs: 600, mainMs: 1, gpuMs: 1, renderer });
+  const runs = [
+    { rep: 1, config: 'double-20', lib: 'conecurl', result: result(40, 900, 630, 'SwiftShader') },
+    { rep: 1, config: 'double-20', lib: 'floor-webgl', result: result(50, 600, 610, 'SwiftShader') },
+    { rep: 1, config: 'double-20', lib: 'page-flip', result: result(10, 100, 900) },
+    { rep: 1, config: 'single-20', lib: 'conecurl', result: result(5, 5000, 5000) },
+    { rep: 1, config: 'single-20', lib: 'floor-webgl', result: result(60, 100, 600) },
+  ];
+  const firefox = (rep, lib, frames, first, turnMs) => ({ engine: 'firefox', rep, config: 'double-20', lib, result: result(frames, first, turnMs, 'llvmpipe, or similar') });
+  const engines = {
+    config: 'double-20',
+    info: { firefox: { version: 'firefox/153.0' }, webkit: { missing: 'no WebKitGTK MiniBrowser: run `bash scripts/setup.sh`' } },
+    runs: [
+      firefox(1, 'conecurl', 30, 1500, 660), firefox(1, 'floor-webgl', 60, 500, 600),
+      firefox(2, 'floor-webgl', 20, 1000, 900), firefox(2, 'conecurl', 15, 2000, 990),
+      { engine: 'firefox', rep: 3, config: 'double-20', lib: 'conecurl', error: 'conecurl: turn 1 did not land within 30000 ms' },
+    ],
+  };
+  const meta = {
+    date: '2026-11-25T17:00:00Z', chromium: 'Chromium 0', cpus: 2, reps: 2, turns: 1, turnDurationMs: 600, idleMs: 2000,
+    wallSeconds: 60, loadavgStart: [1, 1, 1], loadavgEnd: [1, 1, 1],
+  };
+  return { configs, runs, engines, meta, loadBytes: {} };
+}
+
+test('node: bench engine rows take conecurl / the floor within a repetition of the same engine, Chromium\'s from its runs of the same configuration', () => {
+  const { configs, runs, engines, meta } = engineFixture();
+  const rows = summarizeEngines(runs, engines, configs, meta);
+  assert.deepEqual(rows.map((r) => r.engine), ['chromium', 'firefox', 'webkit']);
+  const [chromium, firefox, webkit] = rows;
+  assert.deepEqual(Object.keys(firefox.figures), ENGINE_METRICS);
+  // Chromium: double-20 only (single-20's conecurl would be 5 frames), and neither peer nor 2D floor.
+  assert.deepEqual(chromium.figures.frames.conecurl.median, 40);
+  assert.equal(chromium.figures.frames.ratio.median, 0.8);
+  assert.equal(chromium.figures.firstFrameMs.ratio.median, 1.5);
+  assert.equal(chromium.renderer, 'SwiftShader');
+  assert.equal(chromium.browser, 'Chromium 0');
+  // Firefox: 30/60 and 15/20 frames, so 0.5 and 0.75 within the repetitions; the median of the ratios
+  // (0.625), not the ratio of the medians (22.5 / 40).
+  assert.equal(firefox.figures.frames.ratio.median, 0.625);
+  assert.deepEqual([firefox.figures.frames.conecurl.median, firefox.figures.frames.floor.median], [22.5, 40]);
+  assert.equal(firefox.figures.firstFrameMs.ratio.median, (3 + 2) / 2);
+  assert.equal(firefox.figures.turnOverAsked.conecurl.median, (1.1 + 1.65) / 2);
+  assert.equal(firefox.figures.frameMedianMs.ratio.median, (2 + 20 / 15) / 2);
+  assert.equal(firefox.failed, 1, 'the third repetition\'s failed run is counted, not measured');
+  assert.equal(firefox.browser, 'firefox/153.0');
+  assert.deepEqual(webkit, { engine: 'webkit', note: 'not installed: no WebKitGTK MiniBrowser: run `bash scripts/setup.sh`' });
+  // An engine that did not start says so too; a run with no engine measured has Chromium's row alone.
+  const failed = summarizeEngines(runs, { ...engines, info: { firefox: { failed: 'Xvfb exited (1)' } } }, configs, meta);
+  assert.deepEqual(failed[1], { engine: 'firefox', note: 'did not start: Xvfb exited (1)' });
+  assert.deepEqual(summarizeEngines(runs, { config: 'double-20', info: {}, runs: [] }, configs, meta).map((r) => r.engine), ['chromium']);
+  assert.deepEqual(summarizeEngines(runs, { config: null, info: {}, runs: [] }, configs, meta), []);
+});
+
+test('node: bench report and published tables have a row per engine, conecurl vs the floor, and one line for an engine not installed', () => {
+  const { configs, runs, engines, meta, loadBytes } = engineFixture();
+  const engineRows = summarizeEngines(runs, engines, configs, meta);
+  const result = summarizeRuns(runs, configs, loadBytes);
+  const md = markdown({ meta, loadBytes, ...result, configs, engineRows });
+  const published = readmeTables({ meta, loadBytes, ...result, configs, engineRows });
+  for (const text of [md, published]) {
+    const lines = text.split('\n');
+    assert.ok(lines.includes('| engine | WebGL renderer | frames during the turns | frame interval, median (ms) | frame interval, p95 (ms) '
+      + '| turn duration in the page / asked duration, mean over the turns | navigation to first rendered book (ms) |'), text);
+    assert.ok(lines.includes('| Chromium (Chromium 0) | SwiftShader | 40 vs 50 (0.80x) | 15.0 vs 12.0 (1.25x) | 15.0 vs 12.0 (1.25x) '
+      + '| 1.050 vs 1.017 (1.03x) | 900 vs 600 (1.50x) |'), text);
+    assert.ok(lines.includes('| Firefox (firefox/153.0, 1 run failed) | llvmpipe, or similar | 23 (15–30) vs 40 (20–60) (0.63x) '
+      + '| 30.0 (20.0–40.0) vs 20.0 (10.0–30.0) (1.67x) | 30.0 (20.0–40.0) vs 20.0 (10.0–30.0) (1.67x) '
+      + '| 1.375 (1.100–1.650) vs 1.250 (1.000–1.500) (1.10x) | 1750 (1500–2000) vs 750 (500–1000) (2.50x) |'), text);
+    assert.ok(lines.includes('| WebKit | not installed: no WebKitGTK MiniBrowser: run `bash scripts/setup.sh` | – | – | – | – | – |'), text);
+    assert.match(text, /in double-20 \(Two-page spread, 1600x1100, 20 pages\)/);
+    assert.match(text, /llvmpipe, Mesa's software rasteriser: what a reader without a GPU/);
+  }
+  assert.match(md, /^## Three engines$/m);
+  // Without engine rows (a report from before them), no such section.
+  assert.doesNotMatch(markdown({ meta, loadBytes, ...result, configs }), /Three engines|WebGL renderer/);
 });
