@@ -75,7 +75,8 @@ const callSource = (fn, args) => `(${fn.toString()})(...${JSON.stringify(args)})
  * A browser of `engine` on `display`, with a viewport of `width` x `height` CSS px. Its methods:
  * goto(url), evaluate(fn, ...args) (fn runs in the page; its promise is awaited), waitFor(fn, ...args)
  * (until fn is truthy; no time limit of its own beyond `timeoutMs`), mouse.move/down/up(x, y),
- * click(x, y), doubleClick(x, y), drag(points, { release }), key(name), screenshot() (PNG of the viewport), setViewport(w, h),
+ * click(x, y), doubleClick(x, y), drag(points, { release }) (a move a call), stroke(points, stepMs) (pressed,
+ * moved `stepMs` apart and let go in one action sequence: a fling whatever the round trips cost), key(name), screenshot() (PNG of the viewport), setViewport(w, h),
  * close(). `version` says which browser it is.
  */
 export async function launchEngine(engine, { display, width = 800, height = 600, timeoutMs = 120_000, env = {} } = {}) {
@@ -123,6 +124,13 @@ async function launchFirefox(exe, env, viewport) {
       up: () => page.mouse.up(),
     },
     doubleClick: (x, y) => page.mouse.click(Math.round(x), Math.round(y), { count: 2 }),
+    // One action sequence, so the moves are `stepMs` apart by the browser's clock, not by round trips.
+    stroke: (points, stepMs) => page.mainFrame().browsingContext.performActions([{
+      type: 'pointer', id: '__puppeteer_mouse', actions: [
+        { type: 'pointerMove', x: Math.round(points[0].x), y: Math.round(points[0].y) }, { type: 'pointerDown', button: 0 },
+        ...points.slice(1).map((p) => ({ type: 'pointerMove', x: Math.round(p.x), y: Math.round(p.y), duration: stepMs })),
+        { type: 'pointerUp', button: 0 }],
+    }]),
     key: (name) => page.keyboard.press(name),
     async screenshot() { return cropPng(Buffer.from(await page.screenshot({ type: 'png' })), size.width, size.height); },
     async setViewport(width, height) { Object.assign(size, { width, height }); await page.setViewport({ width, height }); },
@@ -179,6 +187,9 @@ async function launchWebKit(exe, env, { width, height, timeoutMs }) {
       down: () => act((a) => a.press()),
       up: () => act((a) => a.release()),
     },
+    stroke: (points, stepMs) => act((a) => points.slice(1).reduce(
+      (chain, p) => chain.move({ x: Math.round(p.x), y: Math.round(p.y), duration: stepMs }),
+      a.move({ x: Math.round(points[0].x), y: Math.round(points[0].y), duration: 0 }).press()).release()),
     doubleClick: (x, y) => { Object.assign(pointer, { x: Math.round(x), y: Math.round(y) }); return act((a) => a.move({ x: pointer.x, y: pointer.y }).doubleClick()); },
     key: (name) => act((a) => a.sendKeys(keys[name] ?? name)),
     // Element screenshots come back with a black band: the window's, cut to the viewport, is right.

@@ -50,6 +50,16 @@ have_cmd g++ || missing+=(g++)
 have_cmd make || missing+=(make)
 # CMake's find_package(GTest) needs the headers and the built libraries, both in libgtest-dev.
 have_file /usr/include/gtest/gtest.h /usr/local/include/gtest/gtest.h || have_pkg libgtest-dev || missing+=(libgtest-dev)
+# The cross-engine suite (tests/engines/): Firefox over WebDriver BiDi and WebKitGTK's MiniBrowser through
+# WebKitWebDriver, each on an Xvfb display (WebGL2 needs one even headless); Firefox speaks through
+# speech-dispatcher with espeak-ng (WebKit has voices of its own).
+have_cmd firefox-esr || missing+=(firefox-esr)
+have_cmd Xvfb || missing+=(xvfb)
+have_cmd WebKitWebDriver || missing+=(webkit2gtk-driver)
+have_file /usr/lib/x86_64-linux-gnu/webkit2gtk-4.1/MiniBrowser /usr/lib/aarch64-linux-gnu/webkit2gtk-4.1/MiniBrowser \
+  || missing+=(libwebkit2gtk-4.1-0)
+have_cmd speech-dispatcher || missing+=(speech-dispatcher)
+have_cmd espeak-ng || missing+=(espeak-ng)
 have_cmd node || missing+=(nodejs)
 have_cmd npm || missing+=(npm)
 

@@ -18,8 +18,19 @@ const tapCount = (key) => Number((tap.match(new RegExp(`^# ${key} (\\d+)`, 'm'))
 if (tap) suites.push({ name: 'node', passed: tapCount('pass'), failed: tapCount('fail') + tapCount('cancelled') });
 try {
   const stats = JSON.parse(read('browser.json')).stats;
-  suites.push({ name: 'browser', passed: stats.expected, failed: stats.unexpected + stats.flaky, skipped: stats.skipped });
-} catch { suites.push({ name: 'browser', passed: 0, failed: 1, note: 'no report' }); }
+  suites.push({ name: 'browser (chromium)', passed: stats.expected, failed: stats.unexpected + stats.flaky, skipped: stats.skipped });
+} catch { suites.push({ name: 'browser (chromium)', passed: 0, failed: 1, note: 'no report' }); }
+// The cross-engine suite's TAP: each engine's tests are named "ENGINE: ...", counted per engine; an engine
+// whose suite did not run at all (its browser failed to start) is a failure, not a silence.
+const enginesTap = read('engines.tap');
+for (const engine of ['firefox', 'webkit']) {
+  const results = [...enginesTap.matchAll(new RegExp(`^\\s*(not )?ok \\d+ - ${engine}: `, 'gm'))];
+  const failedSuite = new RegExp(`^\\s*not ok \\d+ - ${engine}$`, 'm').test(enginesTap);
+  const passed = results.filter((m) => !m[1]).length;
+  const failed = results.length - passed;
+  suites.push({ name: `browser (${engine})`, passed, failed: failed || (failedSuite || passed === 0 ? 1 : 0),
+    ...(passed === 0 && failed === 0 ? { note: 'no tests ran' } : {}) });
+}
 
 // Where the time went: each suite's wall time (times.tsv, written by scripts/test.sh) and the slowest
 // tests of all suites, so that a slow suite can be cut where it is slow.
@@ -27,7 +38,7 @@ const slowest = [];
 for (const m of read('native.log').matchAll(/Test +#\d+: (\S+) \.*\s+\w+\s+([\d.]+) sec/g)) {
   slowest.push({ name: `native: ${m[1]}`, seconds: Number(m[2]) });
 }
-for (const m of tap.matchAll(/^\s*(?:not )?ok \d+ - (.*)\n\s*---\n\s*duration_ms: ([\d.]+)/gm)) {
+for (const m of (tap + enginesTap).matchAll(/^\s*(?:not )?ok \d+ - (.*)\n\s*---\n\s*duration_ms: ([\d.]+)/gm)) {
   slowest.push({ name: m[1], seconds: Number(m[2]) / 1000 });
 }
 try {

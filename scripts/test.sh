@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `npm test`: set-up, then every suite (native C++, wasm build, Node, browser). Each suite runs even if
+# `npm test`: set-up, then every suite (native C++, wasm build, Node, browser in Chromium, then in Firefox and WebKit). Each suite runs even if
 # an earlier one failed; the last line sums them up and the exit status is non-zero if any failed.
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -27,6 +27,9 @@ if [ -f dist/conecurl-engine.wasm ]; then
   run node node --test --test-reporter=spec --test-reporter-destination=stdout \
     --test-reporter=tap --test-reporter-destination="$logs/node.tap" tests/node/
   PLAYWRIGHT_JSON_OUTPUT_NAME="$logs/browser.json" run browser npx playwright test --reporter=list,json
+  # The same journeys in Firefox and WebKit (tests/engines/), one engine after the other.
+  run engines node --test --test-concurrency=1 --test-reporter=spec --test-reporter-destination=stdout \
+    --test-reporter=tap --test-reporter-destination="$logs/engines.tap" tests/engines/
 else
   echo "=== node and browser suites skipped: the wasm build failed"; status=1
 fi

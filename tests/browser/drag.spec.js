@@ -137,6 +137,20 @@ test('browser: a quick fling towards the spine completes the turn from a short d
   expect(await page.evaluate(() => window.events.map((e) => e.type))).toEqual(['turnstart', 'turned']);
 });
 
+test('browser: a fling whose moves come 85 ms apart (a slow frame rate coalescing them, or WebKit\'s driver) still completes the turn', async ({ page }) => {
+  const path = await openBookAndCornerPath(page);
+  const mouse = await timedMouse(page);
+  await mouse.move(path[0], 0);
+  await mouse.down(path[0], 16);
+  // As WebKitWebDriver delivers a stroke: a move every 85 ms, let go 22 ms after the last one. The
+  // velocity window (100 ms) then held only the last move and the release at the same place: a stop.
+  for (let i = 1; i <= 4; i++) await mouse.move(path[i], 85);
+  await mouse.up(path[4], 22);
+  await page.waitForFunction(() => window.events.some((e) => e.type === 'turned' || e.type === 'turncancel'));
+  await page.waitForFunction(() => !window.book.animating);
+  expect(await page.evaluate(() => window.events.map((e) => e.type))).toEqual(['turnstart', 'turned']);
+});
+
 test('browser: hovering the mouse near a corner lifts it, and moving away lays it flat again', async ({ page }) => {
   const path = await openBookAndCornerPath(page);
   await page.waitForFunction(() => !window.book.animating);

@@ -14,9 +14,12 @@ const repositoryRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url))
 
 // What `npm start` and `npm test` need on a fresh Debian 12 machine, by Debian package name.
 const NEEDED = ['emscripten', 'libglm-dev', 'chromium', 'fonts-dejavu-core', 'cmake', 'g++', 'make',
-  'libgtest-dev', 'nodejs', 'npm'];
-const COMMANDS = ['em++', 'chromium', 'cmake', 'g++', 'make', 'node', 'npm'];
-const FILES = ['usr/include/glm/glm.hpp', 'usr/include/gtest/gtest.h', 'usr/share/fonts/truetype/dejavu/DejaVuSans.ttf'];
+  'libgtest-dev', 'firefox-esr', 'xvfb', 'webkit2gtk-driver', 'libwebkit2gtk-4.1-0', 'speech-dispatcher', 'espeak-ng',
+  'nodejs', 'npm'];
+const COMMANDS = ['em++', 'chromium', 'cmake', 'g++', 'make', 'firefox-esr', 'Xvfb', 'WebKitWebDriver',
+  'speech-dispatcher', 'espeak-ng', 'node', 'npm'];
+const FILES = ['usr/include/glm/glm.hpp', 'usr/include/gtest/gtest.h', 'usr/share/fonts/truetype/dejavu/DejaVuSans.ttf',
+  'usr/lib/x86_64-linux-gnu/webkit2gtk-4.1/MiniBrowser'];
 
 function writeExecutable(file, body) {
   fs.mkdirSync(path.dirname(file), { recursive: true });

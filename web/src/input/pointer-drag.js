@@ -7,11 +7,16 @@ const VELOCITY_WINDOW_MS = 100;     // pointer samples this recent set the relea
 
 const HINT_MS = 160;                // the hover hint eases in over this long
 
-/** Adds the pointer's place at the event's time to `samples`, keeping those within VELOCITY_WINDOW_MS (two at least). */
+/**
+ * Adds the pointer's place at the event's time to `samples`, keeping those within VELOCITY_WINDOW_MS and
+ * the newest one before it, so the samples always span the window: where moves come far apart (a slow
+ * frame rate coalescing them, or WebKit's driver, 85 ms), the window would otherwise hold only the last
+ * move and the release at the same place, and a fling would read as a stop.
+ */
 function keepSample(samples, event, p) {
   const now = event.timeStamp || performance.now();
   samples.push({ t: now, x: p.x, y: p.y });
-  while (samples.length > 2 && now - samples[0].t > VELOCITY_WINDOW_MS) samples.shift();
+  while (samples.length > 2 && now - samples[1].t >= VELOCITY_WINDOW_MS) samples.shift();
 }
 
 export class PointerDrag {
