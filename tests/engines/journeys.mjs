@@ -307,6 +307,31 @@ export function engineSuite(engine) {
       }
     });
 
+    journey('the toolbar\'s Fullscreen enters and leaves fullscreen twice, and each change is heard as the book\'s fullscreenchange', async () => {
+      await open(FLIPBOOK);
+      await evaluate(openBookIn, { pages: 6, display: 'double', controls: true, duration: 300 });
+      await evaluate(() => {
+        window.changes = [];
+        window.book.addEventListener('fullscreenchange', (e) => window.changes.push(e.detail.fullscreen));
+      });
+      const button = () => evaluate(() => {
+        const b = Array.from(document.querySelectorAll('[role="toolbar"] button')).find((el) => /fullscreen/i.test(el.getAttribute('aria-label') || el.textContent));
+        const r = b.getBoundingClientRect();
+        return { x: r.x + r.width / 2, y: r.y + r.height / 2 };
+      });
+      for (const round of [1, 2]) {
+        const at = await button();  // a real click: entering fullscreen needs a user gesture
+        await browser.click(at.x, at.y);
+        await browser.waitFor((n) => window.changes.length === 2 * n - 1, round);
+        assert.equal(await evaluate(() => window.book.fullscreen), true, `entered, round ${round}`);
+        const again = await button();
+        await browser.click(again.x, again.y);
+        await browser.waitFor((n) => window.changes.length === 2 * n, round);
+        assert.equal(await evaluate(() => [window.book.fullscreen, document.fullscreenElement]).then((v) => v[0]), false, `left, round ${round}`);
+      }
+      assert.deepEqual(await evaluate(() => window.changes), [true, false, true, false]);
+    });
+
     journey('page errors are heard: an error thrown and a promise rejected in the page reach the suite, where the driver hears no console', async () => {
       await open(FLIPBOOK);
       await evaluate(() => {
