@@ -282,9 +282,14 @@ export function documentJourneys(context) {
     // A real mouse drag over the line selects it, and does not turn.
     const y = line.box.y + line.box.height / 2;
     await browser.drag(Array.from({ length: 11 }, (_, i) => ({ x: line.box.x + 1 + (line.box.width - 2) * (i / 10), y })));
-    const selected = await evaluate(() => ({ text: window.getSelection().toString(), page: window.book.page, animating: window.book.animating, events: window.events }));
+    const selected = await evaluate(() => {
+      const button = document.querySelector('[data-passage-link]');
+      return { text: window.getSelection().toString(), page: window.book.page, animating: window.book.animating, events: window.events,
+        passage: button && !button.hidden && button.getBoundingClientRect().width > 0 ? button.textContent : null };
+    });
     assert.ok(selected.text.includes('zebra has stripes'), `the drag selected '${selected.text}'`);
     assert.deepEqual([selected.page, selected.animating, selected.events], [1, false, []], 'the drag did not turn');
+    assert.equal(selected.passage, 'Copy link to this passage', 'the passage button shows by the selection');
 
     // The Search panel: a click on Search opens it with its field focused; typed keys and Enter search.
     await browser.click(named('Search').x, named('Search').y);
@@ -326,16 +331,15 @@ export function documentJourneys(context) {
 
   journey('a site made by `conecurl publish` opens its book, its search finds and marks the hits, and it turns by a click', async () => {
     const { browser } = context;
-    // Published once per engine (the two engines' suites may run at once), into the folder the server serves.
+    // Published afresh on each run (the site carries its own copy of web/src), into the folder the server
+    // serves, one per engine (the two engines' suites may run at once).
     const out = path.join(root, SITES, engine);
-    if (!fs.existsSync(path.join(out, 'index.html'))) {
-      fs.mkdirSync(path.dirname(out), { recursive: true });
-      const source = path.join(root, SITES, `${engine}.pdf`);
-      fs.writeFileSync(source, Buffer.from((await documentPdf()).base64, 'base64'));
-      fs.rmSync(out, { recursive: true, force: true });
-      const result = await publish([source, '--out', out, '--height', '800', '--title', 'The document test']);
-      assert.equal(result.code, 0, `conecurl publish: ${result.stderr}`);
-    }
+    fs.mkdirSync(path.dirname(out), { recursive: true });
+    const source = path.join(root, SITES, `${engine}.pdf`);
+    fs.writeFileSync(source, Buffer.from((await documentPdf()).base64, 'base64'));
+    fs.rmSync(out, { recursive: true, force: true });
+    const result = await publish([source, '--out', out, '--height', '800', '--title', 'The document test']);
+    assert.equal(result.code, 0, `conecurl publish: ${result.stderr}`);
     await browser.goto(context.url(`/${SITES}/${engine}/index.html`));
     const site = await evaluate(async (url) => {
       window.book = await (await import(url)).book;
@@ -344,9 +348,10 @@ export function documentJourneys(context) {
       window.events = [];
       window.book.addEventListener('turned', (e) => window.events.push(e.detail.page));
       return { count: window.book.pageCount, page: window.book.page, surface: window.book.surface.kind, title: document.title,
-        toolbar: Boolean(document.querySelector('[role="toolbar"]')) };
+        toolbar: Boolean(document.querySelector('[role="toolbar"]')), listening: Array.isArray(window.__heard) };
     }, `/${SITES}/${engine}/conecurl/web/reader/reader.js`);
-    assert.deepEqual(site, { count: 8, page: 0, surface: 'webgl', title: 'The document test', toolbar: true });
+    // `listening`: the suite's heard.js ran in the site's page (what it throws is heard, so "nothing heard" means something).
+    assert.deepEqual(site, { count: 8, page: 0, surface: 'webgl', title: 'The document test', toolbar: true, listening: true });
 
     const hits = await evaluate(async () => (await window.book.search('zebra')).map((h) => h.page));
     assert.deepEqual(hits, [1, 1, 4]);
