@@ -252,7 +252,7 @@ test('browser: stop() and destroy() mid-word leave nothing behind: engine cancel
   expect(destroyed).toEqual({ cancelled: true, ends: ['stopped', 'destroyed'], marks: 0 });
 });
 
-test('browser: the default engine hands speechSynthesis.speak the page\'s text, language, voice and rate, and marks words at its boundary events', async ({ page }) => {
+test('browser: the default engine hands speechSynthesis.speak the page\'s text a sentence an utterance, with its language, voice and rate, and marks words at its boundary events', async ({ page }) => {
   // The browser's speech synthesis replaced, before the page loads, by one that records what it is given.
   await page.addInitScript(() => {
     const voices = [{ name: 'Test Voice', lang: 'en-US', default: true, localService: true, voiceURI: 'test-voice' },
@@ -284,24 +284,31 @@ test('browser: the default engine hands speechSynthesis.speak the page\'s text, 
     const voices = await window.book.readAloudVoices();
     const can = await window.book.canReadAloud();
     await window.book.readAloud({ voice: 'Voix', rate: 0.75 });
-    while (window.speechSynthesis.spoken.length === 0) await new Promise((resolve) => requestAnimationFrame(resolve));
-    const utterance = window.speechSynthesis.spoken[0];
-    // The engine's boundary events: the second word.
-    const second = utterance.text.search(/\s/) + 1;
-    utterance.dispatchEvent(Object.assign(new Event('boundary'), { name: 'word', charIndex: second, charLength: 4 }));
-    const word = window.book.readingAloud.word;
-    return { voices, can, text: utterance.text, lang: utterance.lang, voice: utterance.voice?.name, rate: utterance.rate, word };
+    const { spoken } = window.speechSynthesis;
+    const next = async (n) => { while (spoken.length < n) await new Promise((resolve) => requestAnimationFrame(resolve)); };
+    // Each sentence ended in turn until the book turned and page 1's first is said; the second sentence's
+    // boundary event marks a word counted from the page's start.
+    let word = null;
+    for (let i = 0; window.book.readingAloud.page === 0; i++) {
+      await next(i + 1);
+      if (window.book.readingAloud.page !== 0) break;
+      if (i === 1) {
+        spoken[1].dispatchEvent(Object.assign(new Event('boundary'), { name: 'word', charIndex: spoken[1].text.search(/\s/) + 1, charLength: 4 }));
+        word = window.book.readingAloud.word;
+      }
+      spoken[i].dispatchEvent(new Event('end'));
+      await next(i + 2);
+    }
+    const first = spoken[0];
+    return { voices, can, texts: spoken.map((u) => u.text.trim()), lang: first.lang, voice: first.voice?.name, rate: first.rate, word };
   });
   expect(result.voices).toEqual([{ name: 'Test Voice', lang: 'en-US', default: true, local: true }, { name: 'Voix', lang: 'fr-FR', default: false, local: true }]);
   expect(result.can).toBe(true);
-  expect(result.text.split(/\s+/)).toEqual(pageWords(0));
+  // Page 0's lines (its heading, a sentence a line, its number), one utterance each; then page 1's heading.
+  expect(result.texts).toEqual([PAGES[0].heading, ...PAGES[0].lines, '1', PAGES[1].heading]);
   expect(result.lang).toBe('en-AU');  // the page's: the PDF says none, the web page says en-AU
   expect(result).toMatchObject({ voice: 'Voix', rate: 0.75 });
-  expect(result.word).toMatchObject({ page: 0, index: 1, text: pageWords(0)[1] });
-  // Its end event ends the page: the book turns and the next utterance is page 1's.
-  await page.evaluate(() => window.speechSynthesis.spoken[0].dispatchEvent(new Event('end')));
-  await page.waitForFunction(() => window.speechSynthesis.spoken.length === 2);
-  expect((await page.evaluate(() => window.speechSynthesis.spoken[1].text)).split(/\s+/)).toEqual(pageWords(1));
+  expect(result.word).toMatchObject({ page: 0, index: 2, text: pageWords(0)[2] });
   // A voice the browser does not have is a clear error.
   const error = await page.evaluate(() => window.book.readAloud({ voice: 'Nobody' }).then(() => null, (e) => e.message));
   expect(error).toMatch(/no voice named 'Nobody'.*'Test Voice', 'Voix'/);
@@ -324,6 +331,110 @@ test('browser: where speech synthesis has no voice, readAloud() rejects with an 
   expect(result.error).toMatch(/readAloud\(\) found no voice.*narration.*engine/);
   expect(result.reading).toBeNull();
   expect(result.bad).toMatch(/'rate' must be a number from 0.1 to 10, got 20/);
+});
+
+// A speechSynthesis as Firefox's (speech-dispatcher) lists its voices: none at first, all of them some
+// seconds after the first getVoices(), with `voiceschanged` (Firefox ESR 153 with eSpeak's 13,000-odd: 1.9 s).
+function lateVoices(afterMs) {
+  const synth = new EventTarget();
+  let listed = null;
+  const voices = [{ name: 'eSpeak English', lang: 'en-US', default: true, localService: true, voiceURI: 'urn:moz-tts:speechd:en' }];
+  Object.assign(synth, {
+    getVoices() {
+      listed ??= setTimeout(() => { listed = true; synth.dispatchEvent(new Event('voiceschanged')); }, afterMs);
+      return listed === true ? voices : [];
+    },
+    speak() {}, cancel() {}, pause() {}, resume() {},
+  });
+  Object.defineProperty(window, 'speechSynthesis', { value: synth, configurable: true });
+}
+
+test('browser: voices listed seconds late (as Firefox lists speech-dispatcher\'s): canReadAloud() is true the first time it is asked, and readAloudVoices() asked meanwhile waits for the same list', async ({ page }) => {
+  await page.addInitScript(lateVoices, 2500);
+  await openPdfBook(page);
+  const result = await page.evaluate(async () => {
+    const [can, voices] = await Promise.all([window.book.canReadAloud(), window.book.readAloudVoices()]);
+    return { can, voices: voices.map((v) => v.name) };
+  });
+  expect(result).toEqual({ can: true, voices: ['eSpeak English'] });
+});
+
+// A speechSynthesis as WebKitGTK 2.50's with its own voices: each utterance starts and ends in tasks of its
+// own, reports no word boundaries, and its `end` comes from inside the synthesiser's reset, which forgets an
+// utterance spoken before it returns (in that task, microtasks included): that one starts, and never ends.
+function webkitSpeech() {
+  const synth = new EventTarget();
+  let resetting = false;
+  Object.assign(synth, {
+    said: [],
+    forgotten: [],
+    speaking: false,
+    getVoices: () => [{ name: 'kal', lang: 'en-US', default: true, localService: true, voiceURI: '' }],
+    speak(utterance) {
+      const forgotten = resetting;
+      (forgotten ? synth.forgotten : synth.said).push(utterance.text);
+      synth.speaking = true;
+      setTimeout(() => {
+        utterance.dispatchEvent(new Event('start'));
+        if (forgotten) return;
+        setTimeout(() => {
+          resetting = true;
+          synth.speaking = false;
+          utterance.dispatchEvent(new Event('end'));
+          // The reset returns once this task's script is done: its microtasks too (a long chain of them).
+          let hops = 100;
+          const hop = () => { if (hops-- > 0) queueMicrotask(hop); else resetting = false; };
+          queueMicrotask(hop);
+        });
+      });
+    },
+    cancel() {}, pause() {}, resume() {},
+  });
+  Object.defineProperty(window, 'speechSynthesis', { value: synth, configurable: true });
+}
+
+test('browser: on a voice as WebKitGTK\'s (end fired inside its reset, no word boundaries), both open pages are said to readaloudend, each sentence marked with data-reading="sentence" over its words as it begins', async ({ page }) => {
+  await page.addInitScript(webkitSpeech);
+  await page.goto('/tests/browser/fixtures/html-fixture.html');
+  await page.waitForFunction(() => document.body.dataset.ready);
+  const texts = ['The cat sat. It was warm.', 'A dog came by. It barked.', 'The cat ran.', 'The dog sat. The end.'];
+  await page.evaluate(async (texts) => {
+    window.pageElements = texts.map((t) => window.makeTextPage(t));
+    window.book = await window.Flipbook.create(window.container, { pages: window.pageElements, display: 'double', duration: 300 });
+    await window.book.whenIdle();
+    window.log = [];
+    for (const type of ['readaloudpage', 'turned', 'readaloudend']) {
+      window.book.addEventListener(type, (e) => window.log.push({ type, page: e.detail.page, reason: e.detail.reason }));
+    }
+    new MutationObserver(() => {
+      const marks = [...document.querySelectorAll('[data-reading="sentence"]')];
+      const sentence = window.book.readingAloud?.sentence;
+      if (marks.length === 0 || !sentence) return;
+      // The mark's box against its first word's, in the page's element.
+      const text = window.pageElements[sentence.page].querySelector('p').firstChild;
+      const words = [...text.textContent.matchAll(/\S+/g)];
+      const range = document.createRange();
+      range.setStart(text, words[sentence.from].index);
+      range.setEnd(text, words[sentence.from].index + words[sentence.from][0].length);
+      const word = range.getBoundingClientRect();
+      const mark = marks[0].getBoundingClientRect();
+      const covers = mark.left <= word.left + 0.5 && mark.right >= word.right - 0.5 && mark.top <= word.top + 0.5 && mark.bottom >= word.bottom - 0.5;
+      window.log.push({ type: 'sentence', page: sentence.page, words: words.slice(sentence.from, sentence.to + 1).map((w) => w[0]).join(' '), covers, marks: marks.length });
+    }).observe(window.book.element, { childList: true, subtree: true });
+    window.book.readAloud();
+  }, texts);
+  await page.waitForFunction(() => window.log.some((e) => e.type === 'readaloudend'), null, { timeout: 30_000 })
+    .catch(async (error) => { throw new Error(`${error.message}: ${JSON.stringify(await page.evaluate(() => [window.log, window.speechSynthesis.said, window.speechSynthesis.forgotten]))}`); });
+  const { log, said, forgotten } = await page.evaluate(() => ({ log: window.log, said: window.speechSynthesis.said, forgotten: window.speechSynthesis.forgotten }));
+  expect(forgotten).toEqual([]);
+  expect(said.map((t) => t.trim())).toEqual(texts.flatMap((t) => t.split(/(?<=\.) /)));
+  expect(log.filter((e) => e.type !== 'sentence')).toEqual([
+    { type: 'readaloudpage', page: 0 }, { type: 'turned', page: 1 }, { type: 'readaloudpage', page: 1 }, { type: 'readaloudpage', page: 2 },
+    { type: 'turned', page: 3 }, { type: 'readaloudpage', page: 3 }, { type: 'readaloudend', page: 3, reason: 'finished' },
+  ]);
+  const sentences = log.filter((e) => e.type === 'sentence');
+  expect(sentences.map((e) => [e.page, e.words])).toEqual(texts.flatMap((t, page) => t.split(/(?<=\.) /).map((sentence) => [page, sentence])));
+  expect(sentences.every((e) => e.covers && e.marks === 1)).toBe(true);
 });
 
 // A book of numbered image pages (tests/browser/fixtures/test-pages.js) whose pages 0, 1 and 3 carry recorded

@@ -67,6 +67,8 @@ export interface SpeechEngine {
     lang: string; rate: number; pitch: number; voice?: string;
     /** Call at each word: its first character's index in `text`, and its length. */
     onWord(charIndex: number, charLength: number): void;
+    /** Call as each sentence begins, where the engine knows (from, to: character indices in `text`): it is marked lightly, `data-reading="sentence"`. */
+    onSentence?(from: number, to: number): void;
     /** Call once when all of `text` was said. */
     onEnd(): void;
     /** Call when it cannot go on: the reading ends with reason 'error'. */
@@ -106,8 +108,10 @@ export interface ReadAloud {
   readonly state: 'reading' | 'paused' | 'waiting' | 'ended';
   /** The page being read. */
   readonly page: number;
-  /** The word said now, or null. */
+  /** The word said now, or null (a voice that reports no words marks only its sentence). */
   readonly word: ReadAloudWord | null;
+  /** The sentence said now (its first and last word's indices, its rectangles one a line), where the engine says when each begins; or null. */
+  readonly sentence: { page: number; from: number; to: number; rects: Array<[number, number, number, number]> } | null;
   /** The <audio> element playing recorded narration now (null while a speech engine speaks). */
   readonly audio: HTMLAudioElement | null;
   pause(): void;

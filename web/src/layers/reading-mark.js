@@ -1,14 +1,19 @@
 // The word read aloud now, over its page while the page lies flat: an element with `data-reading` (and
-// `data-page`) over each line of the word, laid over the open pages from the engine's page places as
+// `data-page`) over each line of the word, under it one with `data-reading="sentence"` over each line of
+// the sentence said (lighter; where a voice reports no words, the only mark), laid over the open pages from the engine's page places as
 // the search hits are (search-hits.js), removed while a leaf moves. While the leaf turns, the mark is
 // drawn into the page's image instead (pages/marked-page.js), so it curls with the paper.
 import { READING_FILL } from '../pages/marked-page.js';
+
+/** The sentence read aloud: the word's blue, lighter. */
+export const SENTENCE_FILL = 'rgba(90, 170, 255, 0.18)';
 import { markBox } from './search-hits.js';
 
 /**
  * An overlay layer (book-controller.js lays it over the open pages while the book rests).
  * @param {HTMLElement} root  the book's element (position: relative); the layer covers it
- * @param {() => ({ page: number, rects: number[][] }|null)} markNow  the word marked now (rects as fractions of its page)
+ * @param {() => Array<{ page: number, rects: number[][], sentence?: boolean }>} markNow  the sentence and the word
+ *   marked now, under to over (rects as fractions of their page)
  */
 export function createReadingMarkLayer(root, markNow) {
   const layer = document.createElement('div');
@@ -20,19 +25,18 @@ export function createReadingMarkLayer(root, markNow) {
   let places = [];
 
   const lay = () => {
-    const mark = markNow();
-    const place = mark && places.find((p) => p.page === mark.page);
-    const key = place ? JSON.stringify([place, mark.rects]) : '';
+    const marks = markNow().map((mark) => ({ ...mark, place: places.find((p) => p.page === mark.page) })).filter((mark) => mark.place);
+    const key = JSON.stringify(marks);
     if (key === shown) return;
     shown = key;
-    layer.replaceChildren(...(place ? mark.rects.map((rect) => {
+    layer.replaceChildren(...marks.flatMap(({ page, rects, sentence, place }) => rects.map((rect) => {
       const element = document.createElement('div');
-      element.dataset.reading = '';
-      element.dataset.page = String(mark.page);
-      element.style.cssText = `position:absolute;box-sizing:border-box;border-radius:3px;mix-blend-mode:multiply;background:${READING_FILL};`
+      element.dataset.reading = sentence ? 'sentence' : '';
+      element.dataset.page = String(page);
+      element.style.cssText = `position:absolute;box-sizing:border-box;border-radius:3px;mix-blend-mode:multiply;background:${sentence ? SENTENCE_FILL : READING_FILL};`
         + markBox(place, rect, Math.max(1, place.height * 0.002));
       return element;
-    }) : []));
+    })));
   };
 
   return {
@@ -47,8 +51,8 @@ export function createReadingMarkLayer(root, markNow) {
     },
     hide() {
       places = [];
-      if (shown === '') return;
-      shown = '';
+      if (shown === '[]') return;
+      shown = '[]';
       layer.replaceChildren();
     },
     remove() { layer.remove(); },

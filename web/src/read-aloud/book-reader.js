@@ -132,8 +132,8 @@ export class BookReader {
 
   _makeLayer() {
     const layer = createReadingMarkLayer(this._book.root, () => {
-      const word = this._current?.word;
-      return word && word.rects.length > 0 ? word : null;
+      const { sentence = null, word = null } = this._current ?? {};
+      return [sentence && { ...sentence, sentence: true }, word].filter((mark) => mark && mark.rects.length > 0);
     });
     this._book.addLayer(layer);
     this._book.layoutLayers();

@@ -26,6 +26,24 @@ function silence(ms, onEnd) {
   };
 }
 
+// Word rects ([x, y, w, h] fractions of the page) joined into one a line: rects in reading order whose
+// heights overlap by half are one line, from the leftmost to the rightmost.
+function lineRects(rects) {
+  const lines = [];
+  for (const [x, y, w, h] of rects) {
+    const line = lines[lines.length - 1];
+    const overlap = line ? Math.min(line[1] + line[3], y + h) - Math.max(line[1], y) : 0;
+    if (line && overlap > 0.5 * Math.min(line[3], h)) {
+      const [left, top] = [Math.min(line[0], x), Math.min(line[1], y)];
+      const [right, bottom] = [Math.max(line[0] + line[2], x + w), Math.max(line[1] + line[3], y + h)];
+      line.splice(0, 4, left, top, right - left, bottom - top);
+    } else {
+      lines.push([x, y, w, h]);
+    }
+  }
+  return lines;
+}
+
 export class Reading {
   /**
    * @param {object} book  what a reading needs of the book (book-reader.js): openPages(), pageCount(),
@@ -40,6 +58,7 @@ export class Reading {
     this._state = 'reading';
     this._page = book.openPages()[0];
     this._word = null;
+    this._sentence = null;  // the sentence said now: { page, from, to, rects } (word indices, rects a line each)
     this._speaker = null;   // what says the page now: { pause, resume, cancel, audio? }
     this._runs = 0;         // each (re)start of the loop; an older loop stops at its next step
     this._held = null;      // while paused: the promise the loop waits on, and its release
@@ -62,6 +81,11 @@ export class Reading {
   get page() { return this._page; }
   /** The word said now: { page, index, text, rects } (rects: [x, y, w, h] fractions of the page), or null. */
   get word() { return this._word ? { ...this._word, rects: this._word.rects.map((r) => r.slice()) } : null; }
+  /**
+   * The sentence said now, where the engine says when each begins (the browser's voices): { page, from,
+   * to, rects } (its first and last word's indices; rects: [x, y, w, h] fractions of the page, one a line), or null.
+   */
+  get sentence() { return this._sentence ? { ...this._sentence, rects: this._sentence.rects.map((r) => r.slice()) } : null; }
   /** The <audio> element playing recorded narration now, or null (speech). */
   get audio() { return this._speaker?.audio ?? null; }
 
@@ -104,7 +128,7 @@ export class Reading {
     if (this._speaker?.audio) {
       this._speaker.audio.playbackRate = this._settings.rate;
     } else if (this._speaker && this._state !== 'waiting') {
-      this._run(this._page, this._word?.page === this._page ? this._word.index : 0);
+      this._run(this._page, this._at()?.page === this._page ? this._at().index : 0);
     }
   }
 
@@ -176,6 +200,7 @@ export class Reading {
         const offset = words[from].start;
         mine = engine.speak(script.text.slice(offset), {
           lang: this._settings.lang ?? script.lang, rate, pitch, voice,
+          onSentence: (start, end) => { if (!gone()) this._markSentence(script, start + offset, end + offset); },
           onWord: (charIndex) => said(wordAt(words, charIndex + offset)),
           onEnd: done,
           onError: failed,
@@ -192,6 +217,25 @@ export class Reading {
     this._word = { page: script.page, index, text: word.text, rects: word.rects };
     this._book.showWord(this._word);
     this._book.emit('readaloudword', { page: script.page, index, text: word.text, rects: word.rects.map((r) => r.slice()) });
+  }
+
+  // The sentence from character `start` to `end` of the script is being said: marked, and the word said
+  // before it is no longer.
+  _markSentence(script, start, end) {
+    if (this._state === 'ended') return;
+    const from = wordAt(script.words, start);
+    if (from < 0) return;
+    let to = from;
+    while (to + 1 < script.words.length && script.words[to + 1].start < end) to++;
+    this._sentence = { page: script.page, from, to, rects: lineRects(script.words.slice(from, to + 1).flatMap((w) => w.rects)) };
+    this._word = null;
+    this._book.showWord(null);
+  }
+
+  // Where the voice is: the word said, else the first word of the sentence said ({ page, index }), or null.
+  _at() {
+    if (this._word) return this._word;
+    return this._sentence && { page: this._sentence.page, index: this._sentence.from };
   }
 
   // What says the page now stops, and its page's promise resolves.
@@ -239,8 +283,9 @@ export class Reading {
     }
     this._runs++;
     this._silence();
-    this._heldAt = { page: this._word?.page ?? this._page, index: this._word?.index ?? 0 };
+    this._heldAt = { page: this._at()?.page ?? this._page, index: this._at()?.index ?? 0 };
     this._word = null;
+    this._sentence = null;
     this._book.showWord(null);
     if (landed) {
       this._run(this._book.openPages()[0], 0);
@@ -257,6 +302,7 @@ export class Reading {
     this._held?.release();
     this._held = null;
     this._word = null;
+    this._sentence = null;
     for (const off of this._off) off();
     this._book.showWord(null);
     this._book.curlWord(null).catch(() => {});
