@@ -7,14 +7,14 @@ export { speechEnvironment } from './speech.mjs';
 const HTML = '/tests/browser/fixtures/html-fixture.html';
 
 // A page of 300-odd words: sentences of a short story, in order, so a word's place says where the voice is.
-const LONG_PAGE = Array.from({ length: 16 }, (_, i) => `Sentence ${i + 1} of the first page tells how the paper boat went on down the long river past the mill.`).join(' ');
-const SHORT_PAGES = ['The boat came to the sea at last.', 'A gull sat on it. It did not sink.', 'The wind took it home.', 'The end.'];
+export const LONG_PAGE = Array.from({ length: 16 }, (_, i) => `Sentence ${i + 1} of the first page tells how the paper boat went on down the long river past the mill.`).join(' ');
+export const SHORT_PAGES = ['The boat came to the sea at last.', 'A gull sat on it. It did not sink.', 'The wind took it home.', 'The end.'];
 
 /**
  * Opens a double-page book of HTML pages (a long one alone, then short ones two by two: both open pages
  * are said before a turn) and records read-aloud's events, and each mark as it is laid, in window.log.
  */
-function openStoryBook({ long, short }) {
+export function openStoryBook({ long, short }) {
   const pages = [long, ...short].map((text) => {
     const page = window.makeTextPage(text);
     page.style.fontSize = '8px';  // the long page's words all lie on the page
@@ -38,6 +38,26 @@ function openStoryBook({ long, short }) {
   });
 }
 
+/**
+ * What a whole reading of the story book (openStoryBook) must have done, from its window.log: ended
+ * 'finished' on page 4, said each page once in order, turned at the end of the open pages, laid a mark
+ * over each page while it was said, and gone through the long page's words in order to its last.
+ */
+export function checkReading(log) {
+  const end = log.find((e) => e.type === 'readaloudend');
+  assert.deepEqual(end && { page: end.page, reason: end.reason }, { page: 4, reason: 'finished' }, JSON.stringify(log.filter((e) => e.type !== 'mark')));
+  assert.deepEqual(log.filter((e) => e.type === 'readaloudpage').map((e) => e.page), [0, 1, 2, 3, 4], 'each page is said once, in order');
+  assert.deepEqual(log.filter((e) => e.type === 'turned').map((e) => e.page), [1, 3], 'the book turned at the end of the open pages');
+  for (const page of [0, 1, 2, 3, 4]) {
+    assert.ok(log.some((e) => e.type === 'mark' && e.page === page), `a [data-reading] mark lay over page ${page} while it was said`);
+  }
+  // The long page's marks go through its words in order, to its last (the voice said it all).
+  const onFirst = log.filter((e) => e.type === 'mark' && e.page === 0).map((e) => e.word ?? e.sentence[0]);
+  assert.deepEqual(onFirst, [...onFirst].sort((a, b) => a - b), 'the marks move forward through the page');
+  const lastSaid = log.filter((e) => e.type === 'mark' && e.page === 0).map((e) => Math.max(e.word ?? -1, e.sentence?.[1] ?? -1));
+  assert.equal(Math.max(...lastSaid), LONG_PAGE.split(/\s+/).length - 1, 'the long page was said to its last word');
+}
+
 /** Defines the read-aloud journeys on engineSuite's context: { engine, url, open, evaluate, journey, heard, browser }. */
 export function readAloudJourneys(context) {
   const { open, evaluate, journey } = context;
@@ -54,18 +74,7 @@ export function readAloudJourneys(context) {
     await context.browser.waitFor(() => window.log.some((e) => e.type === 'readaloudend' || e.type === 'rejected'));
     const log = await evaluate(() => window.log);
     console.log(`# ${context.engine}: read aloud in ${((Date.now() - started) / 1000).toFixed(1)} s, ${log.filter((e) => e.type === 'mark').length} marks laid`);
-    const end = log.find((e) => e.type === 'readaloudend');
-    assert.deepEqual(end && { page: end.page, reason: end.reason }, { page: 4, reason: 'finished' }, JSON.stringify(log.filter((e) => e.type !== 'mark')));
-    assert.deepEqual(log.filter((e) => e.type === 'readaloudpage').map((e) => e.page), [0, 1, 2, 3, 4], 'each page is said once, in order');
-    assert.deepEqual(log.filter((e) => e.type === 'turned').map((e) => e.page), [1, 3], 'the book turned at the end of the open pages');
-    for (const page of [0, 1, 2, 3, 4]) {
-      assert.ok(log.some((e) => e.type === 'mark' && e.page === page), `a [data-reading] mark lay over page ${page} while it was said`);
-    }
-    // The long page's marks go through its words in order, to its last (the voice said it all).
-    const onFirst = log.filter((e) => e.type === 'mark' && e.page === 0).map((e) => e.word ?? e.sentence[0]);
-    assert.deepEqual(onFirst, [...onFirst].sort((a, b) => a - b), 'the marks move forward through the page');
-    const lastSaid = log.filter((e) => e.type === 'mark' && e.page === 0).map((e) => Math.max(e.word ?? -1, e.sentence?.[1] ?? -1));
-    assert.equal(Math.max(...lastSaid), LONG_PAGE.split(/\s+/).length - 1, 'the long page was said to its last word');
+    checkReading(log);
     assert.deepEqual(await evaluate(() => [window.book.readingAloud, document.querySelectorAll('[data-reading]').length]), [null, 0], 'nothing left marked');
   }, { timeout: 120_000 });
 }
