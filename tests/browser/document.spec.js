@@ -120,6 +120,44 @@ test('browser: toggleFullscreen() enters and leaves fullscreen on the book\'s co
   expect(left).toEqual({ answer: false, fullscreen: false, events: [true, false], again: false });
 });
 
+test('browser: leaving fullscreen is heard every time, also when the browser says it entered only after it left: enter, leave, enter, leave by the toolbar and exitFullscreen() dispatch fullscreenchange true, false, true, false', async ({ page }) => {
+  await openReady(page, '/tests/browser/fixtures/pdf-fixture.html');
+  await page.evaluate(async () => {
+    window.book = await window.Flipbook.create(window.container, { pages: ['/tests/browser/references/curl-t0-00.png'], controls: true });
+    window.heard = [];
+    window.book.addEventListener('fullscreenchange', (e) => window.heard.push(e.detail.fullscreen));
+    // Chrome changes document.fullscreenElement at once but sends its fullscreenchange frames later: after
+    // a quick leave, the entry's event comes when the container is out again (seen on a second entry).
+    // While `window.holding`, the browser's events are held back here, before any listener of the page,
+    // and sent on (late, as Chrome may) by release().
+    window.held = 0;
+    window.holding = false;
+    window.addEventListener('fullscreenchange', (event) => {
+      if (!window.holding) return;
+      event.stopImmediatePropagation();
+      window.held += 1;
+    }, true);
+    window.release = () => {
+      window.holding = false;
+      for (; window.held > 0; window.held--) document.dispatchEvent(new Event('fullscreenchange', { bubbles: true }));
+    };
+  });
+  const fullscreen = page.getByRole('toolbar').getByRole('button', { name: 'Fullscreen' });
+  // Enter (a user gesture: the Fullscreen API asks for one) and leave, each heard.
+  await fullscreen.click();
+  await page.waitForFunction(() => window.heard.length === 1);
+  await page.evaluate(() => document.exitFullscreen());
+  await page.waitForFunction(() => window.heard.length === 2);
+  // Again, the browser's events late: the entry's comes after the leave.
+  await page.evaluate(() => { window.holding = true; });
+  await fullscreen.click();
+  await page.waitForFunction(() => window.book.fullscreen);
+  await page.evaluate(() => document.exitFullscreen());
+  await page.waitForFunction(() => window.held === 2 && !window.book.fullscreen);
+  await page.evaluate(() => window.release());
+  expect(await page.evaluate(() => window.heard)).toEqual([true, false, true, false]);
+});
+
 test('browser: download() fires a cancelable download event; unless prevented it downloads the PDF\'s bytes, or the `download` URL', async ({ page }) => {
   await openPdfBook(page);
   const prevented = await page.evaluate(async () => {

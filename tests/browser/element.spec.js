@@ -248,7 +248,7 @@ test('browser: removing <cone-flipbook> destroys its book and releases its canva
       next: await element.next().then(() => 'resolved', (error) => error.message),
     };
 
-    // Removed while its book is still being built: the book is destroyed when the build finishes.
+    // Removed while its book is still being built: the build stops (robustness.spec.js: no renderer is made).
     const early = window.makeElement({ pages });
     document.getElementById('stage').append(early);
     const waiting = early.whenReady().then(() => 'resolved', (error) => error.message);

@@ -437,6 +437,101 @@ test('browser: when the wasm engine cannot load, create rejects with code engine
   expect(await shownAt(page, SPREAD)).toEqual([1, 2]);
 });
 
+/**
+ * Holds every request for the engine's .wasm until `release()`: a book created now waits on the engine
+ * for as long as the test likes. `requested` resolves once the first request arrives.
+ */
+async function holdEngine(page) {
+  let release;
+  const released = new Promise((resolve) => { release = resolve; });
+  let requested;
+  const asked = new Promise((resolve) => { requested = resolve; });
+  await page.route('**/conecurl-engine.wasm', async (route) => {
+    requested();
+    await released;
+    await route.continue();
+  });
+  return { requested: asked, release };
+}
+
+/** Counts the WebGL2 contexts asked for from now on (window.contextsAsked()), on any canvas. */
+const countContextsFromNow = (page) => page.evaluate(() => {
+  let asked = 0;
+  const getContext = HTMLCanvasElement.prototype.getContext;
+  HTMLCanvasElement.prototype.getContext = function (type, ...rest) {
+    if (type === 'webgl2') asked++;
+    return getContext.call(this, type, ...rest);
+  };
+  window.contextsAsked = () => asked;
+});
+
+test('browser: a Flipbook destroyed while the engine still loads never builds a renderer: create() rejects with an AbortError, no WebGL context is asked for, nothing is left in the container', async ({ page }) => {
+  const engine = await holdEngine(page);
+  await openReady(page, FIXTURE);
+  await page.evaluate(() => {
+    // A subclass holds the instance create() builds (as <cone-flipbook> does), so it can be destroyed before create() settles.
+    class HeldFlipbook extends window.Flipbook {
+      constructor(...args) {
+        super(...args);
+        window.pending = this;
+      }
+    }
+    const pages = [0, 1, 2, 3].map((i) => window.makeNumberedPage(i));
+    window.outcome = HeldFlipbook.create(document.getElementById('container'), { pages, display: 'double' })
+      .then(() => ({ resolved: true }), (error) => ({ name: error.name, message: error.message, fallback: Boolean(error.fallback) }));
+  });
+  await engine.requested;  // the book waits on the engine now
+  await countContextsFromNow(page);
+  await page.evaluate(() => window.pending.destroy());
+  engine.release();
+  const result = await page.evaluate(async () => {
+    const outcome = await window.outcome;
+    const { loadEngine } = await import('/web/src/engine.js');
+    await loadEngine();  // the engine the book waited on has loaded
+    await new Promise((resolve) => requestAnimationFrame(resolve));
+    return {
+      outcome,
+      contexts: window.contextsAsked(),
+      surface: window.pending.surface?.kind ?? null,  // what draws it: none
+      containerChildren: document.getElementById('container').childElementCount,
+      canvases: document.querySelectorAll('canvas').length,
+    };
+  });
+  expect(result.outcome).toEqual({ name: 'AbortError', message: 'conecurl: the book was destroyed before create() finished', fallback: false });
+  expect(result).toMatchObject({ contexts: 0, surface: null, containerChildren: 0, canvases: 0 });
+});
+
+test('browser: a <cone-flipbook> removed from the document while the engine still loads never builds a renderer, and leaves its box empty', async ({ page }) => {
+  const engine = await holdEngine(page);
+  await openReady(page, FIXTURE);
+  await page.evaluate(async () => {
+    await import('/web/src/element.js');
+    const element = document.createElement('cone-flipbook');
+    element.pages = [0, 1, 2, 3].map((i) => window.makeNumberedPage(i).toDataURL());
+    document.getElementById('container').append(element);
+    window.element = element;
+    window.whenReady = element.whenReady().then(() => 'resolved', (error) => error.message);
+  });
+  await engine.requested;  // its book waits on the engine now
+  await countContextsFromNow(page);
+  await page.evaluate(() => window.element.remove());
+  expect(await page.evaluate(() => window.whenReady)).toContain('removed from the document');
+  engine.release();
+  const result = await page.evaluate(async () => {
+    const { loadEngine } = await import('/web/src/engine.js');
+    await loadEngine();  // the engine the book waited on has loaded: a build still under way goes on from here
+    await new Promise((resolve) => requestAnimationFrame(resolve));
+    await new Promise((resolve) => requestAnimationFrame(resolve));
+    return {
+      contexts: window.contextsAsked(),
+      book: window.element.book,
+      box: window.element.shadowRoot.querySelector('.book').childElementCount,
+      canvases: window.element.shadowRoot.querySelectorAll('canvas').length,
+    };
+  });
+  expect(result).toEqual({ contexts: 0, book: null, box: 0, canvases: 0 });
+});
+
 /** Loses the book's WebGL context (WEBGL_lose_context) and resolves once it is lost. */
 function loseContext(page) {
   return page.evaluate(async () => {

@@ -1,7 +1,8 @@
-// Demo wiring: the forty-page book in a Flipbook (the public class, as a user would use it), its
-// controls, and the schedule the engine computes (theta, Ay, rho over t) plotted beside it with a
-// scrubber that poses the next turn's exact frame. The Book choice swaps in the PDF, the HTML magazine or
-// the narrated picture book (demo-story.js); Read aloud reads whichever is open.
+// Demo wiring: the forty-page book in a Flipbook (the public class, as a user would use it; without
+// WebGL2, the still-page fallback its create() rejects with), its controls, and the schedule the engine
+// computes (theta, Ay, rho over t) plotted beside it with a scrubber that poses the next turn's exact
+// frame. The Book choice swaps in the PDF, the HTML magazine or the narrated picture book (demo-story.js);
+// Read aloud reads whichever is open.
 import { Flipbook } from '../src/index.js';
 import { loadEngine } from '../src/engine.js';
 import { DEMO_PAGE_COUNT, drawBookPage, isHardPage } from './book-pages.js';
@@ -90,6 +91,19 @@ async function readAloud() {
   }
 }
 
+// Without WebGL2 (a browser or GPU without it; Chrome without a GPU) create() rejects, and its error's
+// `fallback` is the book as still pages, already in the box: the demo keeps that one as its book, as a
+// host does (docs/api.md, Errors), so its buttons, the page shown and Jump go on working.
+async function createBook(container, options) {
+  try {
+    return await Flipbook.create(container, options);
+  } catch (error) {
+    if (!error.fallback) throw error;
+    $('status').textContent = `${error.message}: the pages are shown still.`;
+    return error.fallback;
+  }
+}
+
 // Direction, schedule and speed are fixed for a book's life: changing one makes a new book at the page.
 function buildBook(startPage) {
   building = building.then(async () => {
@@ -98,7 +112,7 @@ function buildBook(startPage) {
     const pdf = source === 'pdf';
     if (pdf) pdfBytes ??= await makeDemoPdf();
     const pages = source === 'html' ? magazinePages() : source === 'story' ? storyPages() : PAGES;
-    book = await Flipbook.create($('book'), {
+    book = await createBook($('book'), {
       ...(pdf ? { pdf: pdfBytes, controls: true } : { pages }),  // the PDF as a document: toolbar, thumbnails, search
       ...(source === 'story' ? { controls: true } : {}),  // the picture book with the toolbar (its Read button)
       startPage: source === 'drawn' ? startPage : 0,

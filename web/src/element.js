@@ -59,9 +59,10 @@ export class ConeFlipbookElement extends ElementBase {
     this._container = this.shadowRoot.querySelector('.book');
     this._failure = this.shadowRoot.querySelector('.failed');
     this._book = null;           // the Flipbook once it is ready
+    this._building = null;       // the Flipbook its create() is building: destroyed at once when the build is dropped
     this._waiter = null;         // deferred of the build scheduled or in flight
     this._error = null;          // why the last build failed
-    this._generation = 0;        // builds superseded by a later one are destroyed when they finish
+    this._generation = 0;        // a build superseded by a later one is dropped: what it made is destroyed
     this._scheduled = false;
     this._reopenAt = null;       // page to open at when the book is built again
     this._destroyed = false;
@@ -207,6 +208,15 @@ export class ConeFlipbookElement extends ElementBase {
     const host = this;
     // Flipbook fires ready and the first progress events inside create(): hear them from the start.
     class HostedFlipbook extends Flipbook {
+      // The book being built is the element's to destroy (_removeBook): removed from the document while the
+      // engine loads, it stops there and never makes a renderer. One superseded before it was made (while
+      // its document opened) never starts.
+      constructor(...args) {
+        super(...args);
+        if (generation === host._generation) host._building = this;
+        else this.destroy();
+      }
+
       dispatchEvent(event) {
         super.dispatchEvent(event);
         if (generation === host._generation) host._forward(this, event);
@@ -218,7 +228,9 @@ export class ConeFlipbookElement extends ElementBase {
       if (generation !== this._generation) book.destroy();
       else if (!this._book) this._ready(book);  // ready normally came as an event already
     } catch (error) {
-      if (generation !== this._generation) error.fallback?.destroy();
+      if (generation === this._generation) this._building = null;
+      // Superseded, or dropped by _removeBook (create() rejected with an AbortError): nothing to report.
+      if (generation !== this._generation || error.name === 'AbortError') error.fallback?.destroy();
       else if (error.fallback) this._adoptFallback(error.fallback, error);
       else this._fail(inAttributeTerms(error, this, this._held));
     }
@@ -266,6 +278,7 @@ export class ConeFlipbookElement extends ElementBase {
 
   _ready(book) {
     this._book = book;
+    this._building = null;
     const waiter = this._waiter;
     this._waiter = null;
     waiter?.resolve(book);
@@ -309,6 +322,8 @@ export class ConeFlipbookElement extends ElementBase {
   }
 
   _removeBook() {
+    this._building?.destroy();  // its create() stops where it is and rejects (AbortError)
+    this._building = null;
     if (this._book) {
       this._reopenAt = this._book.page;
       this._book.destroy();

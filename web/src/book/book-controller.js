@@ -222,22 +222,34 @@ export class BookController extends EventTarget {
   /** Whether turns on this surface animate (a still surface cuts to the next spread). */
   _animates() { return this._surface.kind === 'webgl' && !this._reducedMotion?.matches; }
 
+  // Builds the first view. destroy() meanwhile (a subclass holds the instance: <cone-flipbook> removed
+  // from the document) stops it at its next step, with nothing made after it: _stopIfDestroyed().
   async _build() {
+    this._stopIfDestroyed();
     // HTML pages live over the canvas while they lie open (html-pages.js, loaded only for books that have them).
     const htmlPages = this._pages.some((entry) => entry.html) ? import('../layers/html-pages.js') : null;
     const parts = loadOptionalParts(this._port, this._links.element);  // imported while the toolbar is
     this._controls = await attachViewer(this, this._port);  // the toolbar first: the book fits the rest of its box
+    if (this._destroyed) this._controls?.remove();  // made as destroy() ran: it found none to remove
     const [companionModules, EdgeMarks] = await Promise.all([parts.companions, parts.edgeMarks]);
+    this._stopIfDestroyed();
     const { width, height } = this._shell.root.getBoundingClientRect();
     this._layoutSize = { width, height };
     const display = displayFor(this._settings.display, this._layoutSize, this._settings);
     const opening = openingPageOf(companionModules, this._settings, this.pageCount);
     prefetchOpening(this._port, display, opening);  // fetched and decoded while the surface is made
     this._prepareCanvas();
-    if (htmlPages && !this._destroyed) this._mountHtml((await htmlPages).HtmlPages);
+    const HtmlPages = htmlPages && (await htmlPages).HtmlPages;
+    this._stopIfDestroyed();
+    if (HtmlPages) this._mountHtml(HtmlPages);
     this._text = await parts.text;  // a document's selectable text, under the links
+    if (this._destroyed) this._text?.remove();
+    this._stopIfDestroyed();
     if (this._text) this._layers.splice(this._layers.indexOf(this._links), 0, this._text);
-    this._surface = await this._makeSurface(display);
+    const surface = await this._makeSurface(display);  // Flipbook's waits for the engine, and makes none once destroyed
+    if (this._destroyed) surface.destroy({ releaseContext: true });  // made as destroy() ran
+    this._stopIfDestroyed();
+    this._surface = surface;
     followSurface(this._port);  // the pages a moving leaf shows, images lost with a context
     if (EdgeMarks) this._layers.push(new EdgeMarks(this, this._port));  // tabs and ticks on the fore-edge
     this._surface.jumpTo(this._surface.positionOfPage(opening));
@@ -249,6 +261,7 @@ export class BookController extends EventTarget {
     this._sound = companions.sound;
     this._stopCompanions = companions.stop;
     await loadFirstView(this._port);  // its pages on screen, drawn, then their neighbours
+    this._stopIfDestroyed();
     this._emit('ready', { page: this.page });
     this._doc.indexInBackground();  // a PDF's text, for search, in idle time from now on
   }
@@ -360,5 +373,10 @@ export class BookController extends EventTarget {
 
   _alive() {
     if (this._destroyed) throw new Error('conecurl: this flipbook was destroyed');
+  }
+
+  // While create() builds the book: once destroy() has run, nothing more is made and create() rejects with an AbortError.
+  _stopIfDestroyed() {
+    if (this._destroyed) throw new DOMException('conecurl: the book was destroyed before create() finished', 'AbortError');
   }
 }

@@ -620,7 +620,10 @@ export class BookController extends EventTarget {
   /**
    * Stops everything at once, mid-turn or mid-drag too: no animation frame, listener, observer, GL
    * object or wasm object is left, the WebGL context is released, page loads are aborted. Turns in
-   * flight resolve false; later calls reject (or throw) an Error. Idempotent.
+   * flight resolve false; later calls reject (or throw) an Error. Idempotent. Called while create() still
+   * builds the book (an instance a subclass holds, as <cone-flipbook> does), it stops the build there: no
+   * renderer or WebGL context is made after it, nothing is left in the container, and create() rejects
+   * with an AbortError (a DOMException).
    */
   // docapi (issue 23): the document API
   /** The table of contents: the `outline` option, else a PDF's bookmarks (destinations resolved), else []. */
@@ -677,7 +680,8 @@ export class Flipbook extends BookController {
   /**
    * Resolves once the first view's pages (those on screen and their neighbours within loadWindow) have
    * loaded or failed. Rejects with a TypeError naming a bad option (nothing is left in the container), or with a
-   * FlipbookCreateError when WebGL2 or the engine is unavailable (its `fallback` shows the pages).
+   * FlipbookCreateError when WebGL2 or the engine is unavailable (its `fallback` shows the pages), or with
+   * an AbortError (a DOMException) when the book was destroyed before it finished (nothing is left either).
    */
   static create(container: HTMLElement, options: FlipbookOptions): Promise<Flipbook>;
 }

@@ -78,6 +78,7 @@ export class Flipbook extends BookController {
       this._engine.catch(() => {});  // a failure is thrown where it is awaited
       await this._build();
     } catch (error) {
+      this._stopIfDestroyed();  // destroyed while it was built: an AbortError, no fallback put in its place
       throw await this._fail(error);
     }
     this._events.releaseSoon();  // what happened while loading the first view is heard from now on
@@ -144,6 +145,7 @@ export class Flipbook extends BookController {
 
   async _makeSurface(display) {
     const engine = await this._engine;
+    this._stopIfDestroyed();  // destroyed while the engine loaded: no renderer, no context
     const settings = this._settings;
     const hardPages = hardPageIndices(this._pages, settings.hardCovers);
     const view = new BookView(engine, this._canvas, {

@@ -9,6 +9,9 @@ import type { BookController, FlipbookOptions } from './flipbook.js';
  * next spread, `animating` is always false and previewTurn() returns false.
  */
 export class StaticBook extends BookController {
-  /** Rejects with a TypeError naming a bad option; resolves once the open pages loaded or failed. */
+  /**
+   * Rejects with a TypeError naming a bad option, or an AbortError when the book was destroyed before it
+   * finished; resolves once the open pages loaded or failed.
+   */
   static create(container: HTMLElement, options: FlipbookOptions): Promise<StaticBook>;
 }

@@ -31,6 +31,7 @@ export class StaticBook extends BookController {
     try {
       await this._build();
     } catch (error) {
+      this._stopIfDestroyed();  // destroyed while it was built: an AbortError
       this.destroy();
       throw error;
     }

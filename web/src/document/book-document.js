@@ -10,20 +10,23 @@ export function isFullscreen(container) {
 
 /**
  * Follows `container` in and out of fullscreen (by toggleFullscreen() or the browser: Escape), and
- * tells `changed(fullscreen)` each time. Returns the stop.
+ * tells `changed(fullscreen)` each time it finds the container's state changed. It looks at the browser's
+ * fullscreenchange events and when `look()` is called: Chrome changes the state at once (requestFullscreen()
+ * resolves) but sends its event frames later, so a container that left before the event of its entry
+ * came would be neither entered nor left by the events alone. Returns { look(), stop() }.
  */
 export function followFullscreen(container, changed) {
   const doc = container.ownerDocument;
   let was = isFullscreen(container);
-  const onChange = () => {
+  const look = () => {
     const now = isFullscreen(container);
     if (now !== was) {
       was = now;
       changed(now);
     }
   };
-  doc.addEventListener('fullscreenchange', onChange);
-  return () => doc.removeEventListener('fullscreenchange', onChange);
+  doc.addEventListener('fullscreenchange', look);
+  return { look, stop: () => doc.removeEventListener('fullscreenchange', look) };
 }
 
 /** Enters (force true), leaves (false) or toggles fullscreen; resolves with whether the container is fullscreen. */

@@ -13,7 +13,7 @@ export function makeDocumentApi(controller, book) {
   let searchLoading = null;
   let textIndex = null;
   let thumbnails = null;
-  let stopFollowingFullscreen = null;
+  let fullscreen = null;  // book-document.js followFullscreen(), from the first toggleFullscreen()
   let stopped = false;
   const documentModule = () => import('./book-document.js');
   const documentIndex = async () => {
@@ -50,11 +50,13 @@ export function makeDocumentApi(controller, book) {
     toggleFullscreen: async (force) => {
       const { followFullscreen, toggleFullscreen } = await documentModule();
       book.alive();
-      stopFollowingFullscreen ??= followFullscreen(book.container, (fullscreen) => {
-        book.emit('fullscreenchange', { fullscreen });
+      fullscreen ??= followFullscreen(book.container, (now) => {
+        book.emit('fullscreenchange', { fullscreen: now });
         book.refitSoon();  // the size watch lays the book out at its new size; sharp images once it rests
       });
-      return toggleFullscreen(book.container, force);
+      const now = await toggleFullscreen(book.container, force);
+      if (!book.destroyed()) fullscreen.look();  // told as toggleFullscreen() resolves, not when the browser's event comes
+      return now;
     },
     download: async () => {
       book.alive();
@@ -72,7 +74,7 @@ export function makeDocumentApi(controller, book) {
     stop: () => {
       stopped = true;
       textIndex?.stop();
-      stopFollowingFullscreen?.();
+      fullscreen?.stop();
     },
   };
 }

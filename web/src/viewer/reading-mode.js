@@ -55,18 +55,16 @@ export function readingMode(book, { container, viewer, toolbar, busy, changed })
   const onKey = (event) => {
     if (event.key === 'Escape' && !event.defaultPrevented) leave();
   };
-  // The book's fullscreenchange, and the document's too (the book's was not always heard on leaving
-  // fullscreen a second time in a test).
+  // The book's fullscreenchange: the browser leaving fullscreen (Escape, the host's exitFullscreen()) leaves reading mode.
   const onFullscreen = (event) => {
-    const now = event.detail?.fullscreen ?? Boolean(doc.fullscreenElement);
-    if (now) reachedFullscreen = true;
+    if (event.detail.fullscreen) reachedFullscreen = true;
     else if (viaFullscreen && reachedFullscreen) leave();
   };
 
   // What reading mode listens to while it lasts: [target, type, listener].
   const listeners = [
     [book, 'middletap', onMiddleTap], [book, 'turned', onTurned], [book, 'fullscreenchange', onFullscreen],
-    [doc, 'fullscreenchange', onFullscreen], [viewer, 'pointerdown', onUse], [viewer, 'keydown', onUse],
+    [viewer, 'pointerdown', onUse], [viewer, 'keydown', onUse],
     [viewer, 'focusin', onFocusIn], [doc, 'keydown', onKey],
   ];
 
