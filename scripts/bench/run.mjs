@@ -146,7 +146,7 @@ const firstLine = (error) => String(error && error.message ? error.message : err
  * scripts/engines.mjs, in `config` (the run's first desktop configuration), at the harness URL Chromium
  * was measured at. One Xvfb display, one browser per engine (launched after the previous one closed) kept
  * for all its measurements, each repetition's order alternated as Chromium's; first one visit that is not
- * measured, so that no measured page pays the browser's first page and WebGL context. Returns { config,
+ * measured, so that no measured page pays the browser's first page and WebGL context; a start that fails is tried once more. Returns { config,
  * info: { engine: { version } | { missing } | { failed } }, runs }: an engine that is not installed, or
  * does not start, says so instead of stopping the run.
  */
@@ -170,18 +170,22 @@ async function measureEngines({ engines, config, reps, turns, duration, harnessU
         continue;
       }
       let browser = null;
-      try {
-        display ??= await startDisplay(exe.xvfb);
-        browser = await launchEngine(engine, { display: display.display, width, height });
-        info[engine] = { version: browser.version };
-        await browser.goto(harnessUrl(ENGINE_LIBS[0], config));
-        await firstFrame(browser.evaluate);
-      } catch (error) {
-        info[engine] = { failed: firstLine(error) };
-        console.log(`bench: ${engine} did not start: ${info[engine].failed}`);
-        await browser?.close().catch(() => {});
-        continue;
+      // A second try where the first start fails: on a shared machine a driver may lose a race with another's.
+      for (let attempt = 1; attempt <= 2 && !browser; attempt++) {
+        try {
+          display ??= await startDisplay(exe.xvfb);
+          browser = await launchEngine(engine, { display: display.display, width, height });
+          info[engine] = { version: browser.version };
+          await browser.goto(harnessUrl(ENGINE_LIBS[0], config));
+          await firstFrame(browser.evaluate);
+        } catch (error) {
+          info[engine] = { failed: firstLine(error) };
+          console.log(`bench: ${engine} did not start (try ${attempt} of 2): ${info[engine].failed}`);
+          await browser?.close().catch(() => {});
+          browser = null;
+        }
       }
+      if (!browser) continue;
       try {
         for (let rep = 1; rep <= reps; rep++) {
           for (const lib of rep % 2 ? ENGINE_LIBS : [...ENGINE_LIBS].reverse()) {
