@@ -8,7 +8,8 @@ export const CHROMIUM_ARGS = [
   '--disable-component-update', '--disable-sync', '--no-first-run',
 ];
 
-const isExecutableFile = (path) => {
+/** Whether `path` is a file this process may run (the browsers' launchers check with this, not by a guess). */
+export const isExecutableFile = (path) => {
   try {
     accessSync(path, constants.X_OK);
     return statSync(path).isFile();
@@ -26,11 +27,14 @@ export function chromiumExecutable(env = process.env) {
     if (isExecutableFile(env.CHROMIUM_PATH)) return env.CHROMIUM_PATH;
     throw new Error(`CHROMIUM_PATH=${env.CHROMIUM_PATH} is not an executable file`);
   }
-  for (const dir of (env.PATH || '').split(delimiter)) {
-    if (dir && isExecutableFile(join(dir, 'chromium'))) return join(dir, 'chromium');
-  }
+  const found = findOnPath('chromium', env);
+  if (found) return found;
   throw new Error('no chromium on PATH: run `bash scripts/setup.sh` (installs Debian\'s chromium) or set CHROMIUM_PATH');
 }
+
+/** The first executable `name` on env's PATH, or undefined. */
+export const findOnPath = (name, env = process.env) => (env.PATH || '').split(delimiter)
+  .map((dir) => dir && join(dir, name)).find((path) => path && isExecutableFile(path));
 
 /** Options for playwright's chromium.launch(). */
 export const chromiumLaunchOptions = () => ({ executablePath: chromiumExecutable(), args: CHROMIUM_ARGS });

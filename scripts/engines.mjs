@@ -2,25 +2,15 @@
 // Chromium): Debian's firefox-esr over WebDriver BiDi (puppeteer-core) and WebKitGTK's MiniBrowser through
 // WebKitWebDriver (selenium-webdriver), both on an Xvfb display of their own, behind one small interface.
 import { spawn } from 'node:child_process';
-import { accessSync, constants, statSync } from 'node:fs';
 import net from 'node:net';
-import { delimiter, join } from 'node:path';
 import { PNG } from 'pngjs';
+import { findOnPath, isExecutableFile } from './chromium.mjs';
 
 export const ENGINES = ['firefox', 'webkit'];
 
 // Where Debian puts WebKitGTK 4.1's MiniBrowser (package libwebkit2gtk-4.1-0); WEBKIT_MINIBROWSER overrides.
 const MINIBROWSER_DIRS = ['/usr/lib/x86_64-linux-gnu', '/usr/lib/aarch64-linux-gnu', '/usr/lib'];
 
-const isExecutableFile = (path) => {
-  try {
-    accessSync(path, constants.X_OK);
-    return statSync(path).isFile();
-  } catch {
-    return false;
-  }
-};
-const onPath = (name, env) => (env.PATH || '').split(delimiter).map((dir) => dir && join(dir, name)).find((p) => p && isExecutableFile(p));
 
 /** The executables an engine needs, or an error saying how to install them. */
 export function engineExecutables(engine, env = process.env) {
@@ -28,11 +18,11 @@ export function engineExecutables(engine, env = process.env) {
     if (path) return path;
     throw new Error(`no ${what}: run \`bash scripts/setup.sh\` (installs Debian's firefox-esr, webkit2gtk-driver and xvfb)`);
   };
-  const xvfb = need(onPath('Xvfb', env), 'Xvfb on PATH');
-  if (engine === 'firefox') return { xvfb, browser: need(env.FIREFOX_PATH || onPath('firefox-esr', env) || onPath('firefox', env), 'firefox-esr on PATH') };
+  const xvfb = need(findOnPath('Xvfb', env), 'Xvfb on PATH');
+  if (engine === 'firefox') return { xvfb, browser: need(env.FIREFOX_PATH || findOnPath('firefox-esr', env) || findOnPath('firefox', env), 'firefox-esr on PATH') };
   if (engine === 'webkit') {
     const mini = env.WEBKIT_MINIBROWSER || MINIBROWSER_DIRS.map((d) => `${d}/webkit2gtk-4.1/MiniBrowser`).find(isExecutableFile);
-    return { xvfb, browser: need(mini, 'WebKitGTK MiniBrowser'), driver: need(onPath('WebKitWebDriver', env), 'WebKitWebDriver on PATH') };
+    return { xvfb, browser: need(mini, 'WebKitGTK MiniBrowser'), driver: need(findOnPath('WebKitWebDriver', env), 'WebKitWebDriver on PATH') };
   }
   throw new Error(`unknown engine '${engine}' (one of ${ENGINES.join(', ')})`);
 }
@@ -187,9 +177,14 @@ async function launchWebKit(exe, env, { width, height, timeoutMs }) {
       down: () => act((a) => a.press()),
       up: () => act((a) => a.release()),
     },
-    stroke: (points, stepMs) => act((a) => points.slice(1).reduce(
-      (chain, p) => chain.move({ x: Math.round(p.x), y: Math.round(p.y), duration: stepMs }),
-      a.move({ x: Math.round(points[0].x), y: Math.round(points[0].y), duration: 0 }).press()).release()),
+    // A sequence of timed moves sometimes never answers in WebKitWebDriver: here each move is a call of
+    // its own (50-200 ms a round trip), so the stroke's speed is the machine's, not `stepMs`.
+    async stroke(points) {
+      const at = (p) => ({ x: Math.round(p.x), y: Math.round(p.y), duration: 0 });
+      await act((a) => a.move(at(points[0])).press());
+      for (const p of points.slice(1)) await act((a) => a.move(at(p)));
+      await act((a) => a.release());
+    },
     doubleClick: (x, y) => { Object.assign(pointer, { x: Math.round(x), y: Math.round(y) }); return act((a) => a.move({ x: pointer.x, y: pointer.y }).doubleClick()); },
     key: (name) => act((a) => a.sendKeys(keys[name] ?? name)),
     // Element screenshots come back with a black band: the window's, cut to the viewport, is right.

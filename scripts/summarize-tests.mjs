@@ -24,11 +24,12 @@ try {
 // whose suite did not run at all (its browser failed to start) is a failure, not a silence.
 const enginesTap = read('engines.tap');
 for (const engine of ['firefox', 'webkit']) {
-  const results = [...enginesTap.matchAll(new RegExp(`^\\s*(not )?ok \\d+ - ${engine}: `, 'gm'))];
+  const results = [...enginesTap.matchAll(new RegExp(`^\\s*(not )?ok \\d+ - ${engine}: .*?( # SKIP)?$`, 'gm'))];
   const failedSuite = new RegExp(`^\\s*not ok \\d+ - ${engine}$`, 'm').test(enginesTap);
-  const passed = results.filter((m) => !m[1]).length;
-  const failed = results.length - passed;
-  suites.push({ name: `browser (${engine})`, passed, failed: failed || (failedSuite || passed === 0 ? 1 : 0),
+  const skipped = results.filter((m) => m[2]).length;
+  const passed = results.filter((m) => !m[1] && !m[2]).length;
+  const failed = results.filter((m) => m[1]).length;
+  suites.push({ name: `browser (${engine})`, passed, skipped, failed: failed || (failedSuite || passed === 0 ? 1 : 0),
     ...(passed === 0 && failed === 0 ? { note: 'no tests ran' } : {}) });
 }
 
@@ -68,7 +69,7 @@ if (slowest.length > 0) {
 let passed = 0, failed = 0, skipped = 0;
 for (const s of suites) {
   passed += s.passed; failed += s.failed; skipped += s.skipped || 0;
-  console.log(`  ${s.name}: ${s.passed} passed, ${s.failed} failed${s.note ? ` (${s.note})` : ''}`);
+  console.log(`  ${s.name}: ${s.passed} passed, ${s.failed} failed${s.skipped ? `, ${s.skipped} skipped` : ''}${s.note ? ` (${s.note})` : ''}`);
 }
 console.log(`all suites: ${passed} passed, ${failed} failed, ${skipped} skipped`);
 process.exit(failed === 0 && passed > 0 ? 0 : 1);

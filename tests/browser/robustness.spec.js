@@ -4,6 +4,7 @@
 // strings, and the renderer's checks at the Embind boundary. Issue 5.
 import { test, expect } from '@playwright/test';
 import { openReady, withoutWebGL2 } from './helpers.js';
+import { shownAtInPage } from './shown-at.js';
 
 const FIXTURE = '/tests/browser/fixtures/flipbook-fixture.html';
 const ELEMENT_FIXTURE = '/tests/browser/fixtures/element-fixture.html';
@@ -11,40 +12,8 @@ const EN_DASH = '\u2013';
 // A real page image of the repository, and the same on another origin (localhost vs 127.0.0.1).
 const IMAGE_PATH = '/tests/browser/references/curl-t0-00.png';
 
-/**
- * What the book shows at points given as fractions of its resting pages' rectangle: a page index (by
- * its colour), 'paper' (the placeholder, or a blank back), 'none' (no page there) or 'other(r,g,b)'.
- * Works for the WebGL book (drawn and read in one task) and for the static fallback's 2D canvas.
- */
-function shownAt(page, points) {
-  return page.evaluate((points) => {
-    const book = window.book;
-    let pixels;
-    let rect;
-    let canvas;
-    if (book.surface?.kind === 'webgl') {
-      book.surface.drawNow();
-      pixels = book.surface.readPixels();
-      rect = book.restingRect();
-      canvas = book.surface.canvas;
-    } else {
-      canvas = book.element.querySelector('canvas');
-      pixels = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height);
-      rect = book.restingRect();
-    }
-    const ratio = pixels.width / canvas.clientWidth;
-    return points.map(([fx, fy]) => {
-      const x = Math.round((rect.x + fx * rect.width) * ratio);
-      const y = Math.round((rect.y + fy * rect.height) * ratio);
-      const i = (y * pixels.width + x) * 4;
-      const [r, g, b, a] = Array.from(pixels.data.slice(i, i + 4));
-      if (a < 16) return 'none';
-      const index = window.pageAtColor([r, g, b], 12);  // the 12 distinct page hues
-      if (index >= 0) return index;
-      return Math.min(r, g, b) > 200 && Math.max(r, g, b) - Math.min(r, g, b) < 25 ? 'paper' : `other(${r},${g},${b})`;
-    });
-  }, points);
-}
+/** What window.book shows at points (fractions of its resting pages' rectangle): see shown-at.js. */
+const shownAt = (page, points) => page.evaluate(shownAtInPage, points);
 
 // Points low on each page (clear of the page number and the corner marker of the numbered pages).
 const SPREAD = [[0.2, 0.85], [0.8, 0.85]];

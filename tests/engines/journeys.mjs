@@ -12,6 +12,7 @@ import { PNG } from 'pngjs';
 import pixelmatch from 'pixelmatch';
 import { launchEngine, startDisplay, engineExecutables } from '../../scripts/engines.mjs';
 import { serveDirectory } from '../../scripts/serve.mjs';
+import { shownAtInPage as shownAt } from '../browser/shown-at.js';
 import { documentJourneys } from './documents.mjs';
 import { readAloudJourneys, speechEnvironment } from './read-aloud.mjs';
 
@@ -63,25 +64,6 @@ function matchesReference(engine, name, png) {
 
 // --- in-page helpers (run inside the page: they see only their arguments and the page) ---
 
-/** What the book shows at fractions of its resting rectangle: a page index by its colour, 'paper', 'none' or 'other'. */
-function shownAt(points) {
-  const book = window.book;
-  book.surface.drawNow();
-  const pixels = book.surface.readPixels();
-  const rect = book.restingRect();
-  const ratio = pixels.width / book.surface.canvas.clientWidth;
-  return points.map(([fx, fy]) => {
-    const x = Math.round((rect.x + fx * rect.width) * ratio);
-    const y = Math.round((rect.y + fy * rect.height) * ratio);
-    const i = (y * pixels.width + x) * 4;
-    const [r, g, b, a] = Array.from(pixels.data.slice(i, i + 4));
-    if (a < 16) return 'none';
-    const index = window.pageAtColor([r, g, b], 12);
-    if (index >= 0) return index;
-    return Math.min(r, g, b) > 200 && Math.max(r, g, b) - Math.min(r, g, b) < 25 ? 'paper' : `other(${r},${g},${b})`;
-  });
-}
-
 /** Opens window.book in the flipbook fixture with `options` and records its events in window.events. */
 async function openBookIn(options) {
   await window.openBook(options);
@@ -113,8 +95,12 @@ export function engineSuite(engine) {
     /** What the open page (and its same-origin frames) threw, rejected or logged as an error. */
     const heard = () => evaluate(() => [window, ...Array.from(document.querySelectorAll('iframe'), (f) => f.contentWindow)]
       .flatMap((w) => { try { return w.__heard || []; } catch { return []; } }));
-    /** A test of ENGINE: FN, then nothing heard in the page it left open. */
-    const journey = (name, fn, options = {}) => test(`${engine}: ${name} (browser: ${engine})`, options, async () => {
+    /**
+     * A test of ENGINE: FN, then nothing heard in the page it left open. A driver command that never
+     * answers fails the test at its time limit (sized, as the Chromium suite's, for a machine several times
+     * slower than a quiet 2-core one) instead of holding the whole run.
+     */
+    const journey = (name, fn, options = {}) => test(`${engine}: ${name} (browser: ${engine})`, { timeout: 300_000, ...options }, async () => {
       await fn();
       assert.deepEqual(await heard(), [], 'the page threw, rejected or logged an error');
     });
@@ -161,7 +147,7 @@ export function engineSuite(engine) {
       }
     });
 
-    journey('a corner dragged with real pointer input follows the pointer and turns the page past the spine; a click, the arrow keys and a fling turn too', async () => {
+    journey('a corner dragged with real pointer input turns the page past the spine; a click and the arrow keys turn too', async () => {
       await open(FLIPBOOK);
       assert.deepEqual(await evaluate(openBookIn, { pages: 10, display: 'double', startPage: 2, duration: 300 }), { page: 1, display: 'double' });
       // Drag the right page's bottom corner over the spine, in steps, and hold it there.
@@ -194,18 +180,26 @@ export function engineSuite(engine) {
       await browser.waitFor(() => window.events.filter((e) => e.type === 'turned').length === 4);
       await evaluate(() => window.settle());
       assert.equal(await evaluate(() => window.book.page), 5);
+    });
 
-      // A fling: a short quick stroke from the corner, let go well short of the spine, still turns. Sent
-      // as one action sequence (16 ms a move by the browser's clock), since a round trip a move may take
-      // 200 ms in WebKit's driver: a fling, then, only on a fast machine.
+    // WebKitGTK 2.50 under Xvfb freezes (its web process waits forever inside Mesa's llvmpipe) when a leaf
+    // let go short of the spine falls back while the stacks' thickness is drawn: found by this suite and
+    // not fixed yet (the closing note of issue 36 says what is known), and WebKit's driver cannot send a
+    // timed stroke reliably either (a sequence of timed moves sometimes never answers). The fling's
+    // velocity rule is held in Chromium with explicit event times (drag.spec.js).
+    const flingSkip = engine === 'webkit' ? 'WebKitGTK freezes in llvmpipe when a leaf falls back with thickness on (issue 36 note)' : false;
+    journey('a fling: a short quick stroke from the corner, let go well short of the spine, turns the page', async () => {
+      await open(FLIPBOOK);
+      await evaluate(openBookIn, { pages: 10, display: 'double', startPage: 4, duration: 300 });
+      // One action sequence, 16 ms a move by the browser's clock: the speed is the stroke's, not the round trips'.
       const corner = await evaluate(() => window.halfPoint(0.985, 0.9));
       const short = await evaluate(() => window.halfPoint(0.75, 0.9));
       await browser.stroke([corner, { x: corner.x - 6, y: corner.y }, { x: (corner.x + short.x) / 2, y: corner.y }, short], 16);
-      await browser.waitFor(() => window.events.filter((e) => e.type === 'turned' || e.type === 'turncancel').length > 4);
+      await browser.waitFor(() => window.events.some((e) => e.type === 'turned' || e.type === 'turncancel'));
       await evaluate(() => window.settle());
-      assert.deepEqual(await evaluate(() => [window.book.page, window.events.filter((e) => e.type === 'turncancel').length]), [7, 0], 'the fling turned the page');
-      assert.deepEqual(await evaluate(shownAt, [[0.2, 0.85], [0.8, 0.85]]), [7, 8]);
-    });
+      assert.deepEqual(await evaluate(() => [window.book.page, window.events.filter((e) => e.type === 'turncancel').length]), [5, 0], 'the fling turned the page');
+      assert.deepEqual(await evaluate(shownAt, [[0.2, 0.85], [0.8, 0.85]]), [5, 6]);
+    }, { skip: flingSkip });
 
     journey('hard covers, right-to-left, vertical, single and double display turn and show the right pages', async () => {
       await open(FLIPBOOK);

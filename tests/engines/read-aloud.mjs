@@ -76,5 +76,5 @@ export function readAloudJourneys(context) {
     console.log(`# ${context.engine}: read aloud in ${((Date.now() - started) / 1000).toFixed(1)} s, ${log.filter((e) => e.type === 'mark').length} marks laid`);
     checkReading(log);
     assert.deepEqual(await evaluate(() => [window.book.readingAloud, document.querySelectorAll('[data-reading]').length]), [null, 0], 'nothing left marked');
-  }, { timeout: 120_000 });
+  });
 }
