@@ -220,7 +220,7 @@ test('browser: demo "Read aloud" on the picture book plays the cover\'s narratio
   expect(problems).toEqual([]);
 });
 
-test('browser: demo "Read aloud" on the PDF brochure reads with the browser\'s voice: speechSynthesis.speak gets the cover\'s text in the page\'s language, and the toolbar shows its Read button', async ({ page }) => {
+test('browser: demo "Read aloud" on the PDF brochure reads with the browser\'s voice: speechSynthesis.speak gets the cover\'s first line (a sentence an utterance) in the page\'s language, and the toolbar shows its Read button', async ({ page }) => {
   // A browser with one voice (this machine's Chromium has none): speak() records what it is given.
   await page.addInitScript(() => {
     const synth = new EventTarget();
@@ -242,7 +242,9 @@ test('browser: demo "Read aloud" on the PDF brochure reads with the browser\'s v
   await page.click('#read-aloud');
   await page.waitForFunction(() => window.speechSynthesis.spoken.length === 1, null, { timeout: 30_000 });
   const spoken = await page.evaluate(() => ({ text: window.speechSynthesis.spoken[0].text, lang: window.speechSynthesis.spoken[0].lang }));
-  expect(spoken.text).toContain('a PDF shown with pdf.js, curled on a cone');
+  // Read a sentence an utterance, and a PDF's line is a sentence: the cover's title first (this stub
+  // never ends an utterance, so nothing follows it).
+  expect(spoken.text.trim()).toBe('Turning Pages');
   expect(spoken.lang).toBe(await page.evaluate(() => document.documentElement.lang));
   await expect(page.locator('#read-aloud')).toHaveText('Stop');
   await page.click('#read-aloud');
