@@ -48,12 +48,14 @@ const freePort = () => new Promise((resolve, reject) => {
   server.listen(0, '127.0.0.1', () => { const { port } = server.address(); server.close(() => resolve(port)); });
 });
 
-/** A PNG buffer cut to `width` x `height` from its top-left (a window screenshot to the viewport). */
-export function cropPng(buffer, width, height) {
+/** The part of a PNG buffer inside `rect` ({ x, y, width, height } px from its top left), as a PNG buffer. */
+export function cropPng(buffer, { x = 0, y = 0, width, height }) {
   const png = PNG.sync.read(buffer);
-  if (png.width === width && png.height === height) return buffer;
-  const out = new PNG({ width, height });
-  PNG.bitblt(png, out, 0, 0, Math.min(width, png.width), Math.min(height, png.height), 0, 0);
+  const [left, top] = [Math.max(0, Math.round(x)), Math.max(0, Math.round(y))];
+  const [w, h] = [Math.min(Math.round(width), png.width - left), Math.min(Math.round(height), png.height - top)];
+  if (left === 0 && top === 0 && w === png.width && h === png.height) return buffer;
+  const out = new PNG({ width: w, height: h });
+  PNG.bitblt(png, out, left, top, w, h, 0, 0);
   return PNG.sync.write(out);
 }
 
@@ -122,7 +124,7 @@ async function launchFirefox(exe, env, viewport) {
         { type: 'pointerUp', button: 0 }],
     }]),
     key: (name) => page.keyboard.press(name),
-    async screenshot() { return cropPng(Buffer.from(await page.screenshot({ type: 'png' })), size.width, size.height); },
+    async screenshot() { return cropPng(Buffer.from(await page.screenshot({ type: 'png' })), size); },
     async setViewport(width, height) { Object.assign(size, { width, height }); await page.setViewport({ width, height }); },
     close: () => instance.close(),
   };
@@ -188,7 +190,7 @@ async function launchWebKit(exe, env, { width, height, timeoutMs }) {
     doubleClick: (x, y) => { Object.assign(pointer, { x: Math.round(x), y: Math.round(y) }); return act((a) => a.move({ x: pointer.x, y: pointer.y }).doubleClick()); },
     key: (name) => act((a) => a.sendKeys(keys[name] ?? name)),
     // Element screenshots come back with a black band: the window's, cut to the viewport, is right.
-    async screenshot() { return cropPng(Buffer.from(await driver.takeScreenshot(), 'base64'), size.width, size.height); },
+    async screenshot() { return cropPng(Buffer.from(await driver.takeScreenshot(), 'base64'), size); },
     async setViewport(w, h) { Object.assign(size, { width: w, height: h }); await fit(); },
     async close() {
       await driver.quit().catch(() => {});

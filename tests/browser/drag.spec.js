@@ -124,31 +124,31 @@ test('browser: a drag released short of the spine falls back with turncancel and
   expect(await page.evaluate(() => window.book.page)).toBe(3);
 });
 
-test('browser: a quick fling towards the spine completes the turn from a short drag', async ({ page }) => {
+/**
+ * A short stroke from the corner: pressed, four moves `moveMs` apart along the corner's path, let go
+ * `releaseMs` after the last; resolves with the book's turn events once the leaf rests.
+ */
+async function shortStroke(page, { moveMs, releaseMs }) {
   const path = await openBookAndCornerPath(page);
   const mouse = await timedMouse(page);
   await mouse.move(path[0], 0);
   await mouse.down(path[0], 16);
-  // Short: the same four moves 3 s apart fall back (turncancel); a move every 8 ms is a fling.
-  for (let i = 1; i <= 4; i++) await mouse.move(path[i], 8);
-  await mouse.up(path[4], 8);
+  for (let i = 1; i <= 4; i++) await mouse.move(path[i], moveMs);
+  await mouse.up(path[4], releaseMs);
   await page.waitForFunction(() => window.events.some((e) => e.type === 'turned' || e.type === 'turncancel'));
   await page.waitForFunction(() => !window.book.animating);
-  expect(await page.evaluate(() => window.events.map((e) => e.type))).toEqual(['turnstart', 'turned']);
+  return page.evaluate(() => window.events.map((e) => e.type));
+}
+
+test('browser: a quick fling towards the spine completes the turn from a short drag', async ({ page }) => {
+  // Short: the same four moves 3 s apart fall back (turncancel); a move every 8 ms is a fling.
+  expect(await shortStroke(page, { moveMs: 8, releaseMs: 8 })).toEqual(['turnstart', 'turned']);
 });
 
 test('browser: a fling whose moves come 85 ms apart (a slow frame rate coalescing them, or WebKit\'s driver) still completes the turn', async ({ page }) => {
-  const path = await openBookAndCornerPath(page);
-  const mouse = await timedMouse(page);
-  await mouse.move(path[0], 0);
-  await mouse.down(path[0], 16);
   // As WebKitWebDriver delivers a stroke: a move every 85 ms, let go 22 ms after the last one. The
   // velocity window (100 ms) then held only the last move and the release at the same place: a stop.
-  for (let i = 1; i <= 4; i++) await mouse.move(path[i], 85);
-  await mouse.up(path[4], 22);
-  await page.waitForFunction(() => window.events.some((e) => e.type === 'turned' || e.type === 'turncancel'));
-  await page.waitForFunction(() => !window.book.animating);
-  expect(await page.evaluate(() => window.events.map((e) => e.type))).toEqual(['turnstart', 'turned']);
+  expect(await shortStroke(page, { moveMs: 85, releaseMs: 22 })).toEqual(['turnstart', 'turned']);
 });
 
 test('browser: hovering the mouse near a corner lifts it, and moving away lays it flat again', async ({ page }) => {

@@ -1,12 +1,9 @@
 // The word read aloud now, over its page while the page lies flat: an element with `data-reading` (and
 // `data-page`) over each line of the word, under it one with `data-reading="sentence"` over each line of
-// the sentence said (lighter; where a voice reports no words, the only mark), laid over the open pages from the engine's page places as
-// the search hits are (search-hits.js), removed while a leaf moves. While the leaf turns, the mark is
+// the sentence said (lighter; where a voice reports no words, the only mark), laid over the open pages
+// from the engine's page places as the search hits are (search-hits.js), removed while a leaf moves. While the leaf turns, the mark is
 // drawn into the page's image instead (pages/marked-page.js), so it curls with the paper.
-import { READING_FILL } from '../pages/marked-page.js';
-
-/** The sentence read aloud: the word's blue, lighter. */
-export const SENTENCE_FILL = 'rgba(90, 170, 255, 0.18)';
+import { READING_FILL, SENTENCE_FILL } from '../pages/marked-page.js';
 import { markBox } from './search-hits.js';
 
 /**

@@ -7,6 +7,7 @@ const MAX_SIDE = 4096;  // the copy is never larger than this on a side (a textu
 export const HIT_FILL = 'rgba(255, 214, 0, 0.55)';       // a hit: yellow, multiplied (text stays dark)
 export const CURRENT_FILL = 'rgba(255, 140, 0, 0.65)';   // the hit shown now: orange
 export const READING_FILL = 'rgba(90, 170, 255, 0.5)';   // the word read aloud: blue, multiplied
+export const SENTENCE_FILL = 'rgba(90, 170, 255, 0.18)';  // the sentence read aloud: the word's blue, lighter
 
 /**
  * `image` with `marks` drawn over it: a new canvas (the image itself is not changed).
