@@ -37,6 +37,17 @@ const parts = (page) => page.evaluate(() => {
   };
 });
 
+/** Resolves once page `index` stands loaded: told by the book's `progress` event (a page that failed loads again). */
+const pageLoaded = (page, index) => page.evaluate((index) => new Promise((resolve) => {
+  const check = () => {
+    if (window.book.pageState(index).state !== 'loaded') return;
+    window.book.removeEventListener('progress', check);
+    resolve();
+  };
+  window.book.addEventListener('progress', check);
+  check();
+}), index);
+
 /** Canvas pixels (drawn now) of the WebGL book: RGB at viewport points, and dark pixels in a viewport rectangle. */
 const readBack = (page, points, box) => page.evaluate(({ points, box }) => {
   const book = window.book;
@@ -276,6 +287,7 @@ test('browser: an HTML page\'s turn grips lie along its free edge (\'edges\') or
 
 test('browser: no visible jump when a live HTML page gives way to its texture: the same pixels within a small tolerance (screenshots of both)', async ({ page }) => {
   await openHtmlBook(page);
+  await pageLoaded(page, 2);  // on a busy machine its first drawing may come after the time limit, and land then
   const place = await page.evaluate(() => {
     const c = window.book.surface.canvas.getBoundingClientRect();
     const p = window.book.openPagePlaces().find((q) => q.page === 2);
@@ -298,6 +310,31 @@ test('browser: no visible jump when a live HTML page gives way to its texture: t
   // Lighting and gutter shading are on the texture only, and text is filtered: a few levels on average.
   expect(sum / pixels).toBeLessThan(8);
   expect(off / pixels).toBeLessThan(0.08);
+});
+
+test('browser: an HTML page whose drawing outlasts the time limit is heard as a pageerror, shows paper, and takes its drawing when it comes (texture read back)', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  // The page's image is held back (the live <img> and the rasteriser's fetch of it) until the book gives up.
+  let release;
+  const held = new Promise((resolve) => { release = resolve; });
+  await page.route('**/curl-t0-00.png', async (route) => { await held; await route.continue(); });
+  const heard = await page.evaluate(async () => {
+    const html = window.makeHtmlPage();
+    const pages = Array.from({ length: 6 }, (_, i) => (i === 2 ? html : window.makeNumberedPage(i)));
+    let failed;
+    const heard = new Promise((resolve) => { failed = resolve; });
+    window.book = await window.Flipbook.create(window.container, { pages, display: 'double', startPage: 1,
+      on: { pageerror: (e) => failed({ index: e.detail.index, message: e.detail.error.message }) } });
+    return heard;
+  });
+  expect(heard.index).toBe(2);
+  expect(heard.message).toMatch(/drawing HTML page 2 took longer than \d+ s/);
+  expect(await page.evaluate(() => window.book.pageState(2).state)).toBe('failed');
+  release();
+  await pageLoaded(page, 2);
+  const block = await page.evaluate(() => document.querySelector('#form .block').getBoundingClientRect().toJSON());
+  const texture = await readBack(page, [centre(block)]);
+  expect(isRed(texture.colours[0])).toBe(true);
 });
 
 test('browser: a playing <video> on an HTML page goes on playing on its texture while the page turns (its colour changes mid-turn)', async ({ page }) => {

@@ -177,24 +177,42 @@ export class HtmlPages {
     const page = this._pages.get(index);
     this._dirty.delete(index);
     this._resize(this._book.pageSize());
-    const { domToCanvas } = await importRasteriser();
-    const { width, height } = this._size;
     // A slotted child is drawn itself (a clone of the slot would hold nothing); a moved one with its box.
     const target = page.slotted ? page.element : page.content;
+    const late = page.late;
+    page.late = null;
+    if (late) return this._taken(page, target, late);
+    const { domToCanvas } = await importRasteriser();
+    const { width, height } = this._size;
     // Videos are left to us (the rasteriser can wait for ever on a stream): their frames are drawn in.
     // Scaled so that the canvas is the texture's size, and never under a pixel high.
     const scale = Math.max(size.width / width, 1 / height);
     const drawing = domToCanvas(target, { width, height, scale, backgroundColor: PAPER,
       filter: (node) => node.localName !== 'video' });
+    let timedOut = false;
     let timer = 0;
-    const late = new Promise((resolve, reject) => {
-      timer = setTimeout(() => reject(new Error(`conecurl: drawing HTML page ${index} took longer than ${SNAPSHOT_TIMEOUT_MS / 1000} s`)),
-        SNAPSHOT_TIMEOUT_MS);
+    const timeUp = new Promise((resolve, reject) => {
+      timer = setTimeout(() => {
+        timedOut = true;
+        reject(new Error(`conecurl: drawing HTML page ${index} took longer than ${SNAPSHOT_TIMEOUT_MS / 1000} s`));
+      }, SNAPSHOT_TIMEOUT_MS);
     });
-    const canvas = await Promise.race([drawing, late]).finally(() => clearTimeout(timer));
+    // A drawing that comes after the time limit still lands (a busy machine): the failed page loads again
+    // and takes it, unless the content changed meanwhile (then it is drawn anew).
+    drawing.then((canvas) => {
+      if (!timedOut || this._removed || this._pages.get(page.index) !== page || this._dirty.has(page.index)) return;
+      page.late = canvas;
+      this._book.changed(page.index);
+    }, () => {});
+    const canvas = await Promise.race([drawing, timeUp]).finally(() => clearTimeout(timer));
+    return this._taken(page, target, canvas);
+  }
+
+  // The page's snapshot made: where its videos lie is measured and their frames drawn in.
+  _taken(page, target, canvas) {
     // Where its videos lie, in the page's CSS px: their frames are drawn there now and while the page moves.
     const box = target.getBoundingClientRect();
-    const unscale = width / Math.max(1, box.width);
+    const unscale = this._size.width / Math.max(1, box.width);
     page.videos = [...page.element.querySelectorAll('video')].map((video) => {
       const r = video.getBoundingClientRect();
       return { video, rect: { x: (r.left - box.left) * unscale, y: (r.top - box.top) * unscale, width: r.width * unscale, height: r.height * unscale } };
@@ -230,7 +248,7 @@ export class HtmlPages {
     for (const type of CHANGE_EVENTS) element.addEventListener(type, onInput, true);
     const observer = new MutationObserver(() => this._changed(page.index));
     observer.observe(element, { subtree: true, childList: true, attributes: true, characterData: true });
-    const page = { index, element, sheet, content, home, observer, onInput, slotted, slot, grips: [], gripKey: '', canvas: null, videos: [] };
+    const page = { index, element, sheet, content, home, observer, onInput, slotted, slot, grips: [], gripKey: '', canvas: null, videos: [], late: null };
     this._conceal(page);
     this._layer.append(sheet);
     return page;
@@ -283,6 +301,7 @@ export class HtmlPages {
   // (while leaves move the page stays marked, and is drawn when the book lands or before it next moves).
   _changed(index) {
     this._dirty.add(index);
+    if (this._pages.has(index)) this._pages.get(index).late = null;
     this._scheduleRefresh();
   }
 

@@ -105,9 +105,18 @@ export class PageStore {
     return { width: Math.ceil(width * scale), height: Math.ceil(height * scale) };
   }
 
-  /** Page `index` changed (an HTML page's content): its image is made again if it is kept. Resolves when done. */
+  /**
+   * Page `index` changed (an HTML page's content): its image is made again if it is kept, and a page that
+   * had failed is loaded again (where it is wanted). Resolves when done.
+   */
   refresh(index) {
-    if (this._closed || this._cache.stateOf(index) !== 'loaded') return Promise.resolve();
+    if (this._closed) return Promise.resolve();
+    if (this._cache.stateOf(index) === 'failed') {
+      this._cache.setState(index, 'idle');
+      this.update();
+      return this.whenIdle();
+    }
+    if (this._cache.stateOf(index) !== 'loaded') return Promise.resolve();
     return this._reload(index, this.cover(), this.entries[index].src, false, { force: true });
   }
 
