@@ -67,8 +67,9 @@ const callSource = (fn, args) => `(${fn.toString()})(...${JSON.stringify(args)})
  * A browser of `engine` on `display`, with a viewport of `width` x `height` CSS px. Its methods:
  * goto(url), evaluate(fn, ...args) (fn runs in the page; its promise is awaited), waitFor(fn, ...args)
  * (until fn is truthy; no time limit of its own beyond `timeoutMs`), mouse.move/down/up(x, y),
- * click(x, y), doubleClick(x, y), drag(points, { release }) (a move a call), stroke(points, stepMs) (pressed,
- * moved `stepMs` apart and let go in one action sequence: a fling whatever the round trips cost), key(name), screenshot() (PNG of the viewport), setViewport(w, h),
+ * click(x, y), doubleClick(x, y), drag(points, { release }) (a move a call), stroke(points, stepMs, { holdMs })
+ * (pressed, moved `stepMs` apart, held still `holdMs` and let go, in one action sequence: a fling, or a
+ * stop, whatever the round trips cost), key(name), screenshot() (PNG of the viewport), setViewport(w, h),
  * close(). `version` says which browser it is.
  */
 export async function launchEngine(engine, { display, width = 800, height = 600, timeoutMs = 120_000, env = {} } = {}) {
@@ -117,10 +118,11 @@ async function launchFirefox(exe, env, viewport) {
     },
     doubleClick: (x, y) => page.mouse.click(Math.round(x), Math.round(y), { count: 2 }),
     // One action sequence, so the moves are `stepMs` apart by the browser's clock, not by round trips.
-    stroke: (points, stepMs) => page.mainFrame().browsingContext.performActions([{
+    stroke: (points, stepMs, { holdMs = 0 } = {}) => page.mainFrame().browsingContext.performActions([{
       type: 'pointer', id: '__puppeteer_mouse', actions: [
         { type: 'pointerMove', x: Math.round(points[0].x), y: Math.round(points[0].y) }, { type: 'pointerDown', button: 0 },
         ...points.slice(1).map((p) => ({ type: 'pointerMove', x: Math.round(p.x), y: Math.round(p.y), duration: stepMs })),
+        ...(holdMs > 0 ? [{ type: 'pause', duration: holdMs }] : []),
         { type: 'pointerUp', button: 0 }],
     }]),
     key: (name) => page.keyboard.press(name),
@@ -179,14 +181,14 @@ async function launchWebKit(exe, env, { width, height, timeoutMs }) {
       down: () => act((a) => a.press()),
       up: () => act((a) => a.release()),
     },
-    // A sequence of timed moves sometimes never answers in WebKitWebDriver: here each move is a call of
-    // its own (50-200 ms a round trip), so the stroke's speed is the machine's, not `stepMs`.
-    async stroke(points) {
-      const at = (p) => ({ x: Math.round(p.x), y: Math.round(p.y), duration: 0 });
-      await act((a) => a.move(at(points[0])).press());
-      for (const p of points.slice(1)) await act((a) => a.move(at(p)));
-      await act((a) => a.release());
-    },
+    // One action sequence, each move `stepMs` long by the driver's clock: a fling whatever the round trips cost.
+    stroke: (points, stepMs, { holdMs = 0 } = {}) => act((a) => {
+      const at = (p, duration) => ({ x: Math.round(p.x), y: Math.round(p.y), duration });
+      let chain = a.move(at(points[0], 0)).press();
+      for (const p of points.slice(1)) chain = chain.move(at(p, stepMs));
+      if (holdMs > 0) chain = chain.pause(holdMs);
+      return chain.release();
+    }),
     doubleClick: (x, y) => { Object.assign(pointer, { x: Math.round(x), y: Math.round(y) }); return act((a) => a.move({ x: pointer.x, y: pointer.y }).doubleClick()); },
     key: (name) => act((a) => a.sendKeys(keys[name] ?? name)),
     // Element screenshots come back with a black band: the window's, cut to the viewport, is right.

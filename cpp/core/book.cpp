@@ -241,8 +241,8 @@ void Book::releaseHeldTurn(bool complete) {
     turn.held = false;
     turn.progress = from;
     turn.blendFrom = from;
-    turn.thetaOffset = pose.theta - scheduled.theta;
-    turn.apexOffset = pose.apexY - scheduled.apexY;
+    turn.released = true;
+    turn.releasedPose = pose;
     if (!complete) {
         turn.fallingBack = true;
         position_ += turn.direction == TurnDirection::Forward ? -1 : 1;
@@ -259,14 +259,19 @@ CurlParams Book::scheduledPose(int leaf, double progress) const {
 CurlParams Book::poseOf(const Turn& turn) const {
     if (turn.held) return turn.heldPose;
     CurlParams pose = scheduledPose(turn.leaf, std::clamp(turn.progress, 0.0, 1.0));  // a riffle's waiting leaves: < 0
-    if (turn.thetaOffset == 0.0 && turn.apexOffset == 0.0) return pose;
-    // What the pointer left of the pose fades out smoothly by the end the turn is heading to.
+    if (!turn.released) return pose;
+    // The pose the pointer left eases into the schedule's by the end the turn is heading to. Between the
+    // two, not offset from the schedule: an offset taken at release and added later, where the schedule's
+    // cone is tighter, can leave the domain (theta below 0, the apex above the page) and roll the page
+    // into a tube of hundreds of turns, seconds a frame for a software rasteriser.
     const double span = turn.fallingBack ? turn.blendFrom : 1.0 - turn.blendFrom;
     const double left = turn.fallingBack ? turn.progress : 1.0 - turn.progress;
     const double f = span > 0.0 ? std::clamp(left / span, 0.0, 1.0) : 0.0;
     const double w = f * f * (3.0 - 2.0 * f);
-    pose.theta += w * turn.thetaOffset;
-    pose.apexY += w * turn.apexOffset;
+    const CurlParams& from = turn.releasedPose;
+    pose.theta += w * (from.theta - pose.theta);
+    // The apex's distance below the page in log space: near apexes (tight cones) weigh as far ones do.
+    pose.apexY = -std::exp(std::log(-pose.apexY) + w * (std::log(-from.apexY) - std::log(-pose.apexY)));
     return sanitize(pose);
 }
 

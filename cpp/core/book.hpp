@@ -166,9 +166,9 @@ private:
         bool fallingBack = false;   // runs from progress down to 0, then lands where it started
         CurlParams heldPose{};
         CurlParams heldTarget{};
-        double blendFrom = 0.0;     // progress at release; offsets fade from there to the end
-        double thetaOffset = 0.0;   // released pose minus the schedule's, at blendFrom
-        double apexOffset = 0.0;
+        double blendFrom = 0.0;     // progress at release; the released pose fades from there to the end
+        bool released = false;      // let go by the pointer: its pose is eased into the schedule's
+        CurlParams releasedPose{};  // the pose when let go
         int carriedTo = -1;         // riffle: the far end of the leaves carried with this one (-1: none)
         double speed = 1.0;         // progress per turn duration
     };

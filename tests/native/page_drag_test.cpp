@@ -389,6 +389,38 @@ TEST(PageDragNative, AReleasedTurnCarriesOnFromItsPoseWithNoJumpAndLands) {
     }
 }
 
+TEST(PageDragNative, AReleasedTurnStaysBetweenItsReleasedConeAndTheSchedulesNeverRollingIntoATube) {
+    // A fling (a tight cone let go early) once flew through theta 0 and an apex above the page: the leaf
+    // rolled into a tube of hundreds of turns, and llvmpipe took seconds to draw the frame (Firefox, WebKit).
+    const CurlSchedule schedule;
+    const double tightestTheta = std::min(schedule.thetaPhase1, schedule.thetaPhase2);
+    const double nearestApex = std::max(schedule.apexPhase1, schedule.apexPhase2) * kH;
+    int checked = 0;
+    for (bool complete : {true, false}) {
+        for (double theta : {0.08, 0.2, 0.5, 1.0, 1.5}) {
+            for (double apex : {-0.05, -0.3, -1.0, -5.0, -40.0}) {
+                for (double rho : {0.05, 0.3, 1.0, 2.0, 3.0}) {
+                    Book book = makeBook(Binding::Left, Display::Double);
+                    book.jumpTo(2);
+                    ASSERT_TRUE(book.startHeldTurn(TurnDirection::Forward, false));
+                    const CurlParams held{theta, apex * kH, rho};
+                    book.setHeldPose(held);
+                    book.releaseHeldTurn(complete);
+                    for (int steps = 0; book.animating() && steps < 2000; ++steps) {
+                        const CurlParams pose = flyingPose(book);
+                        EXPECT_GE(pose.theta, std::min(theta, tightestTheta) - 1e-9) << theta << " " << apex << " " << rho;
+                        EXPECT_LE(pose.apexY, std::max(apex * kH, nearestApex) + 1e-9) << theta << " " << apex << " " << rho;
+                        ++checked;
+                        book.advance(0.004);
+                    }
+                    EXPECT_FALSE(book.animating());
+                }
+            }
+        }
+    }
+    EXPECT_GT(checked, 1000);
+}
+
 TEST(PageDragNative, TheHoverHintLiftsTheCornerSlightlyAndStartsFlat) {
     Book book = makeBook(Binding::Left, Display::Double);
     const BookCamera camera = bookCamera(book.config(), kCanvasW, kCanvasH);
