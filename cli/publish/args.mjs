@@ -24,6 +24,8 @@ Options:
   --jobs <n>          pages rendered at once, one worker thread each (default: one per core)
   --url <https://...> where the site will live: makes the link-preview image and URL absolute
   --no-download       leave the PDF out of the site (by default readers can download it)
+  --narration <dir>   recorded narration: page-N.mp3 (.m4a .ogg .opus .wav) with page-N.vtt or
+                      page-N.json (word times) for PDF page N; checked, copied, and played by Read aloud
   --debug             show stack traces
   --help              this text
 `;
@@ -57,7 +59,7 @@ export function parsePublishArgs(argv) {
   const options = {
     input: null, out: null, title: null, password: undefined, pages: null, format: DEFAULTS.format,
     quality: DEFAULTS.quality, height: DEFAULTS.height, scale: null, zoom: DEFAULTS.zoom,
-    jobs: os.availableParallelism(), url: null, download: true, debug: false, help: false,
+    jobs: os.availableParallelism(), url: null, download: true, narration: null, debug: false, help: false,
   };
   for (let i = 0; i < argv.length; i++) {
     const arg = argv[i];
@@ -74,6 +76,7 @@ export function parsePublishArgs(argv) {
       case '--out': case '-o': options.out = value(); break;
       case '--title': options.title = value(); break;
       case '--password': options.password = value(); break;
+      case '--narration': options.narration = value(); break;
       case '--pages': options.pages = parsePageList(value()); break;
       case '--format': {
         const format = value();
@@ -108,5 +111,6 @@ export function parsePublishArgs(argv) {
   if (options.out === null) throw usageError(`where to? Add --out <folder>, e.g. conecurl publish ${options.input} --out site`);
   options.input = path.resolve(options.input);
   options.out = path.resolve(options.out);
+  if (options.narration !== null) options.narration = path.resolve(options.narration);
   return options;
 }

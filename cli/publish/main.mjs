@@ -8,6 +8,7 @@ import { pdfOutline } from '../../web/src/document/pdf-document.js';
 import { DEFAULTS, FORMATS, HELP, parsePublishArgs } from './args.mjs';
 import { EXIT, inputError, report, usageError } from './errors.mjs';
 import { indexHtml } from './index-html.mjs';
+import { readNarration } from './narration.mjs';
 import { loadRenderer, openPdf, readPdf } from './open-pdf.mjs';
 import { claimOutFolder, settleOutFolder } from './out-folder.mjs';
 import { progress } from './progress.mjs';
@@ -20,6 +21,8 @@ import { summary } from './summary.mjs';
 
 const BOOK = 'book';
 const RUNTIME = 'conecurl';
+/** The folder, inside book/, of the pages' narration: NNNN.<audio ext> and NNNN.vtt or .json, as the pages' images are numbered. */
+const NARRATION = 'narration';
 
 /** The runtime files, or an input error naming what is missing. */
 function runtime() {
@@ -61,13 +64,15 @@ async function publish(options) {
     const lang = String(info?.Language ?? '').trim();
     const outline = remapOutline(await pdfOutline(doc), numbers);
     const download = options.download ? `${name.replace(/[^\w.-]+/g, '-') || 'book'}.pdf` : null;
+    // Recorded narration, read and checked before anything is written (a bad file changes nothing).
+    const narration = options.narration ? checkNarration(options, count, numbers) : new Map();
 
     // Every file this run may write, so the out folder can be checked before anything is.
     const ext = FORMATS[options.format];
     const kinds = ['pages', 'thumbs', 'text', ...(options.zoom > 0 ? ['zoom'] : [])];
     const pageFiles = numbers.flatMap((_, i) => kinds.map((kind) => `${BOOK}/${pagePath(kind, i, kind === 'text' ? 'json' : ext)}`));
     const fixed = ['index.html', `${BOOK}/${MANIFEST}`, `${BOOK}/${COVER}`, ...(download ? [`${BOOK}/${download}`] : []),
-      ...site.files.map((file) => `${RUNTIME}/${file}`)];
+      ...site.files.map((file) => `${RUNTIME}/${file}`), ...[...narration.values()].flatMap(({ src, words }) => [`${BOOK}/${src}`, `${BOOK}/${words}`])];
     const { previous } = claimOutFolder(options.out, [...fixed, ...pageFiles]);
 
     const bookDir = path.join(options.out, BOOK);
@@ -107,6 +112,16 @@ async function publish(options) {
     });
     const seconds = bar.end();
 
+    // Each rendered page's narration, copied as it was given (a page that failed is not shown: nor its narration).
+    for (const [index, { page, src, words }] of narration) {
+      if (results[index].failed) continue;
+      fs.mkdirSync(path.join(bookDir, NARRATION), { recursive: true });
+      for (const [from, to] of [[page.audio.file, src], [page.words.file, words]]) {
+        fs.copyFileSync(from, path.join(bookDir, to));
+        written.set(`${BOOK}/${to}`, { bytes: fs.statSync(from).size, kind: 'narration' });
+      }
+    }
+
     const pages = [];
     for (const [index, result] of results.entries()) {
       if (result.failed) {
@@ -120,6 +135,7 @@ async function publish(options) {
         // No alt: the reader takes it from the page's text file (most readers read the text layer instead).
         thumbSrc: pagePath('thumbs', index, ext), text,
         links: remapLinks(result.links, numbers),
+        ...(narration.has(index) ? { narration: { src: narration.get(index).src, words: narration.get(index).words } } : {}),
       });
     }
     const manifest = checkManifest(makeManifest({ title, lang, pages, outline, download }), MANIFEST);
@@ -148,6 +164,39 @@ async function publish(options) {
   } finally {
     await doc.loadingTask.destroy();
   }
+}
+
+/**
+ * The narration of the pages published (options.narration's files, checked, with progress): a Map from a
+ * page's index in the site to { page (readNarration's), src, words (their paths in book/) }.
+ */
+function checkNarration(options, pageCount, numbers) {
+  let bar = null;
+  const found = readNarration(options.narration, {
+    pageCount, numbers, input: options.input,
+    onPage: (done, total) => {
+      if (!bar) {
+        process.stdout.write(`Checking the narration of ${total} pages in ${options.narration}\n`);
+        bar = progress(process.stdout, total);
+      }
+      bar.page(true);
+    },
+  });
+  bar?.end();
+  if (found.unpublished.length > 0) {
+    process.stdout.write(`Narration of page${found.unpublished.length > 1 ? 's' : ''} ${found.unpublished.join(', ')} left out with the page (--pages)\n`);
+  }
+  if (found.ignored.length > 0) {
+    process.stdout.write(`Narration folder: passed over ${found.ignored.join(', ')} (not page-N.<audio> or page-N.vtt/.json)\n`);
+  }
+  const byIndex = new Map();
+  numbers.forEach((number, index) => {
+    const page = found.pages.get(number);
+    if (!page) return;
+    const stem = `${NARRATION}/${String(index + 1).padStart(4, '0')}`;
+    byIndex.set(index, { page, src: `${stem}.${page.audio.ext}`, words: `${stem}.${page.words.ext}` });
+  });
+  return byIndex;
 }
 
 /** A failed page's size in page units: from the PDF if it can say, else the size of a page that rendered. */

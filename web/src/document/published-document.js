@@ -40,6 +40,14 @@ export async function openPublished(url) {
     if (page.zoomSrc) entry.zoomSrc = at(page.zoomSrc);
     if (page.thumbSrc) entry.thumbSrc = at(page.thumbSrc);
     if (page.links?.length) entry.links = page.links.map((link) => ({ ...link }));
+    // Recorded narration (`conecurl publish --narration`): its audio and word-times files, beside the pages.
+    if (page.narration !== undefined) {
+      const { src, words } = page.narration ?? {};
+      if (!(typeof src === 'string' && src !== '' && typeof words === 'string' && words !== '')) {
+        throw new Error(`conecurl: ${manifestUrl} is not a conecurl document: 'pages[${index}].narration' needs src and words, the paths of its audio and word-times files`);
+      }
+      entry.narration = { src: at(src), words: at(words) };
+    }
     return entry;
   });
   const texts = new Map();  // page index -> Promise of its record, fetched once
