@@ -48,6 +48,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     controls: 'true, false or an object of parts to show or hide',
     labels: 'an object of texts by key',
     textLayer: 'true or false',
+    readAloudMemory: 'false or a non-empty string (the localStorage key the voice and speed are kept under)',
   };
   const bad = {
     display: [NaN, 'triple', 2, null, ['double']],
@@ -79,6 +80,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     controls: ['yes', 1, null, []],
     labels: [null, 'Suivant', [], { next: 3 }],
     textLayer: ['true', 1, null],
+    readAloudMemory: ['', '  ', true, 0, null],
   };
   assert.deepEqual(Object.keys(bad).sort(), Object.keys(allowed).sort());
   for (const [option, values] of Object.entries(bad)) {
@@ -124,7 +126,7 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses(null, 'options must be an object, got null');
   refuses('pages', 'options must be an object, got "pages"');
   refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, minPageWidth, direction, startPage, duration, schedule, center, hardCovers, "
-    + 'lighting, shadows, gutter, thickness, loadWindow, wasmUrl, label, fallback, hash, autoplay, sound, muted, rememberPage, antialias, resolution, turnArea, on, outline, download, edgeMarks, controls, labels, textLayer)');
+    + 'lighting, shadows, gutter, thickness, loadWindow, wasmUrl, label, fallback, hash, autoplay, sound, muted, rememberPage, antialias, resolution, turnArea, on, outline, download, edgeMarks, controls, labels, textLayer, readAloudMemory)');
   refuses({ pages, antialias: 'yes' }, "option 'antialias' must be 'auto', true or false, got \"yes\"");
   refuses({ pages, startPage: 3 }, "option 'startPage' must be below the page count 3, got 3");
   // A value whose own toString throws or is huge is described, not called.

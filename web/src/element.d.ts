@@ -20,7 +20,7 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
  * schedule, center, hard-covers, lighting, shadows, gutter, hash, sound, muted, fallback
  * ("true"/"false"), thickness ("true"/"false"/a number), autoplay ("true"/"false"/the milliseconds
  * between turns), antialias ("auto"/"true"/"false"), resolution ("auto"/"full"/a number), turn-area ("page"/"edges"/"corners"/"none"),
- * label (the book's name for screen readers), load-window, remember-page, wasm-url, pdf, pdf-worker-src, document (a published book.json),
+ * label (the book's name for screen readers), load-window, remember-page, read-aloud-memory (a key, or "false"), wasm-url, pdf, pdf-worker-src, document (a published book.json),
  * outline (the table of contents as JSON; the property also keeps the array), download (a URL), edge-marks ("true"/"false").
  * controls (bare or "true": the toolbar; its parts as an object through the property), labels (the
  * toolbar's texts as a JSON object, or an object through the property),
@@ -76,6 +76,7 @@ export class ConeFlipbookElement extends HTMLElement {
   sound: FlipbookOptions['sound'];
   muted: FlipbookOptions['muted'];
   rememberPage: FlipbookOptions['rememberPage'];
+  readAloudMemory: FlipbookOptions['readAloudMemory'];
   /** Where a press may turn a page (the turn-area attribute). */
   turnArea: FlipbookOptions['turnArea'];
   /** The book's name for screen readers (the label attribute); default 'Book'. */

@@ -1,7 +1,9 @@
 // Read-aloud as the controller holds it before anything is read: read-aloud/book-reader.js imported
 // at the first readAloud(), and the word read aloud handed to the page images (`marksOn`) once it is.
 // Whether a book can read aloud, and the voices, are answered with read-aloud/speech-engine.js alone
-// (the toolbar asks at once); a book that never asks fetches neither.
+// (the voices put in order by engine/voice-choice.js; the toolbar asks at once); a book that never
+// asks fetches neither.
+import { languageOf } from '../engine/language.js';
 
 /**
  * Read-aloud (read-aloud/book-reader.js, imported at the first readAloud()): readAloud(), readingAloud,
@@ -19,8 +21,15 @@ export function makeReadAloud(controller, book, pageText) {
   return {
     start: async (options) => (await load()).start(options),
     current: () => reader?.current ?? null,
-    /** The browser's voices: [{ name, lang, default, local }]. */
-    voices: async () => (await speechVoices()).map(({ name, lang, default: isDefault, local }) => ({ name, lang, default: isDefault, local })),
+    /**
+     * The browser's voices: [{ name, lang, default, local }], in the order engine/voice-choice.js gives
+     * them for the book's language (its own first, by region; the others after).
+     */
+    voices: async () => {
+      const [voices, { orderVoices }] = await Promise.all([speechVoices(), import('../engine/voice-choice.js')]);
+      const lang = book.document()?.lang || languageOf(book.root);
+      return orderVoices(voices, lang).map(({ name, lang: tag, default: isDefault, local }) => ({ name, lang: tag, default: isDefault, local }));
+    },
     /** Whether readAloud() can read this book: a page has recorded narration, or the browser has a voice. */
     can: async () => book.entries.some((entry) => entry.narration) || (await speechVoices()).length > 0,
     /** The word read aloud, drawn into its page's image while its leaf turns: the marks of page `index`. */

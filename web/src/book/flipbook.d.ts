@@ -79,9 +79,13 @@ export interface SpeechEngine {
 export interface ReadAloudOptions {
   /** What speaks the pages without narration; default the browser's speechSynthesis. */
   engine?: SpeechEngine;
-  /** A voice's name (readAloudVoices() lists them), or a SpeechSynthesisVoice; default the browser's for the language. */
+  /**
+   * A voice's name (readAloudVoices() lists them), or a SpeechSynthesisVoice (kept for the language, see
+   * `readAloudMemory`); default the one kept for each page's language, else the first of readAloudVoices()'s
+   * order for it that is not eSpeak's.
+   */
   voice?: string | SpeechSynthesisVoice;
-  /** Speed, 0.1 to 10 (default 1); for narration, the audio's playbackRate. */
+  /** Speed, 0.1 to 10 (default the one kept for the language, else 1); for narration, the audio's playbackRate. */
   rate?: number;
   /** 0 to 2 (default 1). */
   pitch?: number;
@@ -186,6 +190,11 @@ export interface FlipbookOptions {
   hash?: boolean;
   /** Remember the page in localStorage under this key and open there next time (#page=N wins). */
   rememberPage?: string;
+  /**
+   * Where read-aloud keeps the reader's voice and speed, per language (readAloud()'s, update()'s, the
+   * toolbar's Voice and speed popup's): a localStorage key, default 'conecurl-read-aloud'; false keeps nothing.
+   */
+  readAloudMemory?: string | false;
   /**
    * Turn on its own every `interval` ms (true: 4000), waiting while the pointer is over the book,
    * while it has focus and while the tab is hidden; stop at the last page unless `loop`. Default false.
@@ -392,6 +401,8 @@ export interface ViewerLabels {
   speed?: string;
   /** The voice select's first choice, no voice named: "Browser's default". */
   defaultVoice?: string;
+  /** The popup's language select, shown over more than 300 voices (one language's listed at a time): 'Language'. */
+  voiceLanguage?: string;
 }
 
 /** Where a page stands: not wanted yet ('idle'), loading, loaded, or failed (with why, as `pageerror` said). */
@@ -665,7 +676,12 @@ export class BookController extends EventTarget {
   readAloud(options?: ReadAloudOptions): Promise<ReadAloud>;
   /** The reading aloud now, or null. */
   readonly readingAloud: ReadAloud | null;
-  /** The browser's speech voices ([] where it has none; waits briefly for them to be listed). */
+  /**
+   * The browser's speech voices ([] where it has none; waits briefly for them to be listed), for the
+   * book's language: its voices first, grouped by region (the reader's regions from navigator.languages,
+   * then the book's, then the others A to Z), local before network and eSpeak's last within a region;
+   * the other languages' after, by tag.
+   */
   readAloudVoices(): Promise<ReadAloudVoice[]>;
   /** Whether readAloud() can read this book: a page has narration, or the browser has a voice. */
   canReadAloud(): Promise<boolean>;

@@ -59,6 +59,9 @@ const OPTION_CHECKS = {
   labels: (v) => (isPlainEntry(v) && Object.values(v).every((text) => typeof text === 'string')) || 'an object of texts by key',
   // textlayer (issue 23): a PDF book's selectable text over its flat pages.
   textLayer: BOOLEAN,
+  // voice (issue 37): where read-aloud keeps the reader's voice and speed by language (engine/voice-choice.js).
+  readAloudMemory: (v) => v === false || (typeof v === 'string' && v.trim() !== '')
+    || 'false or a non-empty string (the localStorage key the voice and speed are kept under)',
 };
 /** Every option validateOptions() knows (Flipbook.create also takes a document in place of pages: DOCUMENT_OPTIONS). */
 export const OPTION_NAMES = Object.keys(OPTION_CHECKS);
@@ -75,6 +78,7 @@ export const DEFAULTS = {
   autoplay: false, sound: false, muted: false, antialias: 'auto', resolution: 'auto',
   controls: false,
   textLayer: true,
+  readAloudMemory: 'conecurl-read-aloud',  // engine/voice-choice.js DEFAULT_MEMORY_KEY
 };
 /** Options a live book takes through setOptions(); the others need a new book. */
 export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter', 'thickness', 'resolution', 'display', 'minPageWidth', 'sound', 'muted'];

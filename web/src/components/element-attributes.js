@@ -14,6 +14,8 @@ function parseNumber(raw, attribute) {
 }
 // "true" or a bare attribute: true; "false": false; anything else: undefined.
 const flag = (raw) => (raw === '' || raw === 'true' ? true : raw === 'false' ? false : undefined);
+// read-aloud-memory: "false" keeps nothing; any other text is the key.
+const parseMemory = (raw) => (raw === 'false' ? false : raw);
 function parseBoolean(raw, attribute) {
   const value = flag(raw);
   if (value === undefined) throw attributeError(attribute, '"true" or "false"', raw);
@@ -86,6 +88,7 @@ export const ATTRIBUTES = {
   sound: ['sound', parseBoolean],
   muted: ['muted', parseBoolean],
   'remember-page': ['rememberPage', parseText],
+  'read-aloud-memory': ['readAloudMemory', parseMemory],
   'wasm-url': ['wasmUrl', parseText],
   antialias: ['antialias', parseAntialias],
   resolution: ['resolution', parseResolution],

@@ -5,6 +5,7 @@
 import { Reading } from './reading.js';
 import { pageScript } from './page-script.js';
 import { speechEngine, speechVoices } from './speech-engine.js';
+import { choosingEngine, keepChoice, voiceMemory } from '../engine/voice-choice.js';
 import { createReadingMarkLayer } from '../layers/reading-mark.js';
 import { describeValue } from '../engine/describe-value.js';
 import { languageOf } from '../engine/language.js';
@@ -69,7 +70,11 @@ export class BookReader {
   async start(options) {
     const settings = checkReadOptions(options);
     this._current?.stop();
-    if (!settings.engine) settings.engine = await this._speech(settings);
+    // The voice and speed remembered for the language read, where not given; those given kept (voice-choice.js).
+    const memory = voiceMemory(this._book.settings.readAloudMemory);
+    const langAt = (page) => settings.lang ?? langOf(this._book.entries[page] ?? {}, this._book);
+    if (!settings.engine) settings.engine = await this._speech(settings, memory);
+    keepChoice(memory, langAt(this._book.openPages().find((page) => page >= 0) ?? 0), options, settings);
     this._book.alive();
     this._current?.stop();  // one started meanwhile
     this._layer ??= this._makeLayer();
@@ -84,7 +89,7 @@ export class BookReader {
         return () => this._controller.removeEventListener(type, listener);
       },
       script: (page) => this._script(page),
-      checkUpdate,
+      checkUpdate: (changes) => keepChoice(memory, langAt(reading.page), checkUpdate(changes)),
       turn: () => book.turns().turn('forward'),
       showWord: () => this._layer.update(),
       curlWord: (word) => this._curlWord(word),
@@ -115,7 +120,8 @@ export class BookReader {
 
   // The engine for speech: the browser's, when it has a voice; null where a narrated book can do
   // without (its pages without narration are passed over); an Error where nothing could read.
-  async _speech(settings) {
+  // `memory`: the voices remembered by language, for a reading that names none (voice-choice.js).
+  async _speech(settings, memory) {
     if (settings.voiceObject) return speechEngine();
     const voices = await speechVoices();
     if (voices.length === 0) {
@@ -127,7 +133,7 @@ export class BookReader {
       const names = voices.slice(0, 5).map((v) => `'${v.name}'`).join(', ');
       throw new RangeError(`conecurl: readAloud() has no voice named '${settings.voice}' (this browser has ${voices.length}: ${names}${voices.length > 5 ? ', ...' : ''})`);
     }
-    return speechEngine();
+    return choosingEngine(speechEngine(), voices, memory);
   }
 
   _makeLayer() {

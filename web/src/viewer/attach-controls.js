@@ -160,6 +160,7 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
       anchorOf: () => toolbar.focusTarget('readAloudSettings'),
       voices: () => book.readAloudVoices(),
       lang: () => languageOf(book.element),
+      memory: () => book.options?.readAloudMemory,  // engine/voice-choice.js: undefined is its default key
       changed: (change) => {
         const now = live();
         if (now) quietly(() => now.update(change));

@@ -1,43 +1,40 @@
-// The Read aloud part's "Voice and speed" popup: the reader's voice and speed, kept between readings,
-// in two native selects over the toolbar; what a choice does (readAloud(), update()) is the caller's.
+// The Read aloud part's "Voice and speed" popup: the reader's voice and speed, kept between readings
+// (and, by language, in the book's read-aloud memory), in native selects over the toolbar; what a choice
+// does (readAloud(), update()) is the caller's.
 import { placeByAnchor, popupElement } from './more-menu.js';
+import { languageOfTag, orderVoices, voiceMemory } from '../engine/voice-choice.js';
 
 /** The speeds offered, as `rate` (1: the voice's own). */
 export const SPEEDS = [0.5, 0.75, 1, 1.25, 1.5, 2];
 const EDGE = 4;  // CSS px kept between the popup and the screen's edge
+/**
+ * Up to this many voices are listed in one select, the page's language first; more (Firefox lists
+ * eSpeak's 13,362) and a Language select lists one language's voices at a time.
+ */
+export const LIST_ALL = 300;
 
 let popupCount = 0;
 
-// A language tag's parts, lower case: 'en_US' and 'en-US' are ['en', 'us'].
-const tagParts = (tag) => String(tag ?? '').toLowerCase().replace(/_/g, '-').split('-');
-
 /**
- * The voices with those of `lang` first (the same tag, then the same language: 'en-GB' before
- * 'en-US' for a page in en-GB, both in the browser's order for a page in en); the rest by language.
+ * The voices with those of `lang` first (engine/voice-choice.js orderVoices: the reader's region,
+ * then `lang`'s own, local before network, eSpeak last); the rest by language.
  */
 export function voicesInOrder(voices, lang) {
-  const [want, ...region] = tagParts(lang);
-  const wanted = want ? [want, ...region].join('-') : '';
-  const rank = (voice) => {
-    const parts = tagParts(voice.lang);
-    if (!want || parts[0] !== want) return 2;
-    return parts.join('-') === wanted ? 0 : 1;
-  };
-  return voices.map((voice, at) => ({ voice, at, rank: rank(voice) }))
-    .sort((a, b) => a.rank - b.rank || (a.rank === 2 ? String(a.voice.lang).localeCompare(String(b.voice.lang)) : 0) || a.at - b.at)
-    .map(({ voice }) => voice);
+  return orderVoices(voices, lang);
 }
 
 /**
  * The popup for `button` (Voice and speed, which says aria-expanded). `anchorOf()`: the control it is
  * placed by and gives focus back to (the button, or More while the button is in the menu);
  * `voices()`: a promise of the browser's voices ({ name, lang }); `lang()`: the book's language;
- * `changed(change)`: the reader chose { voice } (undefined: the browser's default) or { rate }.
+ * `changed(change)`: the reader chose { voice } (undefined: the browser's default) or { rate };
+ * `memory()`: the book's `readAloudMemory` (the popup starts from the voice and speed kept there for
+ * `lang()` and keeps each choice there; absent: nothing kept).
  * @returns {{ element: HTMLElement, choice: () => { voice?: string, rate: number },
  *   open: () => Promise<void>, close: (refocus?: boolean) => void, isOpen: () => boolean,
  *   place: () => void, remove: () => void }}
  */
-export function createReadAloudMenu(labels, button, { anchorOf, voices, lang, changed }) {
+export function createReadAloudMenu(labels, button, { anchorOf, voices, lang, changed, memory = () => false }) {
   const id = `conecurl-read-menu-${++popupCount}`;
   const element = popupElement(id, 'dialog', labels.readAloudSettings, 'conecurl-menu conecurl-read-menu');
   button.setAttribute('aria-controls', id);
@@ -56,30 +53,77 @@ export function createReadAloudMenu(labels, button, { anchorOf, voices, lang, ch
     return { row, select };
   };
   const option = (value, text) => Object.assign(document.createElement('option'), { value, textContent: text });
+  const language = field(labels.voiceLanguage, 'language');  // shown for a long list only
+  language.row.hidden = true;
   const voice = field(labels.voice, 'voice');
   const speed = field(labels.speed, 'speed');
-  for (const rate of SPEEDS) speed.select.append(option(String(rate), `${rate}\u00d7`));
+  const speedText = (rate) => `${rate}\u00d7`;
+  for (const rate of SPEEDS) speed.select.append(option(String(rate), speedText(rate)));
   speed.select.value = '1';
-  let chosenVoice = '';
-  let rate = 1;
+  const kept = () => voiceMemory(memory());
+  let chosenVoice = null;  // the voice chosen here ('': the browser's default); null: the one kept, if any
+  let rate = null;         // the speed chosen here; null: the one kept, else 1
+  let ordered = [];        // the voices listed, in order
+  let shownLanguage = null;
+  const currentVoice = () => chosenVoice ?? kept().recall(lang()).voice ?? '';
+  const currentRate = () => rate ?? kept().recall(lang()).rate ?? 1;
   voice.select.addEventListener('change', () => {
     chosenVoice = voice.select.value;
+    kept().remember(lang(), { voice: chosenVoice || undefined });
     changed({ voice: chosenVoice || undefined });
   });
   speed.select.addEventListener('change', () => {
     rate = Number(speed.select.value);
+    kept().remember(lang(), { rate });
     changed({ rate });
+  });
+  language.select.addEventListener('change', () => {
+    shownLanguage = language.select.value;
+    listLanguage();
   });
 
   // The voices as the browser lists them now; none: no Voice select (a narrated book still has Speed).
+  // A long list: the Language select, on the language of the voice chosen (else the page's), and that
+  // language's voices alone, so no more than one language's options are ever made.
   function listVoices(list) {
-    voice.select.replaceChildren(option('', labels.defaultVoice));
-    for (const { name, lang: voiceLang } of voicesInOrder(list, lang())) {
-      voice.select.append(option(name, voiceLang ? `${name} (${voiceLang})` : name));
-    }
-    if (!list.some(({ name }) => name === chosenVoice)) chosenVoice = '';
-    voice.select.value = chosenVoice;
+    ordered = voicesInOrder(list, lang());
+    const now = currentVoice();
+    const long = list.length > LIST_ALL;
+    language.row.hidden = !long;
     voice.row.hidden = list.length === 0;
+    if (long) {
+      const codes = [...new Set(ordered.map((v) => languageOfTag(v.lang)))];
+      let names = null;
+      try { names = new Intl.DisplayNames([lang() || 'en'], { type: 'language' }); } catch { /* the codes alone */ }
+      const nameOf = (code) => {
+        try { return names?.of(code) ?? code; } catch { return code; }
+      };
+      language.select.replaceChildren(...codes.map((code) => option(code, code && nameOf(code) !== code ? `${nameOf(code)} (${code})` : code)));
+      const ofVoice = ordered.find((v) => v.name === now);
+      if (!codes.includes(shownLanguage)) shownLanguage = ofVoice ? languageOfTag(ofVoice.lang) : codes[0];
+      language.select.value = shownLanguage;
+      listLanguage();
+    } else {
+      fillVoices(ordered);
+    }
+    showRate(currentRate());
+  }
+  function listLanguage() {
+    fillVoices(ordered.filter((v) => languageOfTag(v.lang) === shownLanguage));
+  }
+  function fillVoices(list) {
+    voice.select.replaceChildren(option('', labels.defaultVoice), ...list.map(({ name, lang: voiceLang }) => option(name, voiceLang ? `${name} (${voiceLang})` : name)));
+    const now = currentVoice();
+    voice.select.value = list.some(({ name }) => name === now) ? now : '';
+  }
+  // The speed select on `value`, given an option of its own where it is none of SPEEDS (set through the API).
+  function showRate(value) {
+    const text = String(value);
+    if (![...speed.select.options].some((o) => o.value === text)) {
+      const after = [...speed.select.options].find((o) => Number(o.value) > value) ?? null;
+      speed.select.insertBefore(option(text, speedText(value)), after);
+    }
+    speed.select.value = text;
   }
   const selects = () => [voice, speed].filter(({ row }) => !row.hidden).map(({ select }) => select);
 
@@ -113,7 +157,7 @@ export function createReadAloudMenu(labels, button, { anchorOf, voices, lang, ch
     element.hidden = false;
     button.setAttribute('aria-expanded', 'true');
     place();
-    selects()[0]?.focus();
+    (voice.row.hidden ? selects()[0] : voice.select)?.focus();
     element.ownerDocument.addEventListener('pointerdown', onOutside, true);
   }
   function close(refocus = false) {
@@ -150,8 +194,11 @@ export function createReadAloudMenu(labels, button, { anchorOf, voices, lang, ch
 
   return {
     element,
-    /** The reader's choice: { voice (a voice's name; absent for the browser's default), rate }. */
-    choice: () => (chosenVoice ? { voice: chosenVoice, rate } : { rate }),
+    /**
+     * The reader's choice: { voice (a voice's name chosen here; absent for the browser's default, or the
+     * one kept, which readAloud() takes itself), rate (chosen here, else the one kept, else 1) }.
+     */
+    choice: () => (chosenVoice ? { voice: chosenVoice, rate: currentRate() } : { rate: currentRate() }),
     open,
     close,
     isOpen: () => !element.hidden,

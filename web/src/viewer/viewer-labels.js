@@ -35,6 +35,7 @@ export const DEFAULT_LABELS = Object.freeze({
   voice: 'Voice',
   speed: 'Speed',
   defaultVoice: 'Browser\'s default',
+  voiceLanguage: 'Language',
 });
 export const LABEL_KEYS = Object.keys(DEFAULT_LABELS);
 
