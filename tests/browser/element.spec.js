@@ -425,10 +425,10 @@ test('browser: every event a <cone-flipbook> dispatches has the detail fields bo
     await element.insertPages(12, [window.pageUrl(0)]);
     element.setAttribute('shadows', 'maybe');  // refused live: an error event
     await book.whenIdle();  // page 5's load has failed by now (it lies within the load window since next())
-    // Read aloud, the open page given an alt to say, with an engine that says its first word at once:
-    // start, page, word, pause, resume, end.
+    // Read aloud, the open page given an alt to say, with an engine that begins its sentence and says its
+    // first word at once: start, page, sentence, word, pause, resume, end.
     await element.replacePage(book.openPages[0], { src: window.pageUrl(0), alt: 'Hello there' });
-    const engine = { speak: (text, { onWord }) => { onWord(0, text.length); return { pause() {}, resume() {}, cancel() {} }; } };
+    const engine = { speak: (text, { onSentence, onWord }) => { onSentence(0, text.length); onWord(0, text.length); return { pause() {}, resume() {}, cancel() {} }; } };
     const saying = new Promise((resolve) => element.addEventListener('readaloudword', resolve, { once: true }));
     const reading = await book.readAloud({ engine });
     await saying;
@@ -446,7 +446,7 @@ test('browser: every event a <cone-flipbook> dispatches has the detail fields bo
   });
   expect(result.wrong).toEqual([]);
   expect(result.types).toEqual(expect.arrayContaining(['ready', 'progress', 'pageerror', 'turnstart', 'turned', 'zoom', 'resize', 'pageschange', 'error',
-    'readaloudstart', 'readaloudpage', 'readaloudword', 'readaloudpause', 'readaloudresume', 'readaloudend']));
+    'readaloudstart', 'readaloudpage', 'readaloudsentence', 'readaloudword', 'readaloudpause', 'readaloudresume', 'readaloudend']));
   expect(result.landedAt).toBe(9);  // the spread's first page
   expect(result.far).toEqual([['turnstart', 'forward', true], ['turned', 9]]);
 });

@@ -38,6 +38,10 @@ export const EVENT_DETAILS = {
   readaloudstart: ['page', 'lang', 'voice'],
   readaloudpage: ['page', 'source'],
   readaloudword: ['page', 'index', 'text', 'rects'],
+  // a sentence (or a long sentence's clause) begins: its first and last word's indices, one rect a line
+  readaloudsentence: ['page', 'from', 'to', 'text', 'rects'],
+  // the browser listed its voices after canReadAloud() had answered false: ask again
+  readaloudvoices: ['count'],
   readaloudpause: ['page'],
   readaloudresume: ['page'],
   readaloudend: ['reason', 'page', 'error?'],

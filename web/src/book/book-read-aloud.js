@@ -17,7 +17,18 @@ export function makeReadAloud(controller, book, pageText) {
     book.alive();
     return (reader ??= new BookReader(controller, book, pageText));
   }));
-  const speechVoices = async () => (await import('../read-aloud/speech-engine.js')).speechVoices();
+  const speech = () => import('../read-aloud/speech-engine.js');
+  const speechVoices = async () => (await speech()).speechVoices();
+  // Voices listed after canReadAloud() answered false: `readaloudvoices` tells the toolbar (and the host).
+  let stopListening = null;
+  const listenForVoices = async () => {
+    const { whenVoicesArrive } = await speech();
+    if (stopListening || book.destroyed()) return;
+    stopListening = whenVoicesArrive((count) => {
+      stopListening = null;
+      if (!book.destroyed()) book.emit('readaloudvoices', { count });
+    });
+  };
   return {
     start: async (options) => (await load()).start(options),
     current: () => reader?.current ?? null,
@@ -31,9 +42,18 @@ export function makeReadAloud(controller, book, pageText) {
       return orderVoices(voices, lang).map(({ name, lang: tag, default: isDefault, local }) => ({ name, lang: tag, default: isDefault, local }));
     },
     /** Whether readAloud() can read this book: a page has recorded narration, or the browser has a voice. */
-    can: async () => book.entries.some((entry) => entry.narration) || (await speechVoices()).length > 0,
+    can: async () => {
+      if (book.entries.some((entry) => entry.narration)) return true;
+      const can = (await speechVoices()).length > 0;
+      if (!can) await listenForVoices();
+      return can;
+    },
     /** The word read aloud, drawn into its page's image while its leaf turns: the marks of page `index`. */
     marksOn: (index) => reader?.marksOn(index) ?? [],
-    stop: () => reader?.stop(),
+    stop: () => {
+      stopListening?.();
+      stopListening = null;
+      reader?.stop();
+    },
   };
 }

@@ -507,6 +507,10 @@ export interface FlipbookEventMap {
   readaloudpage: CustomEvent<{ page: number; source: 'narration' | 'text' | 'alt' | 'none' }>;
   /** A word is being said: marked on its page (`data-reading` over the flat page, in its image while it turns). */
   readaloudword: CustomEvent<ReadAloudWord>;
+  /** A sentence (a long one's clause) begins: marked on its page (`data-reading="sentence"`), the word mark on top where the voice reports words. */
+  readaloudsentence: CustomEvent<{ page: number; from: number; to: number; text: string; rects: Array<[number, number, number, number]> }>;
+  /** The browser listed its voices after `canReadAloud()` had answered false: it may answer true now. */
+  readaloudvoices: CustomEvent<{ count: number }>;
   readaloudpause: CustomEvent<{ page: number }>;
   readaloudresume: CustomEvent<{ page: number }>;
   /** The reading ended, and why. */

@@ -1,4 +1,4 @@
-// Search hits (and the word read aloud) drawn into a page's image: a copy of the image with highlight rectangles multiplied over
+// Search hits (and the word and sentence read aloud) drawn into a page's image: a copy of the image with highlight rectangles multiplied over
 // it, handed to the surface in place of the clean image while the page has marks. So the marks are in
 // the page's texture and curl with the paper through a turn; the clean image is kept by the page store
 // and handed over again when the marks go.
@@ -12,7 +12,7 @@ export const SENTENCE_FILL = 'rgba(90, 170, 255, 0.18)';  // the sentence read a
 /**
  * `image` with `marks` drawn over it: a new canvas (the image itself is not changed).
  * @param {CanvasImageSource|ImageData} image
- * @param {Array<{ rect: number[], current?: boolean, reading?: boolean }>} marks  rects [x, y, w, h] as fractions of the page
+ * @param {Array<{ rect: number[], current?: boolean, reading?: boolean, sentence?: boolean }>} marks  rects [x, y, w, h] as fractions of the page
  */
 export function markedPageImage(image, marks) {
   const width = image.naturalWidth || image.width;
@@ -33,8 +33,8 @@ export function markedPageImage(image, marks) {
   }
   g.globalCompositeOperation = 'multiply';
   const pad = Math.max(1, canvas.height * 0.002);
-  for (const { rect: [x, y, w, h], current, reading } of marks) {
-    g.fillStyle = reading ? READING_FILL : current ? CURRENT_FILL : HIT_FILL;
+  for (const { rect: [x, y, w, h], current, reading, sentence } of marks) {
+    g.fillStyle = reading ? READING_FILL : sentence ? SENTENCE_FILL : current ? CURRENT_FILL : HIT_FILL;
     g.fillRect(x * canvas.width - pad, y * canvas.height - pad, w * canvas.width + 2 * pad, h * canvas.height + 2 * pad);
   }
   return canvas;

@@ -47,8 +47,8 @@ function lineRects(rects) {
 export class Reading {
   /**
    * @param {object} book  what a reading needs of the book (book-reader.js): openPages(), pageCount(),
-   *   emit(type, detail), on(type, listener) -> off, script(page), checkUpdate(changes), turn(), showWord(word|null),
-   *   curlWord(word|null) -> Promise, ended(reading)
+   *   emit(type, detail), on(type, listener) -> off, script(page), checkUpdate(changes), turn(), show(page) -> Promise, showWord(word|null),
+   *   curlMarks({ word, sentence }|null) -> Promise, ended(reading)
    * @param {{ engine: object|null, voice?: string, rate: number, pitch: number, lang?: string, follow: boolean }} settings
    * @param {object} control  filled in with end(reason): how its maker ends it (the book destroyed)
    */
@@ -65,6 +65,7 @@ export class Reading {
     this._own = null;       // our own turn in flight: { started: boolean }
     this._heldAt = null;    // where a reader's drag found the reading: { page, index }, to go on there if it falls back
     this._onCancel = null;  // resolves the page being said when the loop moves on (_silence)
+    this._announced = -1;   // the page `readaloudpage` last told of: told once a page, not at each restart
     this.finished = new Promise((resolve) => { this._finish = resolve; });
     control.end = (reason) => this._end(reason);
     this._off = [
@@ -72,6 +73,7 @@ export class Reading {
       book.on('turned', () => this._onTurned()),
       book.on('turncancel', () => this._onTurnCancel()),
       book.on('pageschange', () => this._end('pageschange')),
+      book.on('displaychange', () => this._onDisplayChange()),
     ];
   }
 
@@ -147,7 +149,10 @@ export class Reading {
           const script = await this._book.script(pages[at]);
           if (gone()) return;
           this._page = pages[at];
-          this._book.emit('readaloudpage', { page: this._page, source: script.kind });
+          if (this._page !== this._announced) {
+            this._announced = this._page;
+            this._book.emit('readaloudpage', { page: this._page, source: script.kind });
+          }
           await this._say(script, from, gone);
           if (gone()) return;
           from = 0;
@@ -156,14 +161,14 @@ export class Reading {
         if (last >= this._book.pageCount() - 1) return this._end('finished');
         if (this._held) await this._held.wait;
         if (gone()) return;
-        // The last word said stays marked on the leaf as it curls: drawn into its page's image.
-        await this._book.curlWord(this._word);
+        // The last word and sentence said stay marked on the leaf as it curls: drawn into its page's image.
+        await this._book.curlMarks({ word: this._word, sentence: this._sentence });
         if (gone()) return;
         this._own = { started: false };
         const turned = await this._book.turn().catch(() => false);
         this._own = null;
         if (gone()) return;
-        await this._book.curlWord(null);
+        await this._book.curlMarks(null);
         if (!turned) return this._end('finished');
         pages = this._book.openPages();
         at = 0;
@@ -227,9 +232,12 @@ export class Reading {
     if (from < 0) return;
     let to = from;
     while (to + 1 < script.words.length && script.words[to + 1].start < end) to++;
-    this._sentence = { page: script.page, from, to, rects: lineRects(script.words.slice(from, to + 1).flatMap((w) => w.rects)) };
+    const words = script.words.slice(from, to + 1);
+    this._sentence = { page: script.page, from, to, rects: lineRects(words.flatMap((w) => w.rects)) };
     this._word = null;
     this._book.showWord(null);
+    this._book.emit('readaloudsentence', { page: script.page, from, to, text: words.map((w) => w.text).join(' '),
+      rects: this._sentence.rects.map((r) => r.slice()) });
   }
 
   // Where the voice is: the word said, else the first word of the sentence said ({ page, index }), or null.
@@ -245,6 +253,26 @@ export class Reading {
     speaker?.cancel();
     this._onCancel?.();
     this._onCancel = null;
+  }
+
+  // The display switched (a phone rotated, display 'auto'): other pages are open; planned again from the
+  // word being read, on its page where it is still open, else from the first open page.
+  _onDisplayChange() {
+    if (this._state !== 'reading' && this._state !== 'paused') return;
+    if (this._own) return;  // our own turn in flight: the loop reads the open pages when it lands
+    const at = this._at() ?? { page: this._page, index: 0 };
+    if (this._book.openPages().includes(at.page)) {
+      this._run(at.page, at.index);
+      return;
+    }
+    // The page being read is no longer open (a spread became one page): shown at once, read on there.
+    const run = ++this._runs;
+    this._silence();
+    this._own = { started: true };
+    Promise.resolve(this._book.show(at.page)).catch(() => {}).then(() => {
+      this._own = null;
+      if (run === this._runs && this._state !== 'ended') this._run(at.page, at.index);
+    });
   }
 
   // ---- a reader's turns ------------------------------------------------------------------------
@@ -305,7 +333,7 @@ export class Reading {
     this._sentence = null;
     for (const off of this._off) off();
     this._book.showWord(null);
-    this._book.curlWord(null).catch(() => {});
+    this._book.curlMarks(null).catch(() => {});
     const detail = { reason, page: this._page, ...(error ? { error } : {}) };
     this._book.ended(this);
     this._book.emit('readaloudend', detail);

@@ -187,12 +187,16 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
     };
     for (const [type, listener] of Object.entries(events)) book.addEventListener(type, listener);
     let removed = false;
+    // Shown once the book can read aloud: asked now, and again when voices come late (`readaloudvoices`).
+    const ask = () => Promise.resolve().then(() => book.canReadAloud()).then((can) => {
+      if (can !== true || removed) return;
+      toolbar.setPresent('readAloud', true);
+      showNow();
+    }, () => {});
     if (typeof book.canReadAloud === 'function') {
-      Promise.resolve().then(() => book.canReadAloud()).then((can) => {
-        if (can !== true || removed) return;
-        toolbar.setPresent('readAloud', true);
-        showNow();
-      }, () => {});
+      events.readaloudvoices = ask;
+      book.addEventListener('readaloudvoices', ask);
+      ask();
     }
     return {
       menu,
