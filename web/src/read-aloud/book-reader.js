@@ -6,12 +6,14 @@ import { Reading } from './reading.js';
 import { pageScript } from './page-script.js';
 import { speechEngine, speechVoices } from './speech-engine.js';
 import { choosingEngine, keepChoice, voiceMemory } from '../engine/voice-choice.js';
+import { showInMediaSession } from './media-session.js';
 import { createReadingMarkLayer } from '../layers/reading-mark.js';
 import { describeValue } from '../engine/describe-value.js';
 import { languageOf } from '../engine/language.js';
 
 const OPTION_KEYS = ['engine', 'voice', 'rate', 'pitch', 'lang', 'follow'];
 const RANGES = { rate: [0.1, 10], pitch: [0, 2] };
+const COVER_WIDTH = 512;  // the cover's thumbnail for the media controls, in pixels, where it has no URL
 
 /** readAloud()'s options checked, defaults filled in; a TypeError or RangeError names what is wrong (and `call`). */
 export function checkReadOptions(options = {}, call = 'readAloud()') {
@@ -80,6 +82,7 @@ export class BookReader {
     this._layer ??= this._makeLayer();
     const book = this._book;
     const control = {};
+    let endMediaSession = () => {};
     const reading = new Reading({
       openPages: () => book.openPages().filter((page) => page >= 0),
       pageCount: book.pageCount,
@@ -90,10 +93,11 @@ export class BookReader {
       },
       script: (page) => this._script(page),
       checkUpdate: (changes) => keepChoice(memory, langAt(reading.page), checkUpdate(changes)),
-      turn: () => book.turns().turn('forward'),
+      turn: () => this._turn('forward'),
       showWord: () => this._layer.update(),
       curlWord: (word) => this._curlWord(word),
       ended: (ended) => {
+        endMediaSession();
         if (this._current !== ended) return;
         this._current = null;
         this._end = null;
@@ -103,6 +107,7 @@ export class BookReader {
     this._current = reading;
     this._end = control.end;
     book.duckSound(true);
+    endMediaSession = this._mediaSession(reading, settings);
     reading.start();
     return reading;
   }
@@ -136,6 +141,54 @@ export class BookReader {
     return choosingEngine(speechEngine(), voices, memory);
   }
 
+  // The reading on lock screens, headphones and media keys (media-session.js): next and previous turn
+  // the book and read on from the new page, as `follow` has a reader's turn do, whatever its own says.
+  _mediaSession(reading, settings) {
+    return showInMediaSession(reading, {
+      title: titleOf(this._book),
+      cover: () => this._cover(),
+      on: (type, listener) => this._on(type, listener),
+      turn: (direction) => {
+        if (reading.state === 'ended') return;
+        const follow = settings.follow;
+        settings.follow = true;
+        this._turn(direction).catch(() => {}).finally(() => { settings.follow = follow; });
+      },
+    });
+  }
+
+  // One leaf turned for the reading (or a media key): animated, but at once while the page is hidden
+  // (screen locked, tab in the background), where no animation frame runs and a moving leaf never lands.
+  // Resolves whether it turned.
+  async _turn(direction) {
+    const book = this._book;
+    if (globalThis.document?.visibilityState !== 'hidden') return book.turns().turn(direction);
+    const open = book.openPages().filter((page) => page >= 0);
+    const page = direction === 'forward' ? Math.max(...open) + 1 : Math.min(...open) - 1;
+    if (page < 0 || page >= book.pageCount()) return false;
+    await book.turns().flip(page, false);  // a jump: `turned`, no `turnstart`
+    return true;
+  }
+
+  // The cover's image for the media controls: page 0's URL where it is one, else its thumbnail as a
+  // blob URL (media-session.js lets it go); none for an HTML page.
+  async _cover() {
+    const entry = this._book.entries[0];
+    if (!entry || entry.html) return null;
+    const source = entry.thumbSrc ?? entry.src;
+    if (typeof source === 'string') return new URL(source, globalThis.document.baseURI).href;
+    if (typeof HTMLImageElement !== 'undefined' && source instanceof HTMLImageElement && source.currentSrc) return source.currentSrc;
+    const canvas = await this._controller.pageThumbnail(0, { width: COVER_WIDTH });
+    const blob = await new Promise((resolve) => canvas.toBlob(resolve, 'image/png'));
+    return blob ? URL.createObjectURL(blob) : null;
+  }
+
+  // Listens to the book's `type` events; returns the way to stop.
+  _on(type, listener) {
+    this._controller.addEventListener(type, listener);
+    return () => this._controller.removeEventListener(type, listener);
+  }
+
   _makeLayer() {
     const layer = createReadingMarkLayer(this._book.root, () => {
       const { sentence = null, word = null } = this._current ?? {};
@@ -164,6 +217,13 @@ export class BookReader {
     if (this._book.destroyed()) return;
     await Promise.all([...pages].map((page) => this._book.store().remark(page).catch(() => {})));
   }
+}
+
+// The book's name on the media controls: its label (a PDF's or a published document's title unless one
+// was given), else, where the label is its default 'Book' (book/options.js), the web page's title.
+function titleOf(book) {
+  const { label } = book.settings;
+  return (label !== 'Book' && label) || globalThis.document?.title || label;
 }
 
 // A page's language: an HTML page's own (its element's nearest lang), else the document's, else the
