@@ -3,6 +3,7 @@
 // book's title and cover) and playback state, and clears them all when it ends; calling the handlers
 // pauses, resumes, stops and turns the book, reading on from the new page. While the page is hidden
 // (screen locked, tab in the background: no animation frames) the reading's turn lands at once.
+// Recorded narration adds its audio's position and seekto.
 // Chromium has no getter for action handlers: the page records what is set before the book is made.
 // The speech is an engine the test drives (readAloud({ engine })), as in read-aloud.spec.js.
 import { test, expect } from '@playwright/test';
@@ -164,4 +165,60 @@ test('browser: while the page is hidden (no animation frames run) a reading at t
     window.book.readingAloud.stop();
   });
   expect(await page.evaluate(() => window.events.filter((e) => e.type === 'readaloudend').map((e) => e.reason))).toEqual(['stopped']);
+});
+
+test('browser: recorded narration puts its audio\'s position in the Media Session and seekto moves the audio and the word marked; the reading\'s end clears both', async ({ page }) => {
+  // No speech voice: the narrated cover plays; setPositionState recorded as setActionHandler is.
+  await page.addInitScript(() => {
+    const synth = new EventTarget();
+    Object.assign(synth, { getVoices: () => [], speak() { throw new Error('no voice'); }, cancel() {}, pause() {}, resume() {} });
+    Object.defineProperty(window, 'speechSynthesis', { value: synth, configurable: true });
+    window.positions = [];
+    const session = navigator.mediaSession;
+    const set = session.setPositionState.bind(session);
+    Object.defineProperty(session, 'setPositionState', { configurable: true, value: (state) => { window.positions.push(state ?? null); set(state); } });
+  });
+  await openBook(page);
+  await page.evaluate(async () => {
+    const { narrate } = await import('/web/demo/story-voice.js');
+    const said = narrate('Once upon a time there was a paper boat'.split(' '), { seed: 1 });
+    const src = URL.createObjectURL(new Blob([said.wav], { type: 'audio/wav' }));
+    const words = said.words.map((w, i) => ({ ...w, rect: [0.1 + 0.2 * (i % 4), 0.2 + 0.1 * Math.floor(i / 4), 0.15, 0.06] }));
+    const pages = [{ src: window.makeNumberedPage(0), narration: { src, words } }, window.makeNumberedPage(1), window.makeNumberedPage(2)];
+    window.book.destroy();
+    window.book = await window.Flipbook.create(document.getElementById('container'), { pages, display: 'double', duration: 300 });
+    await window.book.whenIdle();
+    window.narrationWords = words;
+    window.firstWord = new Promise((resolve) => window.book.addEventListener('readaloudword', resolve, { once: true }));
+    // From a click, as a reader's would be (the browser plays audio after a gesture).
+    const button = document.createElement('button');
+    button.id = 'read';
+    button.textContent = 'Read';
+    button.addEventListener('click', () => { window.book.readAloud(); });
+    document.body.append(button);
+  });
+  await page.click('#read');
+  await page.evaluate(() => window.firstWord);
+  await page.evaluate(() => window.mediaActions.pause());
+  const paused = await page.evaluate(() => ({ seekto: typeof window.mediaActions.seekto, state: navigator.mediaSession.playbackState, last: window.positions.at(-1), duration: window.book.readingAloud.audio.duration }));
+  expect(paused.seekto).toBe('function');
+  expect(paused.state).toBe('paused');
+  expect(paused.last).toMatchObject({ duration: paused.duration, playbackRate: 1 });
+  // seekto: the audio goes to the fourth word's time, and that word is marked.
+  const seeked = await page.evaluate(async () => {
+    const reading = window.book.readingAloud;
+    const { audio } = reading;
+    const time = (window.narrationWords[3].start + window.narrationWords[3].end) / 2;
+    const done = new Promise((resolve) => audio.addEventListener('seeked', resolve, { once: true }));
+    window.mediaActions.seekto({ action: 'seekto', seekTime: time });
+    await done;
+    return { word: reading.word.index, time, position: window.positions.at(-1)?.position, current: audio.currentTime };
+  });
+  expect(seeked.word).toBe(3);
+  expect(Math.abs(seeked.current - seeked.time)).toBeLessThan(0.01);
+  expect(Math.abs(seeked.position - seeked.time)).toBeLessThan(0.01);
+  // Stopped: seekto cleared, the position cleared.
+  await page.evaluate(() => window.mediaActions.stop());
+  expect(await page.evaluate(() => ({ seekto: window.mediaActions.seekto, last: window.positions.at(-1), state: navigator.mediaSession.playbackState })))
+    .toEqual({ seekto: null, last: null, state: 'none' });
 });
