@@ -60,7 +60,7 @@ export class BookReader {
     this._book = book;
     this._pageText = pageText;
     this._current = null;
-    this._curl = null;  // the word drawn into its page's image while a leaf turns: { page, rects }
+    this._curl = null;  // the marks drawn into their page's image while a leaf turns: { page, marks }
     this._layer = null;
     this._end = null;   // ends the reading now (Reading's control)
   }
@@ -95,7 +95,8 @@ export class BookReader {
       checkUpdate: (changes) => keepChoice(memory, langAt(reading.page), checkUpdate(changes)),
       turn: () => this._turn('forward'),
       showWord: () => this._layer.update(),
-      curlWord: (word) => this._curlWord(word),
+      show: (page) => book.turns().flip(page, false),  // the page being read, shown at once (a display switch)
+      curlMarks: (marks) => this._curlMarks(marks),
       ended: (ended) => {
         endMediaSession();
         if (this._current !== ended) return;
@@ -112,9 +113,12 @@ export class BookReader {
     return reading;
   }
 
-  /** The word marks page `index`'s image gets while a leaf turns (page-store.js `decorate`): [] or one mark a line. */
+  /**
+   * The marks page `index`'s image gets while a leaf turns (page-store.js `decorate`): [], or the sentence's
+   * ({ rect, sentence: true }, one a line) and the word's ({ rect, reading: true }).
+   */
   marksOn(index) {
-    return this._curl?.page === index ? this._curl.rects.map((rect) => ({ rect, reading: true })) : [];
+    return this._curl?.page === index ? this._curl.marks.map((mark) => ({ ...mark, rect: mark.rect.slice() })) : [];
   }
 
   /** The book goes: the reading ends (`readaloudend` with reason 'destroyed'), the mark goes. */
@@ -209,13 +213,18 @@ export class BookReader {
     });
   }
 
-  // The word drawn into (or, null, taken out of) its page's image for a turn; resolves once handed over.
-  async _curlWord(word) {
+  // The word and the sentence drawn into (or, null, taken out of) their page's image for a turn; resolves
+  // once handed over.
+  async _curlMarks(marks) {
     const before = this._curl;
-    this._curl = word && word.rects.length > 0 ? { page: word.page, rects: word.rects } : null;
-    const pages = new Set([before?.page, this._curl?.page].filter((page) => page !== undefined));
+    const { word = null, sentence = null } = marks ?? {};
+    const page = word?.page ?? sentence?.page;
+    const rects = [...(sentence && sentence.page === page ? sentence.rects.map((rect) => ({ rect, sentence: true })) : []),
+      ...(word ? word.rects.map((rect) => ({ rect, reading: true })) : [])];
+    this._curl = rects.length > 0 ? { page, marks: rects } : null;
+    const pages = new Set([before?.page, this._curl?.page].filter((p) => p !== undefined));
     if (this._book.destroyed()) return;
-    await Promise.all([...pages].map((page) => this._book.store().remark(page).catch(() => {})));
+    await Promise.all([...pages].map((p) => this._book.store().remark(p).catch(() => {})));
   }
 }
 
