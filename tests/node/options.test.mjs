@@ -41,7 +41,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     rememberPage: 'a non-empty string (the key it is kept under)',
     antialias: "'auto', true or false",
     resolution: "'auto', 'full' or a positive number of device pixels per CSS pixel",
-    on: 'an object of listeners by event name (ready, progress, pageerror, turnstart, turned, turncancel, resize, zoom, sharpened, link, pageschange, error, searchchange, fullscreenchange, download, print, passagelink, displaychange, middletap, readaloudstart, readaloudpage, readaloudword, readaloudpause, readaloudresume, readaloudend)',
+    on: 'an object of listeners by event name (ready, progress, pageerror, turnstart, turned, turncancel, resize, zoom, sharpened, link, pageschange, error, searchchange, fullscreenchange, download, print, passagelink, displaychange, middletap, readaloudstart, readaloudpage, readaloudword, readaloudsentence, readaloudvoices, readaloudpause, readaloudresume, readaloudend)',
     outline: 'an array of { title, page, children? }',
     download: 'a URL string',
     // viewer (issue 23): the shape here; the part and label names are the viewer's (viewer-options.test.mjs)

@@ -32,10 +32,13 @@ export interface FlipbookEventProps {
   onDisplayChange?: (event: FlipbookEventMap['displaychange']) => void;
   /** A tap or click on the middle of the book, which turns nothing (a reader's bar can come back on it). */
   onMiddleTap?: (event: FlipbookEventMap['middletap']) => void;
-  /** Reading aloud started (readAloud()), moved to a page, said a word, paused, resumed or ended. */
+  /** Reading aloud started (readAloud()), moved to a page, said a word or began a sentence, paused, resumed or ended. */
   onReadAloudStart?: (event: FlipbookEventMap['readaloudstart']) => void;
   onReadAloudPage?: (event: FlipbookEventMap['readaloudpage']) => void;
   onReadAloudWord?: (event: FlipbookEventMap['readaloudword']) => void;
+  onReadAloudSentence?: (event: FlipbookEventMap['readaloudsentence']) => void;
+  /** Voices were listed after canReadAloud() answered false: it may answer true now. */
+  onReadAloudVoices?: (event: FlipbookEventMap['readaloudvoices']) => void;
   onReadAloudPause?: (event: FlipbookEventMap['readaloudpause']) => void;
   onReadAloudResume?: (event: FlipbookEventMap['readaloudresume']) => void;
   onReadAloudEnd?: (event: FlipbookEventMap['readaloudend']) => void;

@@ -18,7 +18,7 @@ const HANDLER_WORDS = {
   pageerror: 'PageError', turnstart: 'TurnStart', turncancel: 'TurnCancel', pageschange: 'PagesChange',
   searchchange: 'SearchChange', fullscreenchange: 'FullscreenChange', passagelink: 'PassageLink',
   displaychange: 'DisplayChange', middletap: 'MiddleTap', readaloudstart: 'ReadAloudStart', readaloudpage: 'ReadAloudPage',
-  readaloudword: 'ReadAloudWord', readaloudpause: 'ReadAloudPause', readaloudresume: 'ReadAloudResume', readaloudend: 'ReadAloudEnd',
+  readaloudword: 'ReadAloudWord', readaloudsentence: 'ReadAloudSentence', readaloudvoices: 'ReadAloudVoices', readaloudpause: 'ReadAloudPause', readaloudresume: 'ReadAloudResume', readaloudend: 'ReadAloudEnd',
 };
 /** 'turned' -> 'onTurned', 'pageerror' -> 'onPageError', ... for every book event. */
 export const EVENT_HANDLERS = Object.fromEntries(BOOK_EVENTS.map((type) => [

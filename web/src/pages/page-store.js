@@ -105,19 +105,15 @@ export class PageStore {
     return { width: Math.ceil(width * scale), height: Math.ceil(height * scale) };
   }
 
-  /**
-   * Page `index` changed (an HTML page's content): its image is made again if it is kept, and a page that
-   * had failed is loaded again (where it is wanted). Resolves when done.
-   */
+  /** Page `index` changed (an HTML page's content): its kept image made again, a failed page loaded again if wanted. */
   refresh(index) {
-    if (this._closed) return Promise.resolve();
-    if (this._cache.stateOf(index) === 'failed') {
+    const state = this._closed ? 'closed' : this._cache.stateOf(index);
+    if (state === 'failed') {
       this._cache.setState(index, 'idle');
       this.update();
       return this.whenIdle();
     }
-    if (this._cache.stateOf(index) !== 'loaded') return Promise.resolve();
-    return this._reload(index, this.cover(), this.entries[index].src, false, { force: true });
+    return state === 'loaded' ? this._reload(index, this.cover(), this.entries[index].src, false, { force: true }) : Promise.resolve();
   }
 
   /**
@@ -281,10 +277,7 @@ export class PageStore {
     }
   }
 
-  _keepNatural(index, natural) {
-    if (natural) this._naturals.set(index, natural);
-    else this._naturals.delete(index);
-  }
+  _keepNatural(index, natural) { if (natural) this._naturals.set(index, natural); else this._naturals.delete(index); }
 
   // Loads a page's image again at the size `cover` asks for: its source decoded larger, `zoomSrc`, or
   // its function called again (a PDF page rendered anew). The page keeps its present image until the
@@ -351,7 +344,5 @@ export class PageStore {
     }
   }
 
-  _closeIfOwned(image) {
-    if (image && this._owned.delete(image)) image.close?.();
-  }
+  _closeIfOwned(image) { if (image && this._owned.delete(image)) image.close?.(); }
 }
