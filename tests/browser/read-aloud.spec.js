@@ -391,6 +391,13 @@ function webkitSpeech() {
     cancel() {}, pause() {}, resume() {},
   });
   Object.defineProperty(window, 'speechSynthesis', { value: synth, configurable: true });
+  // Utterances as the Web Speech API makes them, but taking this voice (a real one takes only its own).
+  window.SpeechSynthesisUtterance = class extends EventTarget {
+    constructor(text) {
+      super();
+      Object.assign(this, { text, lang: '', rate: 1, pitch: 1, voice: null });
+    }
+  };
 }
 
 test('browser: on a voice as WebKitGTK\'s (end fired inside its reset, no word boundaries), both open pages are said to readaloudend, each sentence marked with data-reading="sentence" over its words as it begins', async ({ page }) => {
