@@ -108,6 +108,30 @@ test('browser: readaloudpage is told once a page: an update() mid-page says the 
   expect(log.filter((e) => e.type === 'readaloudpage').map((e) => e.page)).toEqual([0, 1]);
 });
 
+test('browser: update() mid-sentence, on a voice that reports words, says that sentence again from its start (not from the word)', async ({ page }) => {
+  await openTextBook(page, ['One. Two words here. Three.', 'Four.']);
+  const texts = await page.evaluate(() => new Promise((resolve) => {
+    const said = [];
+    // An engine that begins the page's second sentence, says its second word, and holds there.
+    const engine = { speak(text, { onSentence, onWord }) {
+      said.push(text);
+      const at = text.indexOf('Two words');
+      if (said.length === 1) {
+        setTimeout(() => {
+          onSentence(at, at + 'Two words here. '.length);
+          onWord(at + 4, 5);
+          window.book.readingAloud.update({ rate: 2 });
+        });
+      } else {
+        resolve(said);
+      }
+      return { pause() {}, resume() {}, cancel() {} };
+    } };
+    window.book.readAloud({ engine });
+  }));
+  expect(texts).toEqual(['One. Two words here. Three.', 'Two words here. Three.']);
+});
+
 test('browser: a display switch mid-reading (a phone turned upright) shows the page being read and reads on from its word there', async ({ page }) => {
   await openTextBook(page, ['One. Two.', 'Three.', 'Four. Five. Six.', 'Seven.'], { startPage: 1 });
   await page.evaluate(() => {

@@ -66,14 +66,20 @@ export function readAloudJourneys(context) {
     await open(HTML);
     assert.equal(await evaluate(openStoryBook, { long: LONG_PAGE, short: SHORT_PAGES }), 5);
     // Asked once, at once, as the reader's toolbar asks: the voices may come after the page asks.
-    const first = await evaluate(async () => ({ can: await window.book.canReadAloud(), voices: (await window.book.readAloudVoices()).length }));
+    const first = await evaluate(async () => {
+      const can = await window.book.canReadAloud();
+      const voices = await window.book.readAloudVoices();
+      return { can, voices: voices.length, chosen: voices[0]?.name ?? null };
+    });
     assert.equal(first.can, true, 'canReadAloud() answers true the first time it is asked');
     assert.ok(first.voices > 0, `the engine lists its voices (${first.voices})`);
     const started = Date.now();
     await evaluate(() => { window.book.readAloud({ rate: 3 }).catch((e) => window.log.push({ type: 'rejected', error: String(e) })); });
     await context.browser.waitFor(() => window.log.some((e) => e.type === 'readaloudend' || e.type === 'rejected'));
     const log = await evaluate(() => window.log);
-    console.log(`# ${context.engine}: read aloud in ${((Date.now() - started) / 1000).toFixed(1)} s, ${log.filter((e) => e.type === 'mark').length} marks laid`);
+    const marks = log.filter((e) => e.type === 'mark');
+    console.log(`# ${context.engine}: ${first.voices} voices (the first in the book's order: ${first.chosen}); the story read aloud at rate 3 in `
+      + `${((Date.now() - started) / 1000).toFixed(1)} s; ${marks.length} marks laid, ${marks.filter((e) => e.word !== null).length} of them with a word said`);
     checkReading(log);
     assert.deepEqual(await evaluate(() => [window.book.readingAloud, document.querySelectorAll('[data-reading]').length]), [null, 0], 'nothing left marked');
   });

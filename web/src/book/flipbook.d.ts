@@ -124,7 +124,7 @@ export interface ReadAloud {
   stop(): void;
   /**
    * A new voice, rate or pitch at once: narration changes speed as it plays; speech starts again at the
-   * word being said. A TypeError or RangeError names a bad change (as readAloud() checks it).
+   * sentence being said (at the word, for an engine that tells no sentences). A TypeError or RangeError names a bad change (as readAloud() checks it).
    */
   update(changes: { voice?: string; rate?: number; pitch?: number }): void;
   /** Resolves with `readaloudend`'s detail when the reading ends. */

@@ -120,8 +120,8 @@ export class Reading {
   stop() { this._end('stopped'); }
 
   /**
-   * New voice, rate or pitch, now: narration changes its speed as it plays; speech starts again at
-   * the word being said.
+   * New voice, rate or pitch, now: narration changes its speed as it plays; speech starts again at the
+   * sentence being said (at the word, where the engine tells no sentences).
    */
   update(changes) {
     const checked = this._book.checkUpdate(changes);  // a TypeError or RangeError names a bad one
@@ -130,7 +130,9 @@ export class Reading {
     if (this._speaker?.audio) {
       this._speaker.audio.playbackRate = this._settings.rate;
     } else if (this._speaker && this._state !== 'waiting') {
-      this._run(this._page, this._at()?.page === this._page ? this._at().index : 0);
+      // Speech starts again at the sentence being said (at the word, for an engine that tells no sentences).
+      const sentence = this._sentence?.page === this._page ? this._sentence.from : null;
+      this._run(this._page, sentence ?? (this._at()?.page === this._page ? this._at().index : 0));
     }
   }
 
