@@ -26,9 +26,12 @@ const MAIN_REGION = {
 
 /**
  * A voice of a known low-quality engine: eSpeak's (espeak-ng, also as speech-dispatcher lists it to
- * Firefox: a language and an eSpeak variant, 'English (America)+Max') and MBROLA's.
+ * Firefox: a language and an eSpeak variant, 'English (America)+Max') and MBROLA's. `voice`: a
+ * SpeechSynthesisVoice, or speechVoices()'s entry (its voiceURI is its `voice`'s).
  */
-export function isLowQuality({ name = '', voiceURI = '' } = {}) {
+export function isLowQuality(voice) {
+  const name = String(voice?.name ?? '');
+  const voiceURI = String(voice?.voiceURI ?? voice?.voice?.voiceURI ?? '');
   const text = `${name} ${voiceURI}`;
   return /e-?speak|mbrola/i.test(text) || (/^urn:moz-tts:speechd:/.test(voiceURI) && /\+[^\s+]+$/.test(name));
 }
