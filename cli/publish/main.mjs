@@ -131,7 +131,9 @@ async function publish(options) {
       const text = pagePath('text', index, 'json');
       pages.push({
         width: result.width, height: result.height, src: pagePath('pages', index, ext),
-        ...(options.zoom > 0 ? { zoomSrc: pagePath('zoom', index, ext) } : {}),
+        ...(result.zoomed ? { zoomSrc: pagePath('zoom', index, ext) } : {}),
+        // Where the image limits (render-page.js) made this page's images smaller than asked: docs/publish.md.
+        ...(result.limited ? { limited: result.limited } : {}),
         // No alt: the reader takes it from the page's text file (most readers read the text layer instead).
         thumbSrc: pagePath('thumbs', index, ext), text,
         links: remapLinks(result.links, numbers),

@@ -12,6 +12,7 @@ export function renderAll({ pages, jobs, workerData, onPage }) {
   const queue = [...pages];
   let pending = pages.length;
   let replacements = 0;
+  const gate = new SharedArrayBuffer(4);  // the megapixels the workers are drawing now (render-worker.js)
   return new Promise((resolve, reject) => {
     if (pending === 0) { resolve(); return; }
     const workers = new Set();
@@ -25,7 +26,7 @@ export function renderAll({ pages, jobs, workerData, onPage }) {
       if (pending === 0) finish();
     };
     const start = () => {
-      const worker = new Worker(WORKER, { workerData });
+      const worker = new Worker(WORKER, { workerData: { ...workerData, gate } });
       let current = null;
       const next = () => {
         current = queue.shift() ?? null;
