@@ -6,6 +6,7 @@ import path from 'node:path';
 import { ALT_CHARS, MANIFEST, altText, checkManifest, makeManifest, pagePath } from '../../web/src/document/format.js';
 import { pdfOutline } from '../../web/src/document/pdf-document.js';
 import { DEFAULTS, FORMATS, HELP, parsePublishArgs } from './args.mjs';
+import { HEADERS, embedSrc, headersFile, iframeSnippet } from './embed.mjs';
 import { EXIT, inputError, report, usageError } from './errors.mjs';
 import { indexHtml } from './index-html.mjs';
 import { readNarration } from './narration.mjs';
@@ -71,7 +72,7 @@ async function publish(options) {
     const ext = FORMATS[options.format];
     const kinds = ['pages', 'thumbs', 'text', ...(options.zoom > 0 ? ['zoom'] : [])];
     const pageFiles = numbers.flatMap((_, i) => kinds.map((kind) => `${BOOK}/${pagePath(kind, i, kind === 'text' ? 'json' : ext)}`));
-    const fixed = ['index.html', `${BOOK}/${MANIFEST}`, `${BOOK}/${COVER}`, ...(download ? [`${BOOK}/${download}`] : []),
+    const fixed = ['index.html', HEADERS, `${BOOK}/${MANIFEST}`, `${BOOK}/${COVER}`, ...(download ? [`${BOOK}/${download}`] : []),
       ...site.files.map((file) => `${RUNTIME}/${file}`), ...[...narration.values()].flatMap(({ src, words }) => [`${BOOK}/${src}`, `${BOOK}/${words}`])];
     const { previous } = claimOutFolder(options.out, [...fixed, ...pageFiles]);
 
@@ -154,6 +155,9 @@ async function publish(options) {
     });
     fs.writeFileSync(path.join(options.out, 'index.html'), html);
     written.set('index.html', { bytes: Buffer.byteLength(html), kind: 'text' });
+    const headers = headersFile({ download });
+    fs.writeFileSync(path.join(options.out, HEADERS), headers);
+    written.set(HEADERS, { bytes: Buffer.byteLength(headers), kind: 'text' });
     settleOutFolder(options.out, previous, [...written.keys()]);
 
     for (const failure of failures.sort((a, b) => a.index - b.index)) {
@@ -161,7 +165,8 @@ async function publish(options) {
         + 'the other pages are published and the book shows it as missing\n');
       if (options.debug && failure.stack) process.stderr.write(`${failure.stack}\n`);
     }
-    process.stdout.write(summary({ out: options.out, pages: numbers.length, failed: failures.length, seconds, written: [...written.values()] }));
+    process.stdout.write(summary({ out: options.out, pages: numbers.length, failed: failures.length, seconds, written: [...written.values()],
+      embed: iframeSnippet({ src: embedSrc({ out: options.out, url: options.url }), title }) }));
     return failures.length > 0 ? EXIT.incomplete : 0;
   } finally {
     await doc.loadingTask.destroy();
