@@ -450,3 +450,28 @@ test('browser: every event a <cone-flipbook> dispatches has the detail fields bo
   expect(result.landedAt).toBe(9);  // the spread's first page
   expect(result.far).toEqual([['turnstart', 'forward', true], ['turned', 9]]);
 });
+
+test('browser: a published book is the src attribute and property (not document), so an inline handler on the element that reads document.title gets the global document', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    const holder = document.createElement('div');
+    holder.innerHTML = '<cone-flipbook src="/no/such/book.json" onclick="document.title = \'set by the handler\'; this.dataset.seen = typeof document.createElement"></cone-flipbook>';
+    const element = holder.firstElementChild;
+    const upgraded = element instanceof customElements.get('cone-flipbook');
+    const before = document.title;
+    element.click();  // not in the page: nothing is built, the handler runs
+    const seen = { title: document.title, createElement: element.dataset.seen, hasDocument: 'document' in element, src: element.src };
+    document.title = before;
+    // The src attribute is the book's document option: its build reads that file (and fails on it, naming it).
+    document.getElementById('stage').append(element);
+    const failure = await element.whenReady().then(() => 'built', (error) => String(error.message));
+    element.remove();
+    return { upgraded, ...seen, failure };
+  });
+  expect(result.upgraded).toBe(true);
+  expect(result.title).toBe('set by the handler');
+  expect(result.createElement).toBe('function');
+  expect(result.hasDocument).toBe(false);
+  expect(result.src).toBe('/no/such/book.json');
+  expect(result.failure).toMatch(/\/no\/such\/book\.json/);
+});

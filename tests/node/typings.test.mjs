@@ -13,7 +13,7 @@ import { fileURLToPath } from 'node:url';
 import { API, SignatureKind, SymbolFlags } from 'typescript/unstable/sync';
 import { BOOK_EVENTS, EVENT_DETAILS } from '../../web/src/book/book-events.js';
 import { CREATE_OPTIONS, DEFAULTS, LIVE_OPTIONS } from '../../web/src/book/options.js';
-import { ATTRIBUTES, NO_ATTRIBUTE, PROPERTY_OPTIONS } from '../../web/src/components/element-attributes.js';
+import { ATTRIBUTES, NO_ATTRIBUTE, PROPERTY_OPTIONS, propertyOf } from '../../web/src/components/element-attributes.js';
 import { EVENT_HANDLERS, OPTION_PROPS, PAGE_PROPS } from '../../web/src/components/framework-props.js';
 import { LABEL_KEYS } from '../../web/src/viewer/viewer-labels.js';
 import { CONTROL_PARTS } from '../../web/src/viewer/viewer-options.js';
@@ -122,13 +122,13 @@ test('node: every option is an attribute of <cone-flipbook> or says why not, and
   const element = declared('element.d.ts', 'ConeFlipbookElement');
   const own = declaredIn(element, 'element.d.ts').filter((s) => !(s.flags & SymbolFlags.Method)).map((s) => s.name);
   const state = ['book', 'page', 'pageCount'];  // the book's state, read only: not options
-  assert.deepEqual(sorted(own.filter((name) => !state.includes(name))), sorted(PROPERTY_OPTIONS));
+  assert.deepEqual(sorted(own.filter((name) => !state.includes(name))), sorted(PROPERTY_OPTIONS.map(propertyOf)));
   // What a property reads back holds every value the option takes (a property keeps what it is given).
   // display reads the display shown ('single' or 'double'), not the option ('auto' too).
   const options = declared('book/flipbook.d.ts', 'FlipbookOptions');
   const wrong = PROPERTY_OPTIONS.filter((option) => option !== 'display'
-    && !checker.isTypeAssignableTo(checker.getNonNullableType(typeOfMember(options, option)), typeOfMember(element, option)))
-    .map((option) => `${option}: the option is ${checker.typeToString(typeOfMember(options, option))}, the property ${checker.typeToString(typeOfMember(element, option))}`);
+    && !checker.isTypeAssignableTo(checker.getNonNullableType(typeOfMember(options, option)), typeOfMember(element, propertyOf(option))))
+    .map((option) => `${option}: the option is ${checker.typeToString(typeOfMember(options, option))}, the property ${checker.typeToString(typeOfMember(element, propertyOf(option)))}`);
   assert.deepEqual(wrong, []);
   // The class's documentation names every attribute.
   const doc = exported('element.d.ts', 'ConeFlipbookElement').getDocumentationComment(checker);

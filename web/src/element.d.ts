@@ -20,7 +20,7 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
  * schedule, center, hard-covers, lighting, shadows, gutter, hash, sound, muted, fallback
  * ("true"/"false"), thickness ("true"/"false"/a number), autoplay ("true"/"false"/the milliseconds
  * between turns), antialias ("auto"/"true"/"false"), resolution ("auto"/"full"/a number), turn-area ("page"/"edges"/"corners"/"none"),
- * label (the book's name for screen readers), load-window, remember-page, read-aloud-memory (a key, or "false"), wasm-url, pdf, pdf-worker-src, document (a published book.json),
+ * label (the book's name for screen readers), load-window, remember-page, read-aloud-memory (a key, or "false"), wasm-url, pdf, pdf-worker-src, src (a published book.json: the document option; not named document, which would shadow the global document in inline event handlers),
  * outline (the table of contents as JSON; the property also keeps the array), download (a URL), edge-marks ("true"/"false").
  * controls (bare or "true": the toolbar; its parts as an object through the property), labels (the
  * toolbar's texts as a JSON object, or an object through the property),
@@ -85,8 +85,11 @@ export class ConeFlipbookElement extends HTMLElement {
   fallback: FlipbookOptions['fallback'];
   wasmUrl: FlipbookOptions['wasmUrl'];
   pdfWorkerSrc: FlipbookOptions['pdfWorkerSrc'];
-  /** A published document's book.json URL (the document attribute): its pages are the book. */
-  document: FlipbookOptions['document'];
+  /**
+   * A published document's book.json URL (the src attribute; Flipbook's `document` option): its pages are
+   * the book. Not named `document`, which would shadow the global document in inline event handlers.
+   */
+  src: FlipbookOptions['document'];
   /** The table of contents: an array is kept as given; a string is its JSON (the outline attribute). */
   get outline(): FlipbookOptions['outline'];
   set outline(value: FlipbookOptions['outline'] | string | null);

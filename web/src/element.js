@@ -7,7 +7,7 @@ import { BOOK_EVENTS } from './book/book-events.js';
 import { DEFAULTS } from './book/options.js';
 import { BOX_CSS } from './components/book-box.js';
 import {
-  ATTRIBUTES, ATTRIBUTE_OF_OPTION, LIVE_ATTRIBUTES, PROPERTY_OPTIONS, TAG, keepsValue, readOptionAttribute, setOptionAttribute,
+  ATTRIBUTES, ATTRIBUTE_OF_OPTION, LIVE_ATTRIBUTES, PROPERTY_OPTIONS, TAG, keepsValue, propertyOf, readOptionAttribute, setOptionAttribute,
 } from './components/element-attributes.js';
 
 // On a server (no DOM) the module still imports: the class has no element to be, and nothing is defined.
@@ -335,7 +335,7 @@ export class ConeFlipbookElement extends ElementBase {
 
 for (const option of PROPERTY_OPTIONS) {
   if (option === 'display') continue;  // the class's own: it reads the display shown
-  Object.defineProperty(ConeFlipbookElement.prototype, option, {
+  Object.defineProperty(ConeFlipbookElement.prototype, propertyOf(option), {
     configurable: true,
     get() { return this._readOption(option); },
     set(value) { this._writeOption(option, value); },

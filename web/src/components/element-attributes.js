@@ -97,8 +97,9 @@ export const ATTRIBUTES = {
   fallback: ['fallback', parseBoolean],
   pdf: ['pdf', parseText],
   'pdf-worker-src': ['pdfWorkerSrc', parseText],
-  // publish (issue 30): a published document's book.json
-  document: ['document', parseText],
+  // publish (issue 30): a published document's book.json. Named src, not document: an element property
+  // named document would be what `document` means in the element's inline event handlers (onclick="…").
+  src: ['document', parseText],
   // docapi (issue 23)
   outline: ['outline', parseOutline],
   download: ['download', parseText],
@@ -114,6 +115,13 @@ export const ATTRIBUTES = {
 export const NO_ATTRIBUTE = {
   on: "listeners by event name: the element dispatches every book event itself, so listen on it (addEventListener, or a framework's event binding)",
 };
+/**
+ * The element's property of an option where it is not the option's name: a property `document` would
+ * shadow the global document in inline event handler attributes (their scope starts at the element).
+ */
+export const PROPERTY_OF_OPTION = { document: 'src' };
+/** The element's property name of `option`. */
+export const propertyOf = (option) => PROPERTY_OF_OPTION[option] ?? option;
 export const ATTRIBUTE_OF_OPTION = Object.fromEntries(Object.entries(ATTRIBUTES).map(([name, [option]]) => [option, name]));
 /** Attributes applied to the running book (Flipbook.setOptions), no rebuild. */
 export const LIVE_ATTRIBUTES = LIVE_OPTIONS.map((option) => ATTRIBUTE_OF_OPTION[option]);
@@ -162,7 +170,7 @@ export function setOptionAttribute(element, option, value) {
   }
   const strings = KEPT_VALUES[option]?.strings;
   if (typeof value !== 'string' && (strings || !(typeof value === 'number' || typeof value === 'boolean'))) {
-    throw new TypeError(`conecurl: <${TAG}> property '${option}' must be ${KEPT_VALUES[option]?.allowed
+    throw new TypeError(`conecurl: <${TAG}> property '${propertyOf(option)}' must be ${KEPT_VALUES[option]?.allowed
       ?? 'a string, number or boolean (as its attribute takes)'}, got ${typeof value === 'object' ? describeValue(value) : typeof value}`);
   }
   element.setAttribute(attribute, String(value));
@@ -170,6 +178,6 @@ export function setOptionAttribute(element, option, value) {
 
 // Every option with an attribute is a property too (Svelte, Angular and others set properties when an
 // element has them): reading gives the value kept (KEPT_VALUES) or the attribute's, parsed; writing
-// keeps the value or sets (null: removes) the attribute.
+// keeps the value or sets (null: removes) the attribute. Each is named propertyOf(option).
 export const PROPERTY_OPTIONS = Object.values(ATTRIBUTES).map(([option]) => option);
 
