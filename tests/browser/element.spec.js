@@ -313,7 +313,7 @@ test('browser: every option is a property too, as Svelte and Angular set them: p
 test('browser: turn-area, label and fallback are attributes too; every option property reads back what it was given (an autoplay object kept, not "[object Object]") and the book gets it', async ({ page }) => {
   const problems = await openReady(page, FIXTURE);
   const result = await page.evaluate(async () => {
-    const { PROPERTY_OPTIONS } = await import('/web/src/components/element-attributes.js');
+    const { PROPERTY_OPTIONS, propertyOf } = await import('/web/src/components/element-attributes.js');
     const pages = [0, 1, 2, 3].map((i) => window.pageUrl(i));
     const autoplay = { interval: 60000, loop: true };
     // A value for every option property (display reads the display shown: the live-attribute test has it).
@@ -327,11 +327,13 @@ test('browser: turn-area, label and fallback are attributes too; every option pr
       // viewer (issue 23): objects kept as given
       controls: { search: false }, labels: { next: 'Suivant' },
       textLayer: false,
+      readAloudMemory: 'element-spec-voices',
     };
     const unsampled = PROPERTY_OPTIONS.filter((option) => option !== 'display' && !(option in values));
     const loose = document.createElement('cone-flipbook');  // not in the document: nothing is built
-    for (const [option, value] of Object.entries(values)) loose[option] = value;
-    const changed = Object.entries(values).filter(([option, value]) => !Object.is(loose[option], value)).map(([option]) => option);
+    // Each by its property's name (the `document` option is the `src` property: `document` would shadow the global).
+    for (const [option, value] of Object.entries(values)) loose[propertyOf(option)] = value;
+    const changed = Object.entries(values).filter(([option, value]) => !Object.is(loose[propertyOf(option)], value)).map(([option]) => option);
     const written = ['autoplay', 'turn-area', 'label', 'fallback', 'pages', 'pdf'].map((name) => loose.getAttribute(name));
 
     // The three new attributes reach the book.

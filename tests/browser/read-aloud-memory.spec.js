@@ -332,7 +332,7 @@ test('browser: readAloudVoices() comes in the documented order: the book\'s lang
     'Hans de-DE', 'Thomas fr-CA network', 'eSpeak French fr-CA', 'Amélie fr-FR',  // other languages, by lang
   ];
   expect(await listed()).toEqual(english);
-  expect(await page.evaluate(async () => Object.keys((await window.book.readAloudVoices())[0]).sort())).toEqual(['default', 'lang', 'local', 'name']);
+  expect(await page.evaluate(async () => Object.keys((await window.book.readAloudVoices())[0]).sort())).toEqual(['default', 'lang', 'local', 'name', 'voiceURI']);
   // What readAloud() takes with none named: the first, Daniel.
   let { said } = await readToEnd(page);
   expect(said.map(({ voice }) => voice)).toEqual(['Daniel', 'Daniel']);
@@ -354,11 +354,9 @@ test('browser: readAloudVoices() comes in the documented order: the book\'s lang
   expect(problems).toEqual([]);
 });
 
-// Known failures, left here to flip when fixed: the popup orders readAloudVoices()' list again by the book
-// element's lang (attach-controls.js `lang`), where the reading and readAloudVoices() use the document's
-// (a PDF's /Lang) and know eSpeak by its voiceURI, which readAloudVoices()' entries do not carry.
+// The popup asks the book the language the reading uses (pageLanguage(): a PDF's /Lang), and
+// readAloudVoices()' entries carry their voiceURI, which eSpeak's are known by in Firefox.
 test('browser: in a PDF book whose own language (its /Lang, fr-FR) is not the web page\'s (en), the popup lists and keeps the voice and speed by the language the reading uses', async ({ page }) => {
-  test.fail(true, 'the popup keys and orders by the book element\'s lang (en), the reading by the PDF\'s (fr): attach-controls.js');
   const pdf = await PDFDocument.create();
   pdf.setLanguage('fr-FR');
   const font = await pdf.embedFont(StandardFonts.Helvetica);
@@ -391,7 +389,6 @@ test('browser: in a PDF book whose own language (its /Lang, fr-FR) is not the we
 });
 
 test('browser: the popup lists the voices in readAloudVoices()\' order, eSpeak\'s known by their speech-dispatcher voiceURI last in their region', async ({ page }) => {
-  test.fail(true, 'the popup orders readAloudVoices()\' entries again, and they carry no voiceURI to know eSpeak by');
   const voices = [{ name: 'English (Great Britain)+Max', lang: 'en-GB', voiceURI: 'urn:moz-tts:speechd:English%20(Great%20Britain)%2BMax?en-GB' },
     { name: 'Google UK English Female', lang: 'en-GB', localService: false }, { name: 'Daniel', lang: 'en-GB' }, { name: 'Alex', lang: 'en-US', default: true }];
   const problems = await openTextBook(page, { speech: { voices } });

@@ -302,7 +302,7 @@ test('browser: the default engine hands speechSynthesis.speak the page\'s text a
     const first = spoken[0];
     return { voices, can, texts: spoken.map((u) => u.text.trim()), lang: first.lang, voice: first.voice?.name, rate: first.rate, word };
   });
-  expect(result.voices).toEqual([{ name: 'Test Voice', lang: 'en-US', default: true, local: true }, { name: 'Voix', lang: 'fr-FR', default: false, local: true }]);
+  expect(result.voices).toEqual([{ name: 'Test Voice', lang: 'en-US', default: true, local: true, voiceURI: 'test-voice' }, { name: 'Voix', lang: 'fr-FR', default: false, local: true, voiceURI: 'voix' }]);
   expect(result.can).toBe(true);
   // Page 0's lines (its heading, a sentence a line, its number), one utterance each; then page 1's heading.
   expect(result.texts).toEqual([PAGES[0].heading, ...PAGES[0].lines, '1', PAGES[1].heading]);

@@ -174,8 +174,16 @@ export class BookController extends EventTarget {
   async readAloud(options) { this._alive(); return this._reading.start(options); }
   /** The reading aloud now (what readAloud() resolved with), or null. */
   get readingAloud() { return this._reading.current(); }
-  /** The browser's speech voices: [{ name, lang, default, local }] ([] where it has none). */
-  async readAloudVoices() { this._alive(); return this._reading.voices(); }
+  /** The browser's speech voices, in the order read-aloud chooses from for the open page's language ([] where it has none). */
+  async readAloudVoices() { this._alive(); return this._reading.voices(this.pageLanguage()); }
+  /** The language page `index` (default: the first open page) is read aloud in: an HTML page's, the document's, the book's. */
+  pageLanguage(index) {
+    this._alive();
+    if (index !== undefined && !(Number.isInteger(index) && index >= 0 && index < this.pageCount)) {
+      throw new RangeError(`conecurl: page ${index} is not in 0..${this.pageCount - 1}`);
+    }
+    return this._reading.lang(index ?? this.page);
+  }
   /** Whether readAloud() can read this book: a page has recorded narration, or the browser has a voice. */
   async canReadAloud() { this._alive(); return this._reading.can(); }
 

@@ -3,7 +3,7 @@
 // Whether a book can read aloud, and the voices, are answered with read-aloud/speech-engine.js alone
 // (the voices put in order by engine/voice-choice.js; the toolbar asks at once); a book that never
 // asks fetches neither.
-import { languageOf } from '../engine/language.js';
+import { pageLanguage } from '../engine/language.js';
 
 /**
  * Read-aloud (read-aloud/book-reader.js, imported at the first readAloud()): readAloud(), readingAloud,
@@ -32,14 +32,16 @@ export function makeReadAloud(controller, book, pageText) {
   return {
     start: async (options) => (await load()).start(options),
     current: () => reader?.current ?? null,
+    /** The language page `index` is read in (engine/language.js pageLanguage). */
+    lang: (index) => pageLanguage(book.entries[index], book.document()?.lang, book.root),
     /**
-     * The browser's voices: [{ name, lang, default, local }], in the order engine/voice-choice.js gives
-     * them for the book's language (its own first, by region; the others after).
+     * The browser's voices: [{ name, lang, default, local, voiceURI }], in the order engine/voice-choice.js
+     * gives them for the language of the open page (its own first, by region; the others after).
      */
-    voices: async () => {
+    voices: async (lang) => {
       const [voices, { orderVoices }] = await Promise.all([speechVoices(), import('../engine/voice-choice.js')]);
-      const lang = book.document()?.lang || languageOf(book.root);
-      return orderVoices(voices, lang).map(({ name, lang: tag, default: isDefault, local }) => ({ name, lang: tag, default: isDefault, local }));
+      return orderVoices(voices, lang).map(({ name, lang: tag, default: isDefault, local, voice }) => ({
+        name, lang: tag, default: isDefault, local, voiceURI: String(voice?.voiceURI ?? '') }));
     },
     /** Whether readAloud() can read this book: a page has recorded narration, or the browser has a voice. */
     can: async () => {

@@ -137,6 +137,8 @@ export interface ReadAloudVoice {
   lang: string;
   default: boolean;
   local: boolean;
+  /** The browser's own identifier of the voice (SpeechSynthesisVoice.voiceURI; '' where it gives none). */
+  voiceURI: string;
 }
 
 export interface FlipbookOptions {
@@ -687,6 +689,8 @@ export class BookController extends EventTarget {
    * the other languages' after, by tag.
    */
   readAloudVoices(): Promise<ReadAloudVoice[]>;
+  /** The language page `index` (default: the first open page) is read aloud in: an HTML page's own, the document's, else the book element's. RangeError outside the book. */
+  pageLanguage(index?: number): string;
   /** Whether readAloud() can read this book: a page has narration, or the browser has a voice. */
   canReadAloud(): Promise<boolean>;
   destroy(): void;

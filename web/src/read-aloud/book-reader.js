@@ -9,7 +9,7 @@ import { choosingEngine, keepChoice, voiceMemory } from '../engine/voice-choice.
 import { showInMediaSession } from './media-session.js';
 import { createReadingMarkLayer } from '../layers/reading-mark.js';
 import { describeValue } from '../engine/describe-value.js';
-import { languageOf } from '../engine/language.js';
+import { pageLanguage } from '../engine/language.js';
 
 const OPTION_KEYS = ['engine', 'voice', 'rate', 'pitch', 'lang', 'follow'];
 const RANGES = { rate: [0.1, 10], pitch: [0, 2] };
@@ -235,8 +235,7 @@ function titleOf(book) {
   return (label !== 'Book' && label) || globalThis.document?.title || label;
 }
 
-// A page's language: an HTML page's own (its element's nearest lang), else the document's, else the
-// book element's (engine/language.js).
+// A page's language (engine/language.js pageLanguage).
 function langOf(entry, book) {
-  return (entry.html ? languageOf(entry.html) : book.document()?.lang) || languageOf(book.root);
+  return pageLanguage(entry, book.document()?.lang, book.root);
 }

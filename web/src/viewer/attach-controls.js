@@ -159,7 +159,7 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
     const menu = createReadAloudMenu(text, toolbar.buttons.readAloudSettings, {
       anchorOf: () => toolbar.focusTarget('readAloudSettings'),
       voices: () => book.readAloudVoices(),
-      lang: () => languageOf(book.element),
+      lang: () => (typeof book.pageLanguage === 'function' ? book.pageLanguage() : languageOf(book.element)),  // the reading's own
       memory: () => book.options?.readAloudMemory,  // engine/voice-choice.js: undefined is its default key
       changed: (change) => {
         const now = live();
