@@ -3,6 +3,7 @@
 // long sentence is said a clause at a time, each told by readaloudsentence; readaloudpage is told once a
 // page; a display switch plans again from the word being read; voices listed late bring the Read button.
 import { test, expect } from '@playwright/test';
+import { UTTERANCE_STUB } from './speech-stubs.js';
 
 // A speechSynthesis with one voice ('kal') that says each utterance in tasks of its own (start, then end)
 // and reports no words, except that the utterances whose text is in window.stalls start and then say
@@ -28,17 +29,11 @@ function playedSpeech() {
     resume() {},
   });
   Object.defineProperty(window, 'speechSynthesis', { value: synth, configurable: true });
-  // Utterances as the Web Speech API makes them, but taking this voice (a real one takes only its own).
-  window.SpeechSynthesisUtterance = class extends EventTarget {
-    constructor(text) {
-      super();
-      Object.assign(this, { text, lang: '', rate: 1, pitch: 1, voice: null });
-    }
-  };
 }
 
 /** A book of text pages (html-fixture's makeTextPage), its read-aloud events logged in window.log. */
 async function openTextBook(page, texts, options = {}) {
+  await page.addInitScript({ path: UTTERANCE_STUB });
   await page.addInitScript(playedSpeech);
   await page.goto('/tests/browser/fixtures/html-fixture.html');
   await page.waitForFunction(() => document.body.dataset.ready);

@@ -2,6 +2,7 @@
 // of read-aloud/book-reader.js, viewer/read-aloud-menu.js) on a real Flipbook over a speechSynthesis the
 // test plays: what a reader chose survives a reload per language, where it is kept, 13,362 voices, the order.
 import { test, expect } from '@playwright/test';
+import { UTTERANCE_STUB } from './speech-stubs.js';
 import { PDFDocument, StandardFonts } from 'pdf-lib';
 import { openReady } from './helpers.js';
 
@@ -82,12 +83,6 @@ function playedSpeech({ voices, espeak = 0 }) {
     resume() {},
   });
   Object.defineProperty(window, 'speechSynthesis', { value: synth, configurable: true });
-  window.SpeechSynthesisUtterance = class extends EventTarget {
-    constructor(text) {
-      super();
-      Object.assign(this, { text, lang: '', rate: 1, pitch: 1, voice: null });
-    }
-  };
   window.optionsMade = 0;
   const create = Document.prototype.createElement;
   Document.prototype.createElement = function (name, ...rest) {
@@ -102,6 +97,7 @@ function playedSpeech({ voices, espeak = 0 }) {
  * page's errors, as they come.
  */
 async function openTextBook(page, { lang = null, options = {}, speech = { voices: VOICES } } = {}) {
+  await page.addInitScript({ path: UTTERANCE_STUB });
   await page.addInitScript(playedSpeech, speech);
   const problems = await openReady(page, HTML_FIXTURE);
   await makeBook(page, { lang, options });
@@ -362,6 +358,7 @@ test('browser: in a PDF book whose own language (its /Lang, fr-FR) is not the we
   const font = await pdf.embedFont(StandardFonts.Helvetica);
   for (const text of ['Le chat dort.', 'Il fait beau.']) pdf.addPage([300, 400]).drawText(text, { x: 30, y: 340, size: 18, font });
   const base64 = Buffer.from(await pdf.save()).toString('base64');
+  await page.addInitScript({ path: UTTERANCE_STUB });
   await page.addInitScript(playedSpeech, { voices: VOICES });
   const problems = await openReady(page, '/tests/browser/fixtures/pdf-fixture.html');
   await page.evaluate(async (base64) => {

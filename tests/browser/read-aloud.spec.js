@@ -5,6 +5,7 @@
 // and resume; a reader's turn stops it (or, with follow, moves it); stop() and destroy() mid-word leave
 // nothing behind; the default engine hands speechSynthesis.speak the page's text and language.
 import { test, expect } from '@playwright/test';
+import { UTTERANCE_STUB } from './speech-stubs.js';
 import { openPdfBook as openPdf, makeDocumentPdf, PAGES } from './document-pdf.js';
 
 let made;
@@ -254,6 +255,7 @@ test('browser: stop() and destroy() mid-word leave nothing behind: engine cancel
 
 test('browser: the default engine hands speechSynthesis.speak the page\'s text a sentence an utterance, with its language, voice and rate, and marks words at its boundary events', async ({ page }) => {
   // The browser's speech synthesis replaced, before the page loads, by one that records what it is given.
+  await page.addInitScript({ path: UTTERANCE_STUB });
   await page.addInitScript(() => {
     const voices = [{ name: 'Test Voice', lang: 'en-US', default: true, localService: true, voiceURI: 'test-voice' },
       { name: 'Voix', lang: 'fr-FR', default: false, localService: true, voiceURI: 'voix' }];
@@ -268,13 +270,6 @@ test('browser: the default engine hands speechSynthesis.speak the page\'s text a
       cancel() { this.cancelled = (this.cancelled ?? 0) + 1; },
     });
     Object.defineProperty(window, 'speechSynthesis', { value: synth, configurable: true });
-    // Utterances as the Web Speech API makes them, but taking these voices (a real one takes only its own).
-    window.SpeechSynthesisUtterance = class extends EventTarget {
-      constructor(text) {
-        super();
-        Object.assign(this, { text, lang: '', rate: 1, pitch: 1, voice: null });
-      }
-    };
   });
   await openPdfBook(page);
   await installEngine(page);
@@ -391,16 +386,10 @@ function webkitSpeech() {
     cancel() {}, pause() {}, resume() {},
   });
   Object.defineProperty(window, 'speechSynthesis', { value: synth, configurable: true });
-  // Utterances as the Web Speech API makes them, but taking this voice (a real one takes only its own).
-  window.SpeechSynthesisUtterance = class extends EventTarget {
-    constructor(text) {
-      super();
-      Object.assign(this, { text, lang: '', rate: 1, pitch: 1, voice: null });
-    }
-  };
 }
 
 test('browser: on a voice as WebKitGTK\'s (end fired inside its reset, no word boundaries), both open pages are said to readaloudend, each sentence marked with data-reading="sentence" over its words as it begins', async ({ page }) => {
+  await page.addInitScript({ path: UTTERANCE_STUB });
   await page.addInitScript(webkitSpeech);
   await page.goto('/tests/browser/fixtures/html-fixture.html');
   await page.waitForFunction(() => document.body.dataset.ready);

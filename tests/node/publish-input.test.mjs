@@ -5,28 +5,11 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
-import { makeDocumentPdf } from '../fixtures/document-pdf.mjs';
 import { ENCRYPTED_PASSWORD, makeBrokenPagePdf } from '../fixtures/publish-pdfs.mjs';
-import { publish, readJson, root, tempDir } from './publish-run.mjs';
+import { assertOneLine, publish, readJson, root, tempDir, writeTestPdf } from './publish-run.mjs';
 
 const ENCRYPTED = path.join(root, 'tests/fixtures/encrypted.pdf');
 const SMALL = ['--height', '120', '--zoom', '0', '--jobs', '1'];
-
-async function fixture(dir) {
-  const pdf = path.join(dir, 'book.pdf');
-  fs.writeFileSync(pdf, Buffer.from((await makeDocumentPdf()).base64, 'base64'));
-  return pdf;
-}
-
-/** One line on stderr, that names `file` and matches `what`; exit code `code`. */
-function assertOneLine(run, code, file, what) {
-  assert.equal(run.code, code, `exit code; stderr: ${run.stderr}`);
-  const lines = run.stderr.trim().split('\n');
-  assert.equal(lines.length, 1, `one line: ${run.stderr}`);
-  if (file) assert.ok(lines[0].includes(file), `names ${file}: ${lines[0]}`);
-  assert.match(lines[0], what);
-  assert.doesNotMatch(run.stderr, /\n\s+at /, 'no stack trace');
-}
 
 test('node: conecurl publish refuses a missing file, a non-PDF, a truncated PDF and a bad --pages in one line each (exit 1 or 2)', async (t) => {
   const dir = tempDir(t);
@@ -36,7 +19,7 @@ test('node: conecurl publish refuses a missing file, a non-PDF, a truncated PDF 
   const text = path.join(dir, 'notes.pdf');
   fs.writeFileSync(text, 'just some text, not a PDF\n');
   assertOneLine(await publish([text, '--out', out]), 1, text, /is not a PDF/);
-  const pdf = await fixture(dir);
+  const pdf = await writeTestPdf(dir);
   const truncated = path.join(dir, 'cut.pdf');
   fs.writeFileSync(truncated, fs.readFileSync(pdf).subarray(0, 600));
   assertOneLine(await publish([truncated, '--out', out]), 1, truncated, /damaged.*repair/);
@@ -73,7 +56,7 @@ test('node: conecurl publish reports a page that cannot be rendered by number, p
 
 test('node: conecurl publish never writes into a folder it did not publish, nor over a file it did not write, and a re-publish removes only its own stale files', async (t) => {
   const dir = tempDir(t);
-  const pdf = await fixture(dir);
+  const pdf = await writeTestPdf(dir);
   const foreign = path.join(dir, 'mine');
   fs.mkdirSync(foreign);
   fs.writeFileSync(path.join(foreign, 'notes.txt'), 'keep me');

@@ -6,31 +6,15 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { audioSeconds } from '../../cli/publish/audio-duration.mjs';
-import { makeDocumentPdf } from '../fixtures/document-pdf.mjs';
 import { narrationFolder, silentWav, timed, wordTimesVtt } from '../fixtures/narration-files.mjs';
-import { publish, readJson, tempDir } from './publish-run.mjs';
+import { assertOneLine, publish, readJson, tempDir, writeTestPdf } from './publish-run.mjs';
 
 const SMALL = ['--height', '120', '--zoom', '0', '--jobs', '1', '--no-download'];
 
-async function fixture(dir) {
-  const pdf = path.join(dir, 'book.pdf');
-  fs.writeFileSync(pdf, Buffer.from((await makeDocumentPdf()).base64, 'base64'));
-  return pdf;
-}
-
-/** One line on stderr, that names `file` and matches `what`; exit code `code`; no stack. */
-function assertOneLine(run, code, file, what) {
-  assert.equal(run.code, code, `exit code; stderr: ${run.stderr}`);
-  const lines = run.stderr.trim().split('\n');
-  assert.equal(lines.length, 1, `one line: ${run.stderr}`);
-  if (file) assert.ok(lines[0].includes(file), `names ${file}: ${lines[0]}`);
-  assert.match(lines[0], what);
-  assert.doesNotMatch(run.stderr, /\n\s+at /, 'no stack trace');
-}
 
 test('node: conecurl publish --narration copies each page\'s audio and word times into book/narration/ and names them in book.json; a re-publish with --pages renumbers them and removes its stale ones (needs pdfjs-dist, @napi-rs/canvas)', async (t) => {
   const dir = tempDir(t);
-  const pdf = await fixture(dir);
+  const pdf = await writeTestPdf(dir);
   const out = path.join(dir, 'site');
   const words1 = timed(['A', 'book', 'about', 'animals']);
   const words2 = timed(['The', 'zebra', 'has', 'stripes.']);
@@ -75,7 +59,7 @@ test('node: conecurl publish --narration copies each page\'s audio and word time
 
 test('node: conecurl publish --narration refuses each kind of bad narration in one line naming the file, the page and what is wrong (exit 1, nothing written; needs pdfjs-dist)', async (t) => {
   const dir = tempDir(t);
-  const pdf = await fixture(dir);
+  const pdf = await writeTestPdf(dir);
   const out = path.join(dir, 'site');
   const wav = silentWav(1);
   const good = wordTimesVtt(timed(['A', 'book']));

@@ -1,5 +1,6 @@
 // Shared by the `conecurl publish` Node tests: runs the real command (node cli/conecurl.mjs publish …) in a
 // child process, in temp folders.
+import assert from 'node:assert/strict';
 import { spawn } from 'node:child_process';
 import fs from 'node:fs';
 import os from 'node:os';
@@ -35,3 +36,21 @@ export function tempDir(t) {
 }
 
 export const readJson = (file) => JSON.parse(fs.readFileSync(file, 'utf8'));
+
+/** The test PDF (tests/fixtures/document-pdf.mjs) written to DIR/book.pdf; its path. */
+export async function writeTestPdf(dir) {
+  const { makeDocumentPdf } = await import('../fixtures/document-pdf.mjs');
+  const pdf = path.join(dir, 'book.pdf');
+  fs.writeFileSync(pdf, Buffer.from((await makeDocumentPdf()).base64, 'base64'));
+  return pdf;
+}
+
+/** A publish run that failed as a CLI should: exit `code`, one line on stderr naming `file` and matching `what`, no stack. */
+export function assertOneLine(run, code, file, what) {
+  assert.equal(run.code, code, `exit code; stderr: ${run.stderr}`);
+  const lines = run.stderr.trim().split('\n');
+  assert.equal(lines.length, 1, `one line: ${run.stderr}`);
+  if (file) assert.ok(lines[0].includes(file), `names ${file}: ${lines[0]}`);
+  assert.match(lines[0], what);
+  assert.doesNotMatch(run.stderr, /\n\s+at /, 'no stack trace');
+}
