@@ -11,6 +11,7 @@ export const FIRST_VIEW_MODULES = [
   'web/src/document/passage-address.js',
   'web/src/document/published-document.js',
   'web/src/engine/language.js',
+  'web/src/engine/voice-choice.js',
   'web/src/layers/edge-tabs.js',
   'web/src/layers/text-layer.js',
   'web/src/layers/text-measure.js',
