@@ -102,7 +102,9 @@ async function launchFirefox(exe, env, viewport) {
   const instance = await puppeteer.launch({
     browser: 'firefox', executablePath: exe.browser, headless: true, env,
     // No first-run pages, updates or telemetry; speech through speech-dispatcher where the test gave one.
-    extraPrefsFirefox: { 'media.webspeech.synth.enabled': true, 'app.update.enabled': false, 'browser.shell.checkDefaultBrowser': false },
+    // No fullscreen transition: a request made while the last exit's transition runs is refused (a busy machine).
+    extraPrefsFirefox: { 'media.webspeech.synth.enabled': true, 'app.update.enabled': false, 'browser.shell.checkDefaultBrowser': false,
+      'full-screen-api.transition-duration.enter': '0 0', 'full-screen-api.transition-duration.leave': '0 0' },
   });
   const page = await instance.newPage();
   await page.setViewport(viewport);
