@@ -9,6 +9,7 @@
 //        [--duration 600] [--turns 10] [--port 8095] [--out bench-results] [--baseline ../conecurl-before] [--publish]
 //        [--skip-publish-rate] (leaves out publish-rate.mjs, the pages per second of `conecurl publish`, run last)
 //        [--skip-first-spread] (leaves out first-spread.mjs: a published PDF's first spread on a throttled phone against pdf.js's)
+//        [--skip-lighthouse] (leaves out lighthouse.mjs: Lighthouse's mobile preset on the published sites and reader.html#file=)
 //        [--engines firefox,webkit|none] (the other engines measured after Chromium, in the run's first desktop configuration)
 import { spawn, spawnSync } from 'node:child_process';
 import fs from 'node:fs';
@@ -43,6 +44,7 @@ function parseArgs(argv) {
   const options = {
     reps: 3, configs: CONFIGS.map((c) => c.id), libs: [...LIBRARIES], duration: 600, turns: 10, idleMs: 2000,
     port: Number(process.env.CONECURL_BENCH_PORT) || 8095, out: 'bench-results', publish: false, baseline: null, publishRate: true, firstSpread: true,
+    lighthouse: true,
     engines: [...ENGINES],
   };
   for (let i = 0; i < argv.length; i++) {
@@ -64,6 +66,7 @@ function parseArgs(argv) {
     else if (name === '--publish') options.publish = true;
     else if (name === '--skip-publish-rate') options.publishRate = false;
     else if (name === '--skip-first-spread') options.firstSpread = false;
+    else if (name === '--skip-lighthouse') options.lighthouse = false;
     else if (name === '--baseline') options.baseline = path.resolve(value());
     else if (name === '--engines') {
       const list = value().split(',').filter((v) => v !== 'none');
@@ -334,15 +337,24 @@ async function main() {
     const rate = spawnSync(process.execPath, [path.join(root, 'scripts/bench/publish-rate.mjs'), '--out', options.out], { stdio: 'inherit' });
     if (rate.status !== 0) process.exitCode = 1;
   }
-  if (options.firstSpread) {
-    // The reader's first spread on a throttled phone: the PDFs publish-rate.mjs measured (build/bench-pdf/), published and through pdf.js.
-    const pdfs = ['gnuplot.pdf', 'magazine-40.pdf'].map((name) => path.join(root, 'build/bench-pdf', name)).filter((file) => fs.existsSync(file));
-    if (pdfs.length === 0) console.log('bench: no PDF in build/bench-pdf/ for first-spread.mjs (publish-rate.mjs puts them there)');
-    else {
-      const spread = spawnSync(process.execPath, [path.join(root, 'scripts/bench/first-spread.mjs'), '--out', options.out, '--republish',
-        ...pdfs.flatMap((file) => ['--pdf', file])], { stdio: 'inherit' });
-      if (spread.status !== 0) process.exitCode = 1;
-    }
+  // The PDFs publish-rate.mjs measured (build/bench-pdf/), for the reader's measurements below.
+  const pdfs = ['gnuplot.pdf', 'magazine-40.pdf'].map((name) => path.join(root, 'build/bench-pdf', name)).filter((file) => fs.existsSync(file));
+  if ((options.firstSpread || options.lighthouse) && pdfs.length === 0) {
+    console.log('bench: no PDF in build/bench-pdf/ for first-spread.mjs and lighthouse.mjs (publish-rate.mjs puts them there)');
+  }
+  let spreadSites = null;
+  if (options.firstSpread && pdfs.length) {
+    // The reader's first spread on a throttled phone: each PDF published and through pdf.js.
+    const spread = spawnSync(process.execPath, [path.join(root, 'scripts/bench/first-spread.mjs'), '--out', options.out, '--republish',
+      ...pdfs.flatMap((file) => ['--pdf', file])], { stdio: 'inherit' });
+    if (spread.status !== 0) process.exitCode = 1;
+    else spreadSites = path.join(options.out, 'first-spread');
+  }
+  if (options.lighthouse && pdfs.length) {
+    // Lighthouse's mobile preset on the same sites (those first-spread.mjs just published, else published afresh) and on reader.html#file=.
+    const audit = spawnSync(process.execPath, [path.join(root, 'scripts/bench/lighthouse.mjs'), '--out', options.out,
+      ...(spreadSites ? ['--sites', spreadSites] : ['--republish']), ...pdfs.flatMap((file) => ['--pdf', file])], { stdio: 'inherit' });
+    if (audit.status !== 0) process.exitCode = 1;
   }
   if ([...runs, ...engines.runs].some((r) => r.error)) {
     console.error('bench: some measurements failed (see above)');

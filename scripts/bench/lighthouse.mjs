@@ -1,0 +1,183 @@
+// Lighthouse, as the people who run sites judge them (issue 38): each PDF published with `conecurl publish`
+// and served compressed (brotli/gzip, ranges) as a CDN serves it, and the same PDF in the package's
+// reader.html#file=, run through Lighthouse's mobile preset (its default: a phone, simulated 4x CPU and slow 4G)
+// in Debian's Chromium. Prints the four category scores, FCP, LCP, TBT and the request count (medians of
+// --reps runs, each in a fresh browser), and what costs each category its points; writes lighthouse.json.
+// Usage: node scripts/bench/lighthouse.mjs [--pdf book.pdf]... [--reps 3] [--out bench-results] [--republish]
+//        [--sites <folder> (published sites to reuse: <folder>/<name>/index.html; default <out>/lighthouse)]
+//        [--roads published,reader] [--port 8150]
+// Without --pdf: the PDFs publish-rate.mjs leaves in build/bench-pdf/ (gnuplot.pdf, magazine-40.pdf).
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import lighthouse from 'lighthouse';
+import puppeteer from 'puppeteer-core';
+import { CHROMIUM_ARGS, chromiumExecutable } from '../chromium.mjs';
+import { serveDirectory } from '../serve.mjs';
+import { summarize } from './metrics.mjs';
+
+const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
+const args = process.argv.slice(2);
+const arg = (name, fallback) => {
+  const i = args.indexOf(name);
+  if (i >= 0 && i + 1 >= args.length) throw new Error(`lighthouse: ${name} needs a value`);
+  return i >= 0 ? args[i + 1] : fallback;
+};
+const known = new Set(['--pdf', '--reps', '--out', '--republish', '--sites', '--roads', '--port']);
+for (const [i, a] of args.entries()) {
+  if (a.startsWith('--') && !known.has(a)) throw new Error(`lighthouse: unknown argument ${a} (known: ${[...known].join(' ')})`);
+  if (a === '--republish') continue;
+  if (a.startsWith('--') && i + 1 >= args.length) throw new Error(`lighthouse: ${a} needs a value`);
+}
+const given = args.flatMap((a, i) => (a === '--pdf' ? [path.resolve(args[i + 1])] : []));
+const pdfs = given.length ? given
+  : ['gnuplot.pdf', 'magazine-40.pdf'].map((name) => path.join(root, 'build/bench-pdf', name)).filter((file) => fs.existsSync(file));
+const reps = Number(arg('--reps', '3'));
+const out = path.resolve(root, arg('--out', 'bench-results'));
+const sitesDir = path.resolve(root, arg('--sites', path.join(out, 'lighthouse')));
+const roads = arg('--roads', 'published,reader').split(',');
+const port = Number(arg('--port', '8150'));
+if (!Number.isInteger(reps) || reps < 1) throw new Error(`lighthouse: --reps must be a whole number from 1, got ${reps}`);
+if (roads.some((road) => !['published', 'reader'].includes(road))) throw new Error(`lighthouse: --roads takes published and reader, got ${roads}`);
+if (pdfs.length === 0) {
+  console.error('lighthouse: no PDF: give --pdf book.pdf, or run publish-rate.mjs first (it puts its PDFs in build/bench-pdf/)');
+  process.exit(2);
+}
+
+const CATEGORIES = ['performance', 'accessibility', 'best-practices', 'seo'];
+const METRICS = { fcp: 'first-contentful-paint', lcp: 'largest-contentful-paint', tbt: 'total-blocking-time', si: 'speed-index', cls: 'cumulative-layout-shift' };
+
+/** What a category loses points on: its audits that weigh in it and did not pass, with what Lighthouse says they cost. */
+function misses(lhr, category) {
+  return lhr.categories[category].auditRefs
+    .filter((ref) => ref.weight > 0 || category === 'performance')
+    .map((ref) => ({ ref, audit: lhr.audits[ref.id] }))
+    .filter(({ audit }) => audit && audit.score !== null && audit.score < 1
+      && !['notApplicable', 'manual', 'informative'].includes(audit.scoreDisplayMode))
+    .map(({ ref, audit }) => ({
+      id: ref.id, weight: ref.weight, score: audit.score, title: audit.title,
+      ...(audit.displayValue ? { value: audit.displayValue } : {}),
+      ...(audit.details?.overallSavingsMs ? { savingsMs: Math.round(audit.details.overallSavingsMs) } : {}),
+      ...(audit.details?.overallSavingsBytes ? { savingsBytes: Math.round(audit.details.overallSavingsBytes) } : {}),
+      // Where: the first few of what the audit names (a URL, or a node's label), for the report to say what to fix.
+      items: (audit.details?.items ?? []).slice(0, 5).map((item) => item.url ?? item.node?.nodeLabel ?? item.source?.url ?? item.description ?? null)
+        .filter((where) => typeof where === 'string'),
+    }));
+}
+
+/** One Lighthouse run of `url` (mobile preset) in a fresh Chromium: the figures kept, and the misses. */
+async function audit(url) {
+  // Chromium refuses to run as root with its sandbox (Playwright's launcher adds --no-sandbox itself; puppeteer's does not).
+  const sandbox = process.getuid?.() === 0 ? ['--no-sandbox'] : [];
+  const browser = await puppeteer.launch({
+    executablePath: chromiumExecutable(), headless: true, args: [...CHROMIUM_ARGS, ...sandbox, '--remote-debugging-port=0'],
+  });
+  try {
+    const debugPort = Number(new URL(browser.wsEndpoint()).port);
+    const result = await lighthouse(url, { port: debugPort, output: 'json', logLevel: 'error', onlyCategories: CATEGORIES });
+    const { lhr } = result;
+    if (lhr.runtimeError) throw new Error(`lighthouse: ${url}: ${lhr.runtimeError.code} ${lhr.runtimeError.message}`);
+    const scores = Object.fromEntries(CATEGORIES.map((c) => [c, lhr.categories[c].score === null ? null : Math.round(lhr.categories[c].score * 100)]));
+    const metrics = Object.fromEntries(Object.entries(METRICS).map(([key, id]) => [key, lhr.audits[id]?.numericValue ?? null]));
+    const requests = lhr.audits['network-requests']?.details?.items ?? [];
+    return {
+      scores, metrics, requests: requests.length,
+      transferBytes: requests.reduce((sum, r) => sum + (r.transferSize ?? 0), 0),
+      warnings: lhr.runWarnings, benchmarkIndex: lhr.environment?.benchmarkIndex,
+      misses: Object.fromEntries(CATEGORIES.map((c) => [c, misses(lhr, c)])),
+      legibleText: lhr.audits['font-size']?.displayValue ?? null,
+    };
+  } finally {
+    await browser.close();
+  }
+}
+
+const median = (values) => (values.some((v) => v === null) ? null : summarize(values).median);
+
+/** The medians of a road's runs, and the misses of the run whose Performance is the median's (or nearest). */
+function summary(runs) {
+  const scores = Object.fromEntries(CATEGORIES.map((c) => [c, median(runs.map((r) => r.scores[c]))]));
+  const metrics = Object.fromEntries(Object.keys(METRICS).map((key) => [key, median(runs.map((r) => r.metrics[key]))]));
+  const typical = [...runs].sort((a, b) => Math.abs(a.scores.performance - scores.performance) - Math.abs(b.scores.performance - scores.performance))[0];
+  const range = (c) => [Math.min(...runs.map((r) => r.scores[c])), Math.max(...runs.map((r) => r.scores[c]))];
+  return {
+    scores, ranges: Object.fromEntries(CATEGORIES.map((c) => [c, range(c)])), metrics,
+    requests: median(runs.map((r) => r.requests)), transferBytes: median(runs.map((r) => r.transferBytes)),
+    legibleText: typical.legibleText, misses: typical.misses,
+  };
+}
+
+const results = [];
+for (const pdf of pdfs) {
+  const name = path.basename(pdf, '.pdf').replace(/[^\w.-]+/g, '-');
+  const site = path.join(sitesDir, name);
+  if (roads.includes('published') && (args.includes('--republish') || !fs.existsSync(path.join(site, 'index.html')))) {
+    if (!site.startsWith(out + path.sep)) throw new Error(`lighthouse: ${site} has no site; publishing goes only into --out's folder (${out})`);
+    console.log(`lighthouse: publishing ${pdf} into ${path.relative(root, site)}`);
+    fs.rmSync(site, { recursive: true, force: true });  // our own folder under --out
+    execFileSync(process.execPath, [path.join(root, 'cli/conecurl.mjs'), 'publish', pdf, '--out', site], { stdio: ['ignore', 'ignore', 'inherit'] });
+  }
+  // The site at its own origin's root, as a host serves it; the reader from the repository, the PDF beside it.
+  const servers = [];
+  const urls = {};
+  try {
+    if (roads.includes('published')) {
+      const { server, url } = await serveDirectory(site, { port, compress: true });
+      servers.push(server);
+      urls.published = url;
+    }
+    if (roads.includes('reader')) {
+      const pdfDir = path.relative(root, path.dirname(pdf));
+      if (pdfDir.startsWith('..')) throw new Error(`lighthouse: ${pdf} must be inside the repository (the reader's server serves it)`);
+      const { server, url } = await serveDirectory(root, { port: port + 1, compress: true });
+      servers.push(server);
+      urls.reader = `${url}web/reader/reader.html#file=/${[...pdfDir.split(path.sep), path.basename(pdf)].map(encodeURIComponent).join('/')}`;
+    }
+    const runs = Object.fromEntries(roads.map((road) => [road, []]));
+    for (let rep = 0; rep < reps; rep++) {
+      for (const road of rep % 2 ? [...roads].reverse() : roads) {
+        const t0 = Date.now();
+        const run = await audit(urls[road]);
+        runs[road].push(run);
+        const s = run.scores;
+        console.log(`[${name} ${rep + 1}/${reps}] ${road}: Performance ${s.performance}, Accessibility ${s.accessibility}, Best Practices ${s['best-practices']}, `
+          + `SEO ${s.seo}; FCP ${(run.metrics.fcp / 1000).toFixed(1)} s, LCP ${(run.metrics.lcp / 1000).toFixed(1)} s, TBT ${Math.round(run.metrics.tbt)} ms, `
+          + `${run.requests} requests, ${(run.transferBytes / 1024).toFixed(0)} KB; legible text ${run.legibleText ?? '-'} (${((Date.now() - t0) / 1000).toFixed(0)} s)`);
+      }
+    }
+    for (const road of roads) results.push({ pdf: path.basename(pdf), road, url: urls[road], reps, ...summary(runs[road]), runs: runs[road] });
+  } finally {
+    for (const server of servers) server.close();
+  }
+}
+
+fs.mkdirSync(out, { recursive: true });
+const file = path.join(out, 'lighthouse.json');
+fs.writeFileSync(file, `${JSON.stringify({
+  date: new Date().toISOString(), lighthouse: JSON.parse(fs.readFileSync(path.join(root, 'node_modules/lighthouse/package.json'), 'utf8')).version,
+  chromium: chromiumExecutable(), cpus: os.cpus().length, loadavg: os.loadavg(), results,
+}, null, 1)}\n`);
+
+const ROAD = { published: 'published site', reader: 'reader.html#file=' };
+console.log(`\nLighthouse ${JSON.parse(fs.readFileSync(path.join(root, 'node_modules/lighthouse/package.json'), 'utf8')).version}, mobile preset, served compressed; medians of ${reps}:`);
+console.log('| PDF | road | Performance | Accessibility | Best Practices | SEO | FCP | LCP | TBT | requests |');
+console.log('|---|---|---|---|---|---|---|---|---|---|');
+for (const r of results) {
+  const score = (c) => (r.ranges[c][0] === r.ranges[c][1] ? `${r.scores[c]}` : `${r.scores[c]} (${r.ranges[c][0]}–${r.ranges[c][1]})`);
+  console.log(`| ${r.pdf} | ${ROAD[r.road]} | ${score('performance')} | ${score('accessibility')} | ${score('best-practices')} | ${score('seo')} `
+    + `| ${(r.metrics.fcp / 1000).toFixed(1)} s | ${(r.metrics.lcp / 1000).toFixed(1)} s | ${Math.round(r.metrics.tbt)} ms | ${r.requests} |`);
+}
+console.log('\nWhat costs the points (the run nearest the median Performance):');
+for (const r of results) {
+  console.log(`${r.pdf}, ${ROAD[r.road]}:`);
+  for (const c of CATEGORIES) {
+    for (const m of r.misses[c]) {
+      if (c === 'performance' && m.weight === 0 && !m.savingsMs) continue;  // diagnostics with no time to win
+      console.log(`  ${c}: ${m.title}${m.value ? ` (${m.value})` : ''}${m.weight ? `, weight ${m.weight}, score ${m.score}` : ''}`
+        + `${m.savingsMs ? `, saves ~${m.savingsMs} ms` : ''}${m.savingsBytes ? `, ${(m.savingsBytes / 1024).toFixed(0)} KB` : ''}`
+        + `${m.items.length ? `: ${m.items.map((where) => where.replace(/^https?:\/\/[^/]+/, '').slice(0, 80)).join(', ')}` : ''}`);
+    }
+  }
+}
+console.log(`(written to ${path.relative(root, file)})`);
