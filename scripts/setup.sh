@@ -6,6 +6,9 @@
 #   bash scripts/setup.sh          install what is missing (apt-get, then npm ci)
 #   bash scripts/setup.sh --plan   print the steps it would take, one per line, and change nothing:
 #                                  "apt-get install PKG..." and/or "npm ci"; nothing when all is there
+#   bash scripts/setup.sh --bench  (with or without --plan) also what `npm run bench` alone needs: the
+#                                  tools publish-rate.mjs measures conecurl publish against (poppler's
+#                                  pdftoppm, MuPDF's mutool, cwebp)
 #
 # A user's emsdk (em++ already on PATH) is used as is; then Debian's emscripten is not installed.
 # CHROMIUM_PATH, when set, must name an executable file; otherwise `chromium` must be on PATH.
@@ -18,11 +21,14 @@ cd "$here/.."
 root=${SETUP_ROOT:-}
 
 plan=0
-case "${1:-}" in
-  --plan) plan=1 ;;
-  "") ;;
-  *) echo "setup: unknown argument '$1' (use --plan to print what would be installed)" >&2; exit 2 ;;
-esac
+bench=0
+for arg in "$@"; do
+  case "$arg" in
+    --plan) plan=1 ;;
+    --bench) bench=1 ;;
+    *) echo "setup: unknown argument '$arg' (use --plan to print what would be installed, --bench to add the benchmark's tools)" >&2; exit 2 ;;
+  esac
+done
 
 have_cmd() { command -v "$1" >/dev/null 2>&1; }
 have_file() { local f; for f in "$@"; do [ -f "$root$f" ] && return 0; done; return 1; }
@@ -62,6 +68,12 @@ have_cmd speech-dispatcher || missing+=(speech-dispatcher)
 have_cmd espeak-ng || missing+=(espeak-ng)
 have_cmd node || missing+=(nodejs)
 have_cmd npm || missing+=(npm)
+if [ $bench -eq 1 ]; then
+  # The roads scripts/bench/publish-rate.mjs measures `conecurl publish` against.
+  have_cmd pdftoppm || missing+=(poppler-utils)
+  have_cmd mutool || missing+=(mupdf-tools)
+  have_cmd cwebp || missing+=(webp)
+fi
 
 # npm ci only when node_modules is missing or older than the lock file.
 need_npm_ci=0
@@ -89,7 +101,7 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
   # What apt-get said it installed must now be there: a package that installs under another name
   # would otherwise pass here and fail later in a build or a browser test.
-  still=$(SETUP_ROOT="$root" bash scripts/setup.sh --plan | { grep '^apt-get' || true; })
+  still=$(SETUP_ROOT="$root" bash scripts/setup.sh --plan "$@" | { grep '^apt-get' || true; })
   if [ -n "$still" ]; then
     echo "setup: still missing after apt-get: ${still#apt-get install }" >&2
     exit 1

@@ -16,6 +16,9 @@ const repositoryRoot = path.resolve(path.dirname(fileURLToPath(import.meta.url))
 const NEEDED = ['emscripten', 'libglm-dev', 'chromium', 'fonts-dejavu-core', 'cmake', 'g++', 'make',
   'libgtest-dev', 'firefox-esr', 'xvfb', 'webkit2gtk-driver', 'libwebkit2gtk-4.1-0', 'speech-dispatcher', 'espeak-ng',
   'nodejs', 'npm'];
+// What `npm run bench` adds (setup.sh --bench): the tools publish-rate.mjs measures conecurl publish against.
+const BENCH_NEEDED = ['poppler-utils', 'mupdf-tools', 'webp'];
+const BENCH_COMMANDS = ['pdftoppm', 'mutool', 'cwebp'];
 const COMMANDS = ['em++', 'chromium', 'cmake', 'g++', 'make', 'firefox-esr', 'Xvfb', 'WebKitWebDriver',
   'speech-dispatcher', 'espeak-ng', 'node', 'npm'];
 const FILES = ['usr/include/glm/glm.hpp', 'usr/include/gtest/gtest.h', 'usr/share/fonts/truetype/dejavu/DejaVuSans.ttf',
@@ -41,7 +44,7 @@ function sandbox({ installed }) {
     ? 'echo -n "install ok installed"'
     : 'echo "dpkg-query: no packages found matching ${@: -1}" >&2; exit 1');
   if (installed) {
-    for (const name of COMMANDS) writeExecutable(path.join(bin, name), 'exit 0');
+    for (const name of [...COMMANDS, ...BENCH_COMMANDS]) writeExecutable(path.join(bin, name), 'exit 0');
     for (const file of FILES) {
       fs.mkdirSync(path.join(dir, 'root', path.dirname(file)), { recursive: true });
       fs.writeFileSync(path.join(dir, 'root', file), '');
@@ -57,9 +60,9 @@ function sandbox({ installed }) {
 }
 
 /** Runs the copied setup.sh --plan with only the shims on PATH; returns its steps, one per line. */
-function plan(box, extraEnv = {}) {
+function plan(box, extraEnv = {}, extraArgs = []) {
   const env = { PATH: box.bin, HOME: box.dir, SETUP_ROOT: box.root, ...extraEnv };
-  const result = spawnSync('/bin/bash', [path.join(box.dir, 'scripts/setup.sh'), '--plan'], { env, encoding: 'utf8' });
+  const result = spawnSync('/bin/bash', [path.join(box.dir, 'scripts/setup.sh'), '--plan', ...extraArgs], { env, encoding: 'utf8' });
   assert.equal(result.status, 0, `setup.sh --plan failed: ${result.stderr}`);
   return result.stdout.split('\n').filter(Boolean);
 }
@@ -82,10 +85,24 @@ test('node: setup --plan on a machine with nothing installed lists every package
   }
 });
 
+test('node: setup --plan --bench on a machine with nothing installed adds the benchmark\'s tools, and only with --bench (needs bash)', () => {
+  const box = sandbox({ installed: false });
+  try {
+    assert.deepEqual(aptPackages(plan(box, {}, ['--bench'])).toSorted(), [...NEEDED, ...BENCH_NEEDED].toSorted());
+    for (const name of BENCH_NEEDED) assert.ok(!aptPackages(plan(box)).includes(name), `plain setup installs the bench-only ${name}`);
+  } finally {
+    fs.rmSync(box.dir, { recursive: true, force: true });
+  }
+});
+
 test('node: setup --plan with everything present is empty (needs bash)', () => {
   const box = sandbox({ installed: true });
   try {
     assert.deepEqual(plan(box), []);
+    assert.deepEqual(plan(box, {}, ['--bench']), []);
+    fs.rmSync(path.join(box.bin, 'mutool'));
+    assert.deepEqual(aptPackages(plan(box, {}, ['--bench'])), ['mupdf-tools']);
+    assert.deepEqual(plan(box), [], 'plain setup asks for a bench tool');
   } finally {
     fs.rmSync(box.dir, { recursive: true, force: true });
   }
