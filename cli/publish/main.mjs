@@ -49,7 +49,32 @@ export async function main(argv) {
   }
 }
 
+/**
+ * Where a run's time went, for scripts/bench/publish-rate.mjs: written as JSON to the file that the
+ * environment variable CONECURL_PUBLISH_STEPS names (nothing when unset). Phases in ms from the process's
+ * start; `pages` sums each page's steps (render-page.js) over all workers.
+ */
+function stepRecorder() {
+  const phases = { start: performance.now() };  // Node's start and this CLI's modules, up to here
+  let mark = phases.start;
+  const lap = (phase) => {
+    const now = performance.now();
+    phases[phase] = now - mark;
+    mark = now;
+  };
+  const pages = {};
+  return {
+    lap,
+    page(steps) { for (const [step, ms] of Object.entries(steps ?? {})) pages[step] = (pages[step] ?? 0) + ms; },
+    save(extra) {
+      const file = process.env.CONECURL_PUBLISH_STEPS;
+      if (file) fs.writeFileSync(file, `${JSON.stringify({ phases, pages, ...extra })}\n`);
+    },
+  };
+}
+
 async function publish(options) {
+  const steps = stepRecorder();
   const site = runtime();
   const { pdfjs } = await loadRenderer();
   const bytes = readPdf(options.input);
@@ -75,6 +100,7 @@ async function publish(options) {
     const fixed = ['index.html', HEADERS, `${BOOK}/${MANIFEST}`, `${BOOK}/${COVER}`, ...(download ? [`${BOOK}/${download}`] : []),
       ...site.files.map((file) => `${RUNTIME}/${file}`), ...[...narration.values()].flatMap(({ src, words }) => [`${BOOK}/${src}`, `${BOOK}/${words}`])];
     const { previous } = claimOutFolder(options.out, [...fixed, ...pageFiles]);
+    steps.lap('open');  // pdf.js loaded, the PDF opened, its outline read, the out folder checked
 
     const bookDir = path.join(options.out, BOOK);
     for (const kind of kinds) fs.mkdirSync(path.join(bookDir, kind), { recursive: true });
@@ -93,11 +119,12 @@ async function publish(options) {
       written.set(`${BOOK}/${download}`, { bytes: bytes.length, kind: 'pdf' });
     }
 
+    steps.lap('runtime');  // the reader's files copied
     const results = new Array(numbers.length);
     const failures = [];
     const bar = progress(process.stdout, numbers.length);
     process.stdout.write(`Publishing ${numbers.length} pages of ${options.input} into ${options.out} (${options.jobs} workers)\n`);
-    await renderAll({
+    const { workerStartMs } = await renderAll({
       pages: numbers.map((number, index) => ({ number, index })),
       jobs: options.jobs,
       workerData: {
@@ -107,11 +134,13 @@ async function publish(options) {
       onPage: (result) => {
         results[result.index] = result;
         if (result.failed) failures.push(result);
+        steps.page(result.steps);
         for (const file of result.files ?? []) written.set(`${BOOK}/${file.path}`, file);
         bar.page(!result.failed);
       },
     });
     const seconds = bar.end();
+    steps.lap('pages');
 
     // Each rendered page's narration, copied as it was given (a page that failed is not shown: nor its narration).
     for (const [index, { page, src, words }] of narration) {
@@ -159,6 +188,8 @@ async function publish(options) {
     fs.writeFileSync(path.join(options.out, HEADERS), headers);
     written.set(HEADERS, { bytes: Buffer.byteLength(headers), kind: 'text' });
     settleOutFolder(options.out, previous, [...written.keys()]);
+    steps.lap('finish');  // narration, book.json, index.html, _headers, the out folder settled
+    steps.save({ jobs: options.jobs, pageCount: numbers.length, workerStartMs });
 
     for (const failure of failures.sort((a, b) => a.index - b.index)) {
       process.stderr.write(`conecurl publish: page ${numbers[failure.index]} of ${options.input} could not be rendered (${failure.failed}); `

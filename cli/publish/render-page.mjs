@@ -69,7 +69,16 @@ function scaled(createCanvas, source, width, height) {
  * returns what the manifest and index.html need: sizes, links, the start of its text, bytes written.
  */
 export async function renderPage({ doc, textDoc = doc, createCanvas, number, index, bookDir, options, reserve = async () => () => {} }) {
+  // Where this page's time goes, in ms a step (the result's `steps`; publish-rate.mjs sums them).
+  const steps = {};
+  let mark = performance.now();
+  const lap = (step) => {
+    const now = performance.now();
+    steps[step] = (steps[step] ?? 0) + (now - mark);
+    mark = now;
+  };
   const page = await doc.getPage(number);
+  lap('page');
   try {
     const unit = page.getViewport({ scale: 1 });
     const asked = options.scale ?? options.height / unit.height;
@@ -89,11 +98,14 @@ export async function renderPage({ doc, textDoc = doc, createCanvas, number, ind
     const ext = FORMATS[options.format];
     const files = [];
     const write = async (relative, data, kind) => {
+      lap('encode');
       await fs.writeFile(path.join(bookDir, relative), data);
       files.push({ path: relative, bytes: data.length, kind });
+      lap('write');
     };
     let reading;
     const giveBack = await reserve(pixels(largest) + (zoomed ? pixels(scale) : 0));
+    lap('wait');
     try {
       reading = await drawImages();
     } finally {
@@ -103,11 +115,16 @@ export async function renderPage({ doc, textDoc = doc, createCanvas, number, ind
     const textPage = textDoc === doc ? page : await textDoc.getPage(number);
     const record = await pdfPageText(textPage);
     if (textPage !== page) textPage.cleanup();
-    await write(pagePath('text', index, 'json'), Buffer.from(JSON.stringify(encodePageText(record))), 'text');
+    const textJson = Buffer.from(JSON.stringify(encodePageText(record)));
+    lap('text');
+    await fs.writeFile(path.join(bookDir, pagePath('text', index, 'json')), textJson);
+    files.push({ path: pagePath('text', index, 'json'), bytes: textJson.length, kind: 'text' });
+    lap('write');
     const links = await pdfPageLinks(doc, page);
+    lap('links');
     return {
       index, width: unit.width, height: unit.height, links, text: record.text.slice(0, TEXT_BACK),
-      imageWidth: reading.width, imageHeight: reading.height, zoomed, ...(limited ? { limited } : {}), files,
+      imageWidth: reading.width, imageHeight: reading.height, zoomed, ...(limited ? { limited } : {}), files, steps,
     };
 
     /** Draws the page once at the largest size and writes its images; returns the reading image's size. */
@@ -118,19 +135,23 @@ export async function renderPage({ doc, textDoc = doc, createCanvas, number, ind
       context.fillStyle = '#fff';
       context.fillRect(0, 0, canvas.width, canvas.height);
       await page.render({ canvas, canvasContext: context, viewport, background: '#fff' }).promise;
+      lap('render');
 
       if (zoomed) await write(pagePath('zoom', index, ext), await encode(canvas, options.format, options.quality), 'image');
       const image = zoomed ? scaled(createCanvas, canvas, unit.width * scale, unit.height * scale) : canvas;
+      lap('scale');
       await write(pagePath('pages', index, ext), await encode(image, options.format, options.quality), 'image');
       const size = { width: image.width, height: image.height };
       if (image !== canvas) release(image);
       const thumbScale = fit(options.thumbWidth / unit.width);
       const thumb = scaled(createCanvas, canvas, unit.width * thumbScale, unit.height * thumbScale);
+      lap('scale');
       await write(pagePath('thumbs', index, ext), await encode(thumb, options.format, options.quality), 'image');
       release(thumb);
       if (index === 0) {
         const coverScale = fit(Math.min(options.coverWidth, canvas.width) / unit.width, MAX_SIDE.jpeg);
         const cover = scaled(createCanvas, canvas, unit.width * coverScale, unit.height * coverScale);
+        lap('scale');
         await write(COVER, await cover.encode('jpeg', 85), 'image');
         release(cover);
       }

@@ -6,19 +6,21 @@ const WORKER = new URL('./render-worker.mjs', import.meta.url);
 
 /**
  * Renders `pages` ([{ number, index }]) on `jobs` workers; `onPage(result | { index, failed })` is
- * called as each finishes. Resolves when all are done. A worker that dies fails its page and is replaced.
+ * called as each finishes. Resolves, when all are done, to { workerStartMs }: how long each worker took
+ * from its start to ready (pdf.js loaded, the PDF opened). A worker that dies fails its page and is replaced.
  */
 export function renderAll({ pages, jobs, workerData, onPage }) {
   const queue = [...pages];
   let pending = pages.length;
   let replacements = 0;
   const gate = new SharedArrayBuffer(4);  // the megapixels the workers are drawing now (render-worker.js)
+  const workerStartMs = [];
   return new Promise((resolve, reject) => {
-    if (pending === 0) { resolve(); return; }
+    if (pending === 0) { resolve({ workerStartMs }); return; }
     const workers = new Set();
     const finish = () => {
       for (const worker of workers) worker.terminate();
-      resolve();
+      resolve({ workerStartMs });
     };
     const settle = (outcome) => {
       onPage(outcome);
@@ -26,6 +28,7 @@ export function renderAll({ pages, jobs, workerData, onPage }) {
       if (pending === 0) finish();
     };
     const start = () => {
+      const started = performance.now();
       const worker = new Worker(WORKER, { workerData: { ...workerData, gate } });
       let current = null;
       const next = () => {
@@ -34,7 +37,7 @@ export function renderAll({ pages, jobs, workerData, onPage }) {
       };
       workers.add(worker);
       worker.on('message', (message) => {
-        if (message.type === 'ready') { next(); return; }
+        if (message.type === 'ready') { workerStartMs.push(performance.now() - started); next(); return; }
         if (message.type === 'page') settle(message.result);
         else settle({ index: message.index, failed: message.message, stack: message.stack });
         next();
