@@ -14,7 +14,7 @@ import { loadRenderer, openPdf, readPdf } from './open-pdf.mjs';
 import { claimOutFolder, settleOutFolder } from './out-folder.mjs';
 import { progress } from './progress.mjs';
 import { COVER } from './render-page.mjs';
-import { renderAll } from './render-pool.mjs';
+import { startPool } from './render-pool.mjs';
 import { remapLinks, remapOutline } from './remap.mjs';
 import { PACKAGE_ROOT, runtimeFiles } from './runtime-files.mjs';
 import { stripComments } from './strip-comments.mjs';
@@ -76,14 +76,30 @@ function stepRecorder() {
 async function publish(options) {
   const steps = stepRecorder();
   const site = runtime();
-  const { pdfjs } = await loadRenderer();
   const bytes = readPdf(options.input);
-  const doc = await openPdf(pdfjs, bytes, options.input, options.password);
+  // The first render worker starts now, loading pdf.js and opening the PDF while this thread does the same
+  // (or as many as --pages needs); the others once the page count is known. They write nothing until given pages.
+  const pool = startPool({
+    jobs: Math.min(options.jobs, options.pages?.length ?? 1),
+    workerData: {
+      bytes, file: options.input, password: options.password, bookDir: path.join(options.out, BOOK),
+      options: { ...DEFAULTS, format: options.format, quality: options.quality, height: options.height, scale: options.scale, zoom: options.zoom },
+    },
+  });
+  let doc;
+  try {
+    const { pdfjs } = await loadRenderer();
+    doc = await openPdf(pdfjs, bytes, options.input, options.password);
+  } catch (error) {
+    pool.close();
+    throw error;
+  }
   try {
     const count = doc.numPages;
     const numbers = options.pages ?? Array.from({ length: count }, (_, i) => i + 1);
     const beyond = numbers.find((n) => n > count);
     if (beyond) throw usageError(`--pages: ${options.input} has ${count} pages, so there is no page ${beyond}`);
+    pool.grow(Math.min(options.jobs, numbers.length));
     const { info } = await doc.getMetadata().catch(() => ({ info: {} }));
     const name = path.basename(options.input).replace(/\.pdf$/i, '');
     const title = (options.title ?? String(info?.Title ?? '').trim()) || name;
@@ -124,13 +140,8 @@ async function publish(options) {
     const failures = [];
     const bar = progress(process.stdout, numbers.length);
     process.stdout.write(`Publishing ${numbers.length} pages of ${options.input} into ${options.out} (${options.jobs} workers)\n`);
-    const { workerStartMs } = await renderAll({
+    const { workerStartMs } = await pool.render({
       pages: numbers.map((number, index) => ({ number, index })),
-      jobs: options.jobs,
-      workerData: {
-        bytes, file: options.input, password: options.password, bookDir,
-        options: { ...DEFAULTS, format: options.format, quality: options.quality, height: options.height, scale: options.scale, zoom: options.zoom },
-      },
       onPage: (result) => {
         results[result.index] = result;
         if (result.failed) failures.push(result);
@@ -140,6 +151,7 @@ async function publish(options) {
       },
     });
     const seconds = bar.end();
+    pool.close();
     steps.lap('pages');
 
     // Each rendered page's narration, copied as it was given (a page that failed is not shown: nor its narration).
@@ -200,6 +212,7 @@ async function publish(options) {
       embed: iframeSnippet({ src: embedSrc({ out: options.out, url: options.url }), title }) }));
     return failures.length > 0 ? EXIT.incomplete : 0;
   } finally {
+    pool.close();
     await doc.loadingTask.destroy();
   }
 }

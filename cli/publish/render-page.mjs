@@ -2,7 +2,7 @@
 // the largest size needed (the zoom image), then scaled down for the reading image, the thumbnail and
 // (page 1) the link-preview cover: drawing is the cheap part, encoding the images the dear one. Every
 // image keeps within its format's largest side and PIXEL_BUDGET, whatever the page's shape or size.
-import fs from 'node:fs/promises';
+import fs from 'node:fs';
 import path from 'node:path';
 import { encodePageText, pagePath } from '../../web/src/document/format.js';
 import { pdfPageLinks, pdfPageText } from '../../web/src/document/pdf-document.js';
@@ -97,9 +97,10 @@ export async function renderPage({ doc, textDoc = doc, createCanvas, number, ind
     const pixels = (k) => Math.round(unit.width * k) * Math.round(unit.height * k);
     const ext = FORMATS[options.format];
     const files = [];
+    // Written at once, not through the thread pool: this worker has nothing else to do meanwhile.
     const write = async (relative, data, kind) => {
       lap('encode');
-      await fs.writeFile(path.join(bookDir, relative), data);
+      fs.writeFileSync(path.join(bookDir, relative), data);
       files.push({ path: relative, bytes: data.length, kind });
       lap('write');
     };
@@ -117,7 +118,7 @@ export async function renderPage({ doc, textDoc = doc, createCanvas, number, ind
     if (textPage !== page) textPage.cleanup();
     const textJson = Buffer.from(JSON.stringify(encodePageText(record)));
     lap('text');
-    await fs.writeFile(path.join(bookDir, pagePath('text', index, 'json')), textJson);
+    fs.writeFileSync(path.join(bookDir, pagePath('text', index, 'json')), textJson);
     files.push({ path: pagePath('text', index, 'json'), bytes: textJson.length, kind: 'text' });
     lap('write');
     const links = await pdfPageLinks(doc, page);
