@@ -1,7 +1,8 @@
 // Browser: a PDF book's selectable text (text-layer.js): a generated multi-page PDF (pdf-lib, standard
 // Helvetica) and a typeset one found on the machine get one `data-text-layer` per open flat page whose
 // spans lie over the rendered words (dark pixels of a screenshot); a mouse drag over a line selects that
-// line and never turns; the layer is gone while a leaf moves and back after; it follows zoom; turnArea
+// line and never turns; the layer is gone while a leaf moves and back after; it follows zoom; its fonts
+// are at least 12 px on a small page, with the same boxes; turnArea
 // defaults to 'edges' (text in the band still selects); passage links round-trip through the address.
 import { test, expect } from '@playwright/test';
 import AxeBuilder from '@axe-core/playwright';
@@ -196,6 +197,31 @@ test('browser: the text layer follows zoom: spans scale with the page and keep t
   expect(after.height / before.height).toBeCloseTo(2, 1);
   expect(Math.abs(after.fx - before.fx)).toBeLessThan(0.005);
   expect(Math.abs(after.fy - before.fy)).toBeLessThan(0.005);
+});
+
+test('browser: on a small page the text layer\'s spans get fonts of at least 12 px, scaled back down: their boxes stay where they were', async ({ page }) => {
+  await openBook(page, { startPage: 1 });
+  // Half the fixture's size: the 14 pt text is about 7.5 CSS px on the page, illegible by Lighthouse's 12 px.
+  await page.evaluate(() => { Object.assign(window.container.style, { width: '320px', height: '200px' }); });
+  await page.waitForFunction(() => {
+    const layer = document.querySelector('[data-text-layer][data-page="1"]');
+    const place = window.book.openPagePlaces().find((p) => p.page === 1);
+    return layer?.querySelector('span') && place && place.width < 200 && Math.abs(parseFloat(layer.style.width) - place.width) < 0.5;
+  });
+  const measure = () => page.evaluate(() => [...document.querySelectorAll('[data-text-layer] span')].map((span) => {
+    const { x, y, width, height } = span.getBoundingClientRect();
+    return { font: parseFloat(getComputedStyle(span).fontSize), x, y, width, height };
+  }));
+  const legible = await measure();
+  expect(legible.length).toBeGreaterThan(0);
+  expect(Math.min(...legible.map((span) => span.font))).toBeGreaterThanOrEqual(12);
+  // The same spans at factor 1 (pdf.js's own --min-font-size): a font under 12 px, and the same boxes.
+  await page.evaluate(() => { for (const layer of document.querySelectorAll('[data-text-layer]')) layer.style.setProperty('--min-font-size', '1'); });
+  const plain = await measure();
+  expect(Math.max(...plain.map((span) => span.font))).toBeLessThan(12);
+  plain.forEach((span, i) => {
+    for (const key of ['x', 'y', 'width', 'height']) expect(Math.abs(span[key] - legible[i][key]), `${key} of span ${i}`).toBeLessThan(0.5);
+  });
 });
 
 /** A viewport point at fractions (fx, fy) of open page `index`'s place. */

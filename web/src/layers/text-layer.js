@@ -13,8 +13,10 @@ const PASSAGE_MAX_CHARS = 300;  // a link carries at most this much of the selec
 // our class (the spans are ours, placed as pdf.js places its own): spans placed in % of the page,
 // sized by --total-scale-factor (CSS px per PDF unit) times
 // the item's --font-height, stretched by --scale-x to the word's width, transparent, selectable. Our
-// additions: the layer takes no presses itself (only its spans, and the whole page while a selection is
-// being dragged, so the drag never lands on the canvas), and the passage button.
+// additions: --min-font-size is set a page (legibleFactor below: every span's font at least 12 CSS px,
+// scaled back down by its transform, so its box stays where it was and tools that judge legibility by
+// the font size, Lighthouse's among them, find no illegible text); the layer takes no presses itself
+// (only its spans, and the whole page while a selection is being dragged, so the drag never lands on the canvas), and the passage button.
 const TEXT_LAYER_CSS = `
 .conecurl-text-layer {
   color-scheme: only light; position: absolute; text-align: initial; overflow: clip; opacity: 1;
@@ -78,13 +80,31 @@ export function passageText(text) {
   return space > PASSAGE_MAX_CHARS / 2 ? cut.slice(0, space) : cut;
 }
 
+/** The least font size, CSS px, a span is given (Lighthouse's "legible font sizes" threshold). */
+export const LEGIBLE_FONT_PX = 12;
+/** At most this factor: a span under 12 / 32 px keeps a smaller font (no 1000 px fonts for a speck of text). */
+const MAX_FONT_FACTOR = 32;
+
+/**
+ * The layer's --min-font-size for a page drawn `scale` CSS px a page unit whose smallest text is
+ * `smallest` page units high: the factor that brings that text's font to LEGIBLE_FONT_PX (1 when it is
+ * there already); each span's font is this much larger and its transform this much smaller.
+ */
+export function legibleFactor(smallest, scale) {
+  const px = smallest * scale;
+  if (!(px > 0)) return 1;
+  return Math.min(MAX_FONT_FACTOR, Math.max(1, (LEGIBLE_FONT_PX * 1.001) / px));  // 1.001: never a rounding under 12
+}
+
 /**
  * The spans of a page's text record, as pdf.js's TextLayer makes them: each piece at its baseline less
  * its ascent, in % of the page; its font height in page units (the layer's --total-scale-factor turns
  * them into CSS px); stretched to its width on the page; turned with its baseline. A line's end is a <br>.
+ * The array's `smallest` is the least font height among them.
  */
 function spansOf(record) {
   const out = [];
+  out.smallest = 0;  // the smallest font height of any span, page units (0: none)
   for (const item of record.items) {
     const [a, b, c, d, e, f] = item.tx;
     const angle = Math.atan2(b, a);
@@ -99,6 +119,8 @@ function spansOf(record) {
     span.style.top = `${(100 * top) / record.height}%`;
     span.style.fontFamily = item.family;
     span.style.setProperty('--font-height', `${height.toFixed(2)}px`);
+    const rounded = Number(height.toFixed(2));
+    if (rounded > 0 && (out.smallest === 0 || rounded < out.smallest)) out.smallest = rounded;
     if (angle !== 0) span.style.setProperty('--rotate', `${angle * (180 / Math.PI)}deg`);
     const natural = (measure(item.str, item.family) * height) / 100;
     if (natural > 0 && item.width > 0) span.style.setProperty('--scale-x', String(item.width / natural));
@@ -225,11 +247,13 @@ export function createTextLayer(root, { doc, canvas, before = null, onPassage })
     element.className = 'conecurl-text-layer';
     element.dataset.textLayer = '';
     element.dataset.page = String(index);
-    const entry = { element, place: null, size: null };
+    const entry = { element, place: null, size: null, smallest: 0 };
     Promise.resolve().then(() => doc.pageText(index)).then((record) => {
       if (removed) return;
       entry.size = { width: record.width, height: record.height };
-      element.append(...spansOf(record));
+      const spans = spansOf(record);
+      entry.smallest = spans.smallest;
+      element.append(...spans);
       const end = document.createElement('div');
       end.className = 'endOfContent';
       element.append(end);
@@ -250,6 +274,7 @@ export function createTextLayer(root, { doc, canvas, before = null, onPassage })
       const scale = place.width / size.width;
       element.style.setProperty('--scale-factor', String(scale));
       element.style.setProperty('--total-scale-factor', String(scale));
+      element.style.setProperty('--min-font-size', String(legibleFactor(entry.smallest, scale)));
     }
   }
 
