@@ -1,11 +1,14 @@
 // The published site's index.html: the reader page (reader.js makes the book in <main id="conecurl-reader">),
 // its modules preloaded so they load in one round trip, link-preview tags, and a <noscript> copy of the
-// pages (images and text) for readers and crawlers without JavaScript. Every value from the PDF is escaped.
+// pages (images and text) for readers and crawlers without JavaScript, and a description for search results
+// and link previews. Every value from the PDF is escaped.
 import { cutWords } from '../../web/src/document/format.js';
 
 /** Characters of a page's text in the noscript copy at most, and of all pages' together: the HTML stays small. */
 export const NOSCRIPT_CHARS = 400;
 export const NOSCRIPT_TOTAL = 24000;
+/** Characters of the meta description at most (about what a search result shows). */
+export const DESCRIPTION_CHARS = 160;
 
 const ENTITIES = { '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' };
 /** Text made safe for HTML content and double- or single-quoted attributes. */
@@ -15,11 +18,26 @@ export const escapeHtml = (value) => String(value).replace(/[&<>"']/g, (c) => EN
 const href = (relative) => escapeHtml(relative.split('/').map(encodeURIComponent).join('/'));
 
 /**
+ * The page's description: the words the book's first pages begin with (as many pages as it takes to fill
+ * DESCRIPTION_CHARS), else, for a book with no text (scanned pages, photographs), its title and page count.
+ */
+export function describe(title, pages) {
+  let words = '';
+  for (const page of pages) {
+    if (page.failed || !page.text) continue;
+    words = `${words} ${page.text}`.replace(/\s+/g, ' ').trim();
+    if (words.length >= DESCRIPTION_CHARS) break;
+  }
+  return cutWords(words, DESCRIPTION_CHARS) || `${title}: ${pages.length} ${pages.length === 1 ? 'page' : 'pages'}`;
+}
+
+/**
  * index.html for a site: `title`, `lang`, `manifest` (path of book.json), `cover` (path), `url` (absolute
  * base or null), `runtime` (runtimeFiles(): entry, css, preload, wasm, under `prefix`), `pages` ([{ src, width, height, alt, text } | { failed }], paths relative to the site).
  */
 export function indexHtml({ title, lang, manifest, cover, url, runtime, prefix, pages }) {
   const absolute = (relative) => (url ? escapeHtml(new URL(relative, url).href) : href(relative));
+  const description = escapeHtml(describe(title, pages));
   const lines = [
     '<!doctype html>',
     `<html lang="${escapeHtml(lang || 'en')}">`,
@@ -27,7 +45,9 @@ export function indexHtml({ title, lang, manifest, cover, url, runtime, prefix, 
     '<meta charset="utf-8">',
     '<meta name="viewport" content="width=device-width, initial-scale=1, viewport-fit=cover">',
     `<title>${escapeHtml(title)}</title>`,
+    `<meta name="description" content="${description}">`,
     `<meta property="og:title" content="${escapeHtml(title)}">`,
+    `<meta property="og:description" content="${description}">`,
     '<meta property="og:type" content="book">',
     `<meta property="og:image" content="${absolute(cover)}">`,
     ...(url ? [`<meta property="og:url" content="${escapeHtml(url)}">`] : []),

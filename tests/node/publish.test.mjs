@@ -8,6 +8,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { documentOptions, loadCanvas, loadPdfjs } from '../../cli/publish/pdfjs-node.mjs';
 import { moduleGraph } from '../../cli/publish/runtime-files.mjs';
+import { DESCRIPTION_CHARS, describe } from '../../cli/publish/index-html.mjs';
 import { checkManifest, decodePageText } from '../../web/src/document/format.js';
 import { pdfOutline, pdfPageText } from '../../web/src/document/pdf-document.js';
 import { BOOKMARKS, PAGES, PAGE_SIZE, lineAt, makeDocumentPdf } from '../fixtures/document-pdf.mjs';
@@ -144,6 +145,11 @@ test('node: conecurl publish index.html holds the reader contract, preloads, Ope
   assert.match(html, /^<!doctype html>\n<html lang="en">/);
   assert.match(html, /<meta name="viewport" content="width=device-width, initial-scale=1, viewport-fit=cover">/);
   assert.match(html, /<title>Cats &amp; &lt;Dogs&gt; &quot;quoted&quot;<\/title>/);
+  // The description (search results, link previews): the first pages' words, the second page's where the first's run out.
+  const description = /<meta name="description" content="([^"]*)">/.exec(html)?.[1];
+  assert.match(description ?? '', /^Contents A book about animals and drinks\. Read it in any order\. .*Chapter One: Zebras/);
+  assert.ok(description.length <= DESCRIPTION_CHARS + 1, description);
+  assert.ok(html.includes(`<meta property="og:description" content="${description}">`));
   assert.ok(!html.includes('<Dogs>'), 'the title is escaped everywhere');
   assert.match(html, /<meta property="og:image" content="https:\/\/example\.com\/b\/book\/cover\.jpg">/);
   assert.match(html, /<meta property="og:url" content="https:\/\/example\.com\/b\/">/);
@@ -162,6 +168,15 @@ test('node: conecurl publish index.html holds the reader contract, preloads, Ope
   assert.match(images[1][4], /^Page 2: Chapter One: Zebras The zebra has stripes\./);
   assert.match(html, /The zebra has stripes\./);
   assert.equal(manifest.title, 'Cats & <Dogs> "quoted"');
+});
+
+test('node: the published page\'s description is its first words, cut at a word, escaped by its caller; a book without text gets its title and page count', () => {
+  const long = Array.from({ length: 60 }, (_, i) => `word${i}`).join(' ');
+  const cut = describe('T', [{ text: long }]);
+  assert.ok(cut.length <= DESCRIPTION_CHARS + 1 && cut.endsWith('…') && long.startsWith(cut.slice(0, -1)), cut);
+  assert.equal(describe('T', [{ text: '  Title\n page ' }, { failed: 'x' }, { text: 'Two.' }]), 'Title page Two.');
+  assert.equal(describe('Photos', [{ text: '' }, { text: ' ' }, { failed: 'x' }]), 'Photos: 3 pages');
+  assert.equal(describe('One', [{ text: '' }]), 'One: 1 page');
 });
 
 test('node: the module walker follows static and dynamic relative imports, preloads only the static ones, and never follows a package', () => {
