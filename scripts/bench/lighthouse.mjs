@@ -2,7 +2,8 @@
 // and served compressed (brotli/gzip, ranges) as a CDN serves it, and the same PDF in the package's
 // reader.html#file=, run through Lighthouse's mobile preset (its default: a phone, simulated 4x CPU and slow 4G)
 // in Debian's Chromium. Prints the four category scores, FCP, LCP, TBT and the request count (medians of
-// --reps runs, each in a fresh browser), and what costs each category its points; writes lighthouse.json.
+// --reps runs, each in a fresh browser), and what costs each category its points; writes lighthouse.json, and
+// lighthouse-<pdf>-<road>.report.json (the whole report of the run nearest the median) beside it.
 // Usage: node scripts/bench/lighthouse.mjs [--pdf book.pdf]... [--reps 3] [--out bench-results] [--republish]
 //        [--sites <folder> (published sites to reuse: <folder>/<name>/index.html; default <out>/lighthouse)]
 //        [--roads published,reader] [--port 8150]
@@ -61,9 +62,25 @@ function misses(lhr, category) {
       ...(audit.details?.overallSavingsMs ? { savingsMs: Math.round(audit.details.overallSavingsMs) } : {}),
       ...(audit.details?.overallSavingsBytes ? { savingsBytes: Math.round(audit.details.overallSavingsBytes) } : {}),
       // Where: the first few of what the audit names (a URL, or a node's label), for the report to say what to fix.
-      items: (audit.details?.items ?? []).slice(0, 5).map((item) => item.url ?? item.node?.nodeLabel ?? item.source?.url ?? item.description ?? null)
+      items: (Array.isArray(audit.details?.items) ? audit.details.items : []).slice(0, 5).map((item) => item.url ?? item.node?.nodeLabel ?? item.source?.url ?? item.description ?? null)
         .filter((where) => typeof where === 'string'),
     }));
+}
+
+/** The requests counted by the folder of their path (book/thumbs, conecurl/web/src/book, …): where a page's requests go. */
+function byFolder(requests) {
+  const counts = {};
+  for (const { url } of requests) {
+    let folder;
+    try {
+      const parsed = new URL(url);
+      folder = parsed.protocol.startsWith('http') ? parsed.pathname.replace(/\/[^/]*$/, '/') || '/' : `${parsed.protocol}`;
+    } catch {
+      folder = '?';
+    }
+    counts[folder] = (counts[folder] ?? 0) + 1;
+  }
+  return Object.fromEntries(Object.entries(counts).sort((a, b) => b[1] - a[1]));
 }
 
 /** One Lighthouse run of `url` (mobile preset) in a fresh Chromium: the figures kept, and the misses. */
@@ -81,10 +98,16 @@ async function audit(url) {
     const scores = Object.fromEntries(CATEGORIES.map((c) => [c, lhr.categories[c].score === null ? null : Math.round(lhr.categories[c].score * 100)]));
     const metrics = Object.fromEntries(Object.entries(METRICS).map(([key, id]) => [key, lhr.audits[id]?.numericValue ?? null]));
     const requests = lhr.audits['network-requests']?.details?.items ?? [];
+    // Where the main thread's time went (TBT's cause): Lighthouse's own breakdown by script and by kind of work.
+    const top = (id, key, value) => (lhr.audits[id]?.details?.items ?? []).slice(0, 6).map((item) => [item[key], Math.round(item[value])]);
     return {
+      lhr,  // the whole report: kept for the run nearest the median (written beside lighthouse.json), not in it
+      mainThread: { byKind: top('mainthread-work-breakdown', 'groupLabel', 'duration'), byScript: top('bootup-time', 'url', 'total') },
       scores, metrics, requests: requests.length,
       transferBytes: requests.reduce((sum, r) => sum + (r.transferSize ?? 0), 0),
-      warnings: lhr.runWarnings, benchmarkIndex: lhr.environment?.benchmarkIndex,
+      requestsByFolder: byFolder(requests),
+      // How busy the machine was (TBT is the page's main-thread time, 4x, so a shared machine's load shows in it).
+      warnings: lhr.runWarnings, benchmarkIndex: lhr.environment?.benchmarkIndex, loadavg: os.loadavg()[0],
       misses: Object.fromEntries(CATEGORIES.map((c) => [c, misses(lhr, c)])),
       legibleText: lhr.audits['font-size']?.displayValue ?? null,
     };
@@ -104,7 +127,8 @@ function summary(runs) {
   return {
     scores, ranges: Object.fromEntries(CATEGORIES.map((c) => [c, range(c)])), metrics,
     requests: median(runs.map((r) => r.requests)), transferBytes: median(runs.map((r) => r.transferBytes)),
-    legibleText: typical.legibleText, misses: typical.misses,
+    legibleText: typical.legibleText, requestsByFolder: typical.requestsByFolder, mainThread: typical.mainThread, misses: typical.misses,
+    typical,
   };
 }
 
@@ -143,10 +167,19 @@ for (const pdf of pdfs) {
         const s = run.scores;
         console.log(`[${name} ${rep + 1}/${reps}] ${road}: Performance ${s.performance}, Accessibility ${s.accessibility}, Best Practices ${s['best-practices']}, `
           + `SEO ${s.seo}; FCP ${(run.metrics.fcp / 1000).toFixed(1)} s, LCP ${(run.metrics.lcp / 1000).toFixed(1)} s, TBT ${Math.round(run.metrics.tbt)} ms, `
-          + `${run.requests} requests, ${(run.transferBytes / 1024).toFixed(0)} KB; legible text ${run.legibleText ?? '-'} (${((Date.now() - t0) / 1000).toFixed(0)} s)`);
+          + `${run.requests} requests, ${(run.transferBytes / 1024).toFixed(0)} KB; legible text ${run.legibleText ?? '-'}; `
+          + `CPU benchmark index ${Math.round(run.benchmarkIndex)}, load ${run.loadavg.toFixed(1)} (${((Date.now() - t0) / 1000).toFixed(0)} s)`);
       }
     }
-    for (const road of roads) results.push({ pdf: path.basename(pdf), road, url: urls[road], reps, ...summary(runs[road]), runs: runs[road] });
+    for (const road of roads) {
+      const { typical, ...figures } = summary(runs[road]);
+      // The typical run's whole report, for what the summary leaves out (open it in the Lighthouse viewer).
+      fs.mkdirSync(out, { recursive: true });
+      const report = path.join(out, `lighthouse-${name}-${road}.report.json`);
+      fs.writeFileSync(report, JSON.stringify(typical.lhr));
+      results.push({ pdf: path.basename(pdf), road, url: urls[road], reps, report: path.relative(root, report), ...figures,
+        runs: runs[road].map(({ lhr, ...run }) => run) });
+    }
   } finally {
     for (const server of servers) server.close();
   }
@@ -171,6 +204,9 @@ for (const r of results) {
 console.log('\nWhat costs the points (the run nearest the median Performance):');
 for (const r of results) {
   console.log(`${r.pdf}, ${ROAD[r.road]}:`);
+  console.log(`  main thread: ${r.mainThread.byKind.map(([kind, ms]) => `${kind} ${ms} ms`).join(', ')}`);
+  console.log(`  by script: ${r.mainThread.byScript.map(([url, ms]) => `${url.replace(/^https?:\/\/[^/]+/, '')} ${ms} ms`).join(', ')}`);
+  console.log(`  requests by folder: ${Object.entries(r.requestsByFolder).slice(0, 8).map(([folder, n]) => `${folder} ${n}`).join(', ')}`);
   for (const c of CATEGORIES) {
     for (const m of r.misses[c]) {
       if (c === 'performance' && m.weight === 0 && !m.savingsMs) continue;  // diagnostics with no time to win
