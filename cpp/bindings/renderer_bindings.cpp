@@ -35,7 +35,8 @@ std::unique_ptr<BookRenderer> createRenderer(const std::string& canvasTarget, va
     return renderer;
 }
 
-// { lighting, shadows, gutter }: booleans; movingScale: a number in (0, 1]; missing keys keep their
+// { lighting, shadows, gutter }: booleans; movingScale: a number in (0, 1]; showThrough: a number in
+// [0, 1]; missing keys keep their
 // value. (The paper's thickness is the Book's: Book.setThickness.)
 void setOptions(BookRenderer& r, val options) {
     RenderOptions next = r.options();
@@ -53,6 +54,12 @@ void setOptions(BookRenderer& r, val options) {
         const double value = scale.isNumber() ? scale.as<double>() : 0.0;
         if (!(value > 0.0 && value <= 1.0)) js::throwError("RangeError", "movingScale must be a number above 0, at most 1");
         next.movingScale = value;
+    }
+    const val through = options["showThrough"];
+    if (!through.isUndefined()) {
+        const double value = through.isNumber() ? through.as<double>() : -1.0;
+        if (!(value >= 0.0 && value <= 1.0)) js::throwError("RangeError", "showThrough must be a number from 0 to 1");
+        next.showThrough = value;
     }
     r.setOptions(next);
 }

@@ -14,6 +14,10 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kHeldCatchUpSeconds = 0.05;
 constexpr double kHeldSnapRadians = 0.08;
 constexpr double kHeldSnapApexLog = 0.25;
+// Single display: how far the view moves towards the turned side while a leaf stands on its spine, a
+// share of the page width. The page fills the view there, so without it a turning leaf leaves the
+// canvas a quarter of the way through its turn; with it the curl stays in view (issue 40).
+constexpr double kSingleTurnRoom = 0.5;
 }
 
 CurlParams rigidTurnAt(double progress, double pageHeight) {
@@ -320,7 +324,15 @@ double Book::centerShiftHolding(const CurlParams& pose) const {
 }
 
 double Book::shiftOf(const BookFrame& f) const {
-    if (!config_.center || config_.display == Display::Single) return 0.0;
+    if (config_.display == Display::Single) {
+        // Room on the spine's side as a leaf rises over it: the most any leaf in flight stands up.
+        double standing = 0.0;
+        for (int i = 0; i < f.count; ++i) {
+            if (!f.leaves[i].resting) standing = std::max(standing, std::sin(f.leaves[i].curl.rho));
+        }
+        return -kSingleTurnRoom * config_.pageWidth * standing;
+    }
+    if (!config_.center) return 0.0;
     // How much of a page lies on each side, leaf by leaf: a leaf turned by rho covers the turned side
     // by (1 - cos rho) / 2 of its width. A backward turn is posed mirrored: its rho runs the other way.
     double turnedSide = 0.0;

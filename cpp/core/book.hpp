@@ -135,9 +135,11 @@ public:
     // How far the camera moves along the spine's normal, towards the unturned side, so what is in
     // view sits in the middle: half a page width (plus half the edge band of the stack under it, see
     // book_stacks.hpp) towards a front cover alone on the unturned side, back again as it turns open;
-    // the same the other way for a back cover alone. 0 for an open book, in single display or with
-    // config.center off. It follows the leaves' rotation, so the book slides as part of the turn (and
-    // of a drag) with no jump.
+    // the same the other way for a back cover alone. 0 for an open book or with config.center off. In
+    // single display, where the page fills the view, it moves towards the turned side while a leaf
+    // turns, up to half a page width as a leaf stands on its spine, so the curl stays in view; 0 at
+    // rest. It follows the leaves' rotation, so the book slides as part of the turn (and of a drag)
+    // with no jump.
     double centerShift() const;
     // The same once turns in flight have landed (where the open pages will lie).
     double settledCenterShift() const;

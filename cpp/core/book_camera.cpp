@@ -90,6 +90,20 @@ OpenPages openPagePlaces(const Book& book, const BookCamera& camera) {
     return open;
 }
 
+double leafShareInView(const BookCamera& camera, const BookConfig& config, const LeafDraw& draw, int n) {
+    n = std::max(1, n);
+    int inside = 0;
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+            // Cell centres: each stands for an equal area of the flat page.
+            const glm::dvec2 q((i + 0.5) / n * config.pageWidth, (j + 0.5) / n * config.pageHeight);
+            const glm::dvec2 pixel = worldToPixel(camera, leafPointToWorld(draw, config.binding, config.pageHeight, q));
+            if (pixel.x >= 0.0 && pixel.x <= camera.width && pixel.y >= 0.0 && pixel.y <= camera.height) ++inside;
+        }
+    }
+    return static_cast<double>(inside) / (static_cast<double>(n) * n);
+}
+
 glm::dvec2 worldToPixel(const BookCamera& camera, glm::dvec3 world) {
     const glm::dvec4 clip = camera.viewProjection * glm::dvec4(world, 1.0);
     const double w = clip.w > 1e-12 ? clip.w : 1e-12;  // behind the eye cannot happen for a book

@@ -57,6 +57,10 @@ struct OpenPages { std::array<PagePlace, 2> places{}; int count = 0; };
 // the turned side first.
 OpenPages openPagePlaces(const Book& book, const BookCamera& camera);
 
+// The share of `draw`'s paper, by area, that projects inside the camera's canvas (what hides it
+// aside): how much of a turning leaf the reader can see. Sampled on an n x n grid of page points.
+double leafShareInView(const BookCamera& camera, const BookConfig& config, const LeafDraw& draw, int n = 64);
+
 // Canvas pixel (x right, y down, origin at the top-left corner) of a world point.
 glm::dvec2 worldToPixel(const BookCamera& camera, glm::dvec3 world);
 

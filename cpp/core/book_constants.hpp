@@ -28,5 +28,7 @@ inline constexpr double kMaxLeafThickness = 0.02;  // the largest the thickness 
 inline constexpr int kPaperRed = 250;  // placeholder paper, shown before a page's image arrives
 inline constexpr int kPaperGreen = 247;
 inline constexpr int kPaperBlue = 240;
+// How much of a leaf's print shows through its blank back (single display) by default: thin paper.
+inline constexpr double kDefaultShowThrough = 0.1;
 
 }  // namespace conecurl

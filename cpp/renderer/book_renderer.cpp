@@ -52,6 +52,15 @@ constexpr int kDefaultRows = 48;                     // before the first canvas 
 const glm::vec3 kLightDirection = glm::normalize(glm::vec3(-0.35f, 0.45f, 1.0f));  // upper left, in front
 constexpr std::uint8_t kPaper[4] = {kPaperRed, kPaperGreen, kPaperBlue, 255};
 
+// The whole pixels of a `width` x `height` target that points of the page plane move by from camera
+// `from` to camera `to`: the same for all of them when the camera only slid along the plane.
+std::array<int, 2> pixelOffset(const glm::mat4& from, const glm::mat4& to, int width, int height) {
+    const glm::vec4 a = from * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    const glm::vec4 b = to * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    return {static_cast<int>(std::lround((b.x / b.w - a.x / a.w) * 0.5f * static_cast<float>(width))),
+            static_cast<int>(std::lround((b.y / b.w - a.y / a.w) * 0.5f * static_cast<float>(height)))};
+}
+
 // Digits of a whole number; std::to_string's snprintf would bring printf's float formatting into the wasm.
 std::string decimal(int n) {
     if (n < 0) return "-" + decimal(-n);
@@ -95,7 +104,7 @@ void BookRenderer::locate(Program& program) {
         "uCurl", "uCurlTrig", "uNormalStep", "uPageToWorld", "uViewProjection", "uLightDirection",
         "uFacingTexture", "uAwayTexture", "uFacingUv", "uAwayUv", "uPageSize", "uEye", "uLighting", "uGutter",
         "uLeaf", "uShadowMask", "uViewportInverse", "uPaper", "uShadowStrength", "uPenumbra",
-        "uFlatLight", "uCache"};
+        "uFlatLight", "uCache", "uCacheOffset", "uShowThrough", "uMirrorLight", "uMirroredLight"};
     for (int u = 0; u < kUniformCount; ++u) program.location[u] = glGetUniformLocation(program.id, kNames[u]);
     program.known.fill(false);
 }
@@ -460,6 +469,13 @@ BookRenderer::Camera BookRenderer::cameraFor(const Book& book, int width, int he
                   static_cast<float>(c.magnification)};
 }
 
+BookRenderer::Camera BookRenderer::restingCameraFor(const Book& book, int width, int height) const {
+    if (book.zoom().scale > 1.0) return cameraFor(book, width, height);
+    const BookCamera c = bookCamera(book.config(), width, height, book.zoom(), 0.0);
+    return Camera{glm::mat4(c.viewProjection), glm::vec3(c.eye), static_cast<float>(c.pixelsPerUnit),
+                  static_cast<float>(c.magnification)};
+}
+
 void BookRenderer::ensureShadowTarget(int width, int height) {
     const int w = std::max(1, width / kShadowDownscale);
     const int h = std::max(1, height / kShadowDownscale);
@@ -507,6 +523,20 @@ void BookRenderer::setSurfaceUniforms(const Book& book, const LeafDraw& leaf, co
     setUniform(p, uGutter, options_.gutter ? (leaf.hard ? 2.0f : 1.0f) : 0.0f);
     const int facingPage = placement.facingIsBackPage ? leaf.backPage : leaf.frontPage;
     const int awayPage = placement.facingIsBackPage ? leaf.frontPage : leaf.backPage;
+    // A blank side of soft paper (single display's back) shows the other side's print through it and,
+    // in single display, takes the light mirrored across the spine (page.frag says why). A board's
+    // blank side stays board.
+    const bool paper = !leaf.hard;
+    const bool single = c.display == Display::Single;
+    const float amount = paper ? static_cast<float>(options_.showThrough) : 0.0f;
+    const float showThrough[2] = {facingPage == kNoPage ? amount : 0.0f, awayPage == kNoPage ? amount : 0.0f};
+    const float mirror[2] = {paper && single && facingPage == kNoPage ? 1.0f : 0.0f,
+                             paper && single && awayPage == kNoPage ? 1.0f : 0.0f};
+    glm::vec3 mirrored = kLightDirection;
+    if (c.binding == Binding::Top) mirrored.y = -mirrored.y; else mirrored.x = -mirrored.x;
+    setUniform(p, uShowThrough, showThrough, 2);
+    setUniform(p, uMirrorLight, mirror, 2);
+    setUniform(p, uMirroredLight, glm::value_ptr(mirrored), 3);
     bindTexture(0, textureFor(facingPage));
     bindTexture(1, textureFor(awayPage));
 }
@@ -644,7 +674,7 @@ WorldBox BookRenderer::restingBox(const Book& book, const BookFrame& frame) cons
     return box;
 }
 
-void BookRenderer::composeRestingSpread(GLuint target, bool shadows, int width, int height) {
+void BookRenderer::composeRestingSpread(GLuint target, bool shadows, int width, int height, std::array<int, 2> offset) {
     // On a multisampled canvas one triangle covers it all (the cache is clear outside what rests),
     // over the depth cleared alone: SwiftShader left such a canvas blank where a colour clear came
     // before the triangle. Elsewhere only the pixels that hold what rests, the rest cleared.
@@ -652,9 +682,10 @@ void BookRenderer::composeRestingSpread(GLuint target, bool shadows, int width, 
     glClear((multisampled ? 0 : GL_COLOR_BUFFER_BIT) | GL_DEPTH_BUFFER_BIT);
     const auto [x, y, w, h] = restingRect_;
     if (!multisampled && (w == 0 || h == 0)) return;
+    const auto [dx, dy] = offset;
     if (!shadows && !multisampled) {
         glBindFramebuffer(GL_READ_FRAMEBUFFER, cacheFramebuffer_);
-        glBlitFramebuffer(x, y, x + w, y + h, x, y, x + w, y + h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        glBlitFramebuffer(x, y, x + w, y + h, x + dx, y + dy, x + w + dx, y + h + dy, GL_COLOR_BUFFER_BIT, GL_NEAREST);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, target);  // readPixels reads the canvas
         return;
     }
@@ -662,18 +693,20 @@ void BookRenderer::composeRestingSpread(GLuint target, bool shadows, int width, 
     // multisampled drawing buffer takes no blit either: the triangle copies each pixel's texel.)
     if (!multisampled) {
         glEnable(GL_SCISSOR_TEST);
-        glScissor(x, y, w, h);
+        glScissor(x + dx, y + dy, w, h);
     }
     if (shadows) bindTexture(2, shadowTexture_);
-    drawComposite(cacheTexture_, width, height, shadows);
+    drawComposite(cacheTexture_, width, height, shadows, offset);
     glDisable(GL_SCISSOR_TEST);
 }
 
-void BookRenderer::drawComposite(GLuint texture, int width, int height, bool shadowed) {
+void BookRenderer::drawComposite(GLuint texture, int width, int height, bool shadowed, std::array<int, 2> offset) {
     useProgram(compositeProgram_);
     bindTexture(3, texture);
     const float viewportInverse[2] = {1.0f / static_cast<float>(width), 1.0f / static_cast<float>(height)};
+    const float cacheOffset[2] = {static_cast<float>(offset[0]), static_cast<float>(offset[1])};
     setUniform(compositeProgram_, uViewportInverse, viewportInverse, 2);
+    setUniform(compositeProgram_, uCacheOffset, cacheOffset, 2);
     setUniform(compositeProgram_, uShadowStrength, shadowed ? 1.0f : 0.0f);
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }
@@ -731,7 +764,7 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
         glViewport(0, 0, width, height);
         glClear(GL_COLOR_BUFFER_BIT);
         drawRestingSpread(book, frame, camera);
-        lastViewProjection_ = camera.viewProjection;
+        lastViewProjection_ = restingCameraFor(book, width, height).viewProjection;
         lastFrameScale_ = 1.0;
         return;
     }
@@ -768,24 +801,27 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
     glViewport(0, 0, targetWidth, targetHeight);
 
     // What rests: drawn into the target once, as a resting book draws it, and copied into the cache;
-    // every frame lays the cache down (the shadow on it), until what rests changes (restingKey).
-    const RestingKey key = restingKey(book, frame, camera, targetWidth, targetHeight);
+    // every frame lays the cache down (the shadow on it), until what rests changes (restingKey). It is
+    // cached through the unshifted camera, and laid down where this frame's shift puts it.
+    const Camera still = restingCameraFor(book, width, height);
+    const std::array<int, 2> offset = pixelOffset(still.viewProjection, camera.viewProjection, targetWidth, targetHeight);
+    const RestingKey key = restingKey(book, frame, still, targetWidth, targetHeight);
     // The depth, for the moving leaves below. Cleared first: a browser clears a composited canvas
     // lazily at the frame's first clear or draw, which would wipe a blit made before it.
     glDepthMask(GL_TRUE);
     bool laid = false;  // what rests is on the target already, as it is to be shown
     if (key != restingKey_) {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        drawRestingSpread(book, frame, camera);
+        drawRestingSpread(book, frame, still);
         ++restingSpreadDraws_;
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, cacheFramebuffer_);
         glBlitFramebuffer(0, 0, targetWidth, targetHeight, 0, 0, targetWidth, targetHeight, GL_COLOR_BUFFER_BIT, GL_NEAREST);
         glBindFramebuffer(GL_FRAMEBUFFER, target);
         // Two pixels about it: the edges' antialiasing and rounding.
-        restingRect_ = pixelRect(restingBox(book, frame), camera.viewProjection, targetWidth, targetHeight, 2);
-        // While the camera moves (a closed book centring as it opens) every frame draws the spread
-        // anew: it is kept only once the camera holds still for a frame.
-        if (camera.viewProjection != lastViewProjection_) {
+        restingRect_ = pixelRect(restingBox(book, frame), still.viewProjection, targetWidth, targetHeight, 2);
+        // While the unshifted camera moves (a change of size) every frame draws the spread anew: it is
+        // kept only once the camera holds still for a frame.
+        if (still.viewProjection != lastViewProjection_) {
             invalidateRestingSpread();
         } else {
             restingKey_ = key;
@@ -796,10 +832,10 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
             cachedTextures_[n++] = textureFor(frame.leaves[i].frontPage);
             cachedTextures_[n++] = textureFor(frame.leaves[i].backPage);
         }
-        laid = !shadows;  // with the shadow it is laid down again below, darkened
+        laid = !shadows && offset == std::array<int, 2>{0, 0};  // else laid down again below: darkened, or moved
     }
-    if (!laid) composeRestingSpread(target, shadows, targetWidth, targetHeight);
-    lastViewProjection_ = camera.viewProjection;
+    if (!laid) composeRestingSpread(target, shadows, targetWidth, targetHeight, offset);
+    lastViewProjection_ = still.viewProjection;
 
     // The moving leaves, over everything that rests (they lie above the page plane, nearer the eye).
     // Depth is tested only among them: where leaves overlap each other, or a curl over its own leaf.

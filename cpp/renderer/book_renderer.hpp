@@ -44,6 +44,9 @@ struct RenderOptions {
     // The share of the drawing buffer's width and height a frame with moving leaves is drawn at, in
     // (0, 1]: below 1 it is drawn offscreen and scaled up to the canvas. Resting frames are always whole.
     double movingScale = 1.0;
+    // How much of the other side's print shows through a blank side of a soft leaf (single display's
+    // back), in [0, 1]: thin paper held to the light. 0: none.
+    double showThrough = kDefaultShowThrough;
 };
 
 class BookRenderer {
@@ -141,7 +144,8 @@ private:
     enum Uniform : int {
         uCurl, uCurlTrig, uNormalStep, uPageToWorld, uViewProjection, uLightDirection, uFacingTexture,
         uAwayTexture, uFacingUv, uAwayUv, uPageSize, uEye, uLighting, uGutter, uLeaf, uShadowMask,
-        uViewportInverse, uPaper, uShadowStrength, uPenumbra, uFlatLight, uCache, kUniformCount
+        uViewportInverse, uPaper, uShadowStrength, uPenumbra, uFlatLight, uCache, uCacheOffset, uShowThrough,
+        uMirrorLight, uMirroredLight, kUniformCount
     };
     // A linked program, its uniform locations (looked up once: the per-frame path makes no string
     // lookups) and the value each uniform was last given, so an unchanged value costs no GL call.
@@ -169,6 +173,11 @@ private:
     void updateGrid(const Book& book, const Camera& camera, int width, int height);
     void uploadGrid();
     Camera cameraFor(const Book& book, int width, int height) const;
+    // The camera what rests is cached through while leaves move: the book's with no centre shift. The
+    // shift slides the camera along the page plane, which moves everything on it by the same pixels, so
+    // one cache serves every frame of a turn, laid down that many pixels away (cacheOffset). Zoomed in,
+    // what would slide into view lies outside the cache: then it is the book's camera itself.
+    Camera restingCameraFor(const Book& book, int width, int height) const;
     void ensureShadowTarget(int width, int height);
     void drawLeaf(const Book& book, const LeafDraw& leaf, const Camera& camera);
     // A resting leaf with the flat program (the side seen and its light decided here, once).
@@ -187,7 +196,7 @@ private:
     // Lays the cached resting spread over the target (`target`: 0 for the canvas, else the scaled
     // frame's framebuffer), over its rectangle: with the shadow, a draw that darkens it by the mask;
     // without, a blit (a draw on a multisampled canvas, which takes no blit).
-    void composeRestingSpread(GLuint target, bool shadows, int width, int height);
+    void composeRestingSpread(GLuint target, bool shadows, int width, int height, std::array<int, 2> offset);
     // Where what rests lies in the world: the resting pages, the stacks' faces and the marks on them.
     WorldBox restingBox(const Book& book, const BookFrame& frame) const;
     // The offscreen target of a scaled moving frame (colour texture and depth), then its scaling up
@@ -196,7 +205,7 @@ private:
     void presentScaledFrame(int width, int height);
     // Lays `texture` over the bound target's `width` x `height` pixels with the composite program
     // (unit 3), darkened by the shadow mask (unit 2) when `shadowed`.
-    void drawComposite(GLuint texture, int width, int height, bool shadowed);
+    void drawComposite(GLuint texture, int width, int height, bool shadowed, std::array<int, 2> offset = {0, 0});
     // The stacks' edge faces: their buffer is rebuilt only when what they depend on changes.
     void updateStacks(const Book& book);
     void drawStacks(const Camera& camera);

@@ -1,5 +1,6 @@
-// Native (GoogleTest via CTest) tests of two motions of the whole book: riffling to a far position
-// (several leaves in flight, landing within kRiffleSpan turns) and a closed book centred in the view.
+// Native (GoogleTest via CTest) tests of motions of the whole book: riffling to a far position (several
+// leaves in flight, landing within kRiffleSpan turns), a closed book centred in the view, and the view
+// of a single page leaving the spine's side room while a leaf turns.
 #include "book.hpp"
 
 #include <gtest/gtest.h>
@@ -293,6 +294,111 @@ TEST(CenterShift, TheCameraLooksAtTheMiddleOfWhatIsOpenSoAClosedBookHasEqualMarg
         const double left = std::min(both.places[0].rect.x, both.places[1].rect.x);
         const double right = std::max(both.places[0].rect.x + both.places[0].rect.width, both.places[1].rect.x + both.places[1].rect.width);
         EXPECT_NEAR(left, 800 - right, 1e-6);  // the open book where it always was
+    }
+}
+
+// A single-display book on a phone's screen (ratio 3, portrait; landscape for a calendar's spine).
+struct PhoneBook {
+    Book book;
+    int width;
+    int height;
+};
+PhoneBook phoneBook(Binding binding) {
+    Book book = makeBook(8, Display::Single, binding);
+    book.jumpTo(3);
+    const bool top = binding == Binding::Top;
+    return PhoneBook{book, top ? 2532 : 1170, top ? 1170 : 2532};
+}
+
+// The share of the turning leaf's paper inside the canvas at progress t, through the book's camera, and
+// through the same camera with no centre shift (a view that stays where it is).
+std::pair<double, double> turningShareInView(PhoneBook& phone, double t) {
+    phone.book.setLatestTurnProgress(t);
+    const BookFrame frame = phone.book.frame();
+    const conecurl::BookConfig& c = phone.book.config();
+    const conecurl::BookCamera moving = conecurl::bookCamera(phone.book, phone.width, phone.height);
+    const conecurl::BookCamera still = conecurl::bookCamera(c, phone.width, phone.height, phone.book.zoom(), 0.0);
+    for (int i = 0; i < frame.count; ++i) {
+        if (frame.leaves[i].resting) continue;
+        return {conecurl::leafShareInView(moving, c, frame.leaves[i]), conecurl::leafShareInView(still, c, frame.leaves[i])};
+    }
+    ADD_FAILURE() << "no leaf in flight";
+    return {0.0, 0.0};
+}
+
+TEST(SingleTurnRoom, TheViewMovesTowardsTheSpineAsALeafRisesSoMostOfTheCurlStaysOnAPhonesScreen) {
+    const double ts[4] = {0.15, 0.3, 0.45, 0.6};
+    const double least[4] = {0.95, 0.95, 0.75, 0.6};  // a forward turn: the leaf's paper inside the canvas
+    for (Binding binding : {Binding::Left, Binding::Right, Binding::Top}) {
+        PhoneBook phone = phoneBook(binding);
+        ASSERT_TRUE(phone.book.startTurn(conecurl::TurnDirection::Forward));
+        for (int i = 0; i < 4; ++i) {
+            const auto [moving, still] = turningShareInView(phone, ts[i]);
+            EXPECT_GE(moving, least[i]) << "binding " << static_cast<int>(binding) << " t=" << ts[i];
+            // A view that stayed put would lose the leaf off the spine's edge from a quarter of the way on.
+            if (ts[i] >= 0.3) EXPECT_GT(moving, still + 0.3) << "binding " << static_cast<int>(binding) << " t=" << ts[i];
+        }
+        // A backward turn brings the leaf in from beyond the spine: in view far sooner, on the whole.
+        PhoneBook back = phoneBook(binding);
+        ASSERT_TRUE(back.book.startTurn(conecurl::TurnDirection::Backward));
+        double moving = 0.0;
+        double still = 0.0;
+        for (double t : ts) {
+            const auto [m, s] = turningShareInView(back, t);
+            moving += m / 4.0;
+            still += s / 4.0;
+        }
+        EXPECT_GT(moving, still + 0.1) << "binding " << static_cast<int>(binding);
+        EXPECT_GT(moving, 0.7) << "binding " << static_cast<int>(binding);
+    }
+}
+
+TEST(SingleTurnRoom, TheViewIsStillAtRestAndMovesWithNoJumpFromTheTurnsStartToItsLanding) {
+    for (Binding binding : {Binding::Left, Binding::Right, Binding::Top}) {
+        for (auto direction : {conecurl::TurnDirection::Forward, conecurl::TurnDirection::Backward}) {
+            PhoneBook phone = phoneBook(binding);
+            const double w = phone.book.config().pageWidth;
+            EXPECT_EQ(phone.book.centerShift(), 0.0);
+            ASSERT_TRUE(phone.book.startTurn(direction));
+            EXPECT_NEAR(phone.book.centerShift(), 0.0, 1e-12);  // no jump as it starts
+            double previous = 0.0;
+            double most = 0.0;
+            for (int i = 1; i <= 200; ++i) {
+                phone.book.setLatestTurnProgress(i / 200.0);
+                const double shift = phone.book.centerShift();
+                EXPECT_LE(shift, 0.0);  // towards the turned side, where the spine's room is
+                EXPECT_LT(std::abs(shift - previous), 0.02 * w) << "step " << i;  // 1/200 of the turn moves it little
+                most = std::min(most, shift);
+                previous = shift;
+            }
+            EXPECT_NEAR(most, -0.5 * w, 0.01 * w);  // half a page width as the leaf stands on its spine
+            EXPECT_NEAR(phone.book.centerShift(), 0.0, 1e-9);  // back where it was as the leaf lands
+            EXPECT_EQ(phone.book.settledCenterShift(), 0.0);
+        }
+    }
+}
+
+TEST(SingleTurnRoom, ADraggedLeafIsSolvedThroughTheCameraOfItsOwnPoseSoItsCornerStaysUnderTheFinger) {
+    for (Binding binding : {Binding::Left, Binding::Right}) {
+        PhoneBook phone = phoneBook(binding);
+        Book& book = phone.book;
+        const conecurl::BookCamera rest = conecurl::bookCamera(book, phone.width, phone.height);
+        const conecurl::PixelRect r = conecurl::openPagePlaces(book, rest).places[0].rect;
+        const double freeX = binding == Binding::Left ? r.x + r.width - 6.0 : r.x + 6.0;
+        const auto grip = conecurl::gripAt(book, rest, {freeX, r.y + r.height - 6.0});
+        ASSERT_TRUE(grip);
+        ASSERT_TRUE(book.startHeldTurn(conecurl::TurnDirection::Forward, grip->flippedY));
+        double worst = 0.0;
+        for (int i = 1; i <= 10; ++i) {
+            const conecurl::CurlParams target = book.scheduledPose(book.heldLeaf(), 0.06 * i);
+            const conecurl::BookCamera seen =
+                conecurl::bookCamera(book.config(), phone.width, phone.height, book.zoom(), book.centerShiftHolding(target));
+            const glm::dvec2 finger = conecurl::gripPixel(book, seen, *grip, target);
+            book.setHeldPose(conecurl::solveSlidingDragPose(book, phone.width, phone.height, *grip, finger, book.heldTarget()).pose);
+            const glm::dvec2 drawn = conecurl::gripPixel(book, conecurl::bookCamera(book, phone.width, phone.height), *grip, book.heldPose());
+            worst = std::max(worst, glm::length(drawn - finger));
+        }
+        EXPECT_LT(worst, 0.5) << "binding " << static_cast<int>(binding);  // device pixels
     }
 }
 

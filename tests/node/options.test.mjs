@@ -29,6 +29,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     lighting: 'true or false',
     shadows: 'true or false',
     gutter: 'true or false',
+    showThrough: 'a number from 0 (none) to 1',
     thickness: "true, false or a leaf's thickness as a fraction of the page width (0 to 0.02)",
     loadWindow: 'a whole number of pages from 1',
     wasmUrl: 'a URL string',
@@ -62,6 +63,7 @@ test('node: every option refuses NaN, negative, wrong-type values with a TypeErr
     lighting: ['yes', 0, NaN],
     shadows: ['false', -1],
     gutter: [null, 'off'],
+    showThrough: [NaN, -0.1, 1.01, Infinity, '0.1', null, true],
     thickness: [NaN, -0.001, 0.021, Infinity, '0.004', null],
     loadWindow: [NaN, -2, 0, 2.5, '4', Infinity],
     wasmUrl: [42, null, {}, NaN],
@@ -126,7 +128,7 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses(null, 'options must be an object, got null');
   refuses('pages', 'options must be an object, got "pages"');
   refuses({ pages, colour: 'red' }, "unknown option 'colour' (allowed: pages, display, minPageWidth, direction, startPage, duration, schedule, center, hardCovers, "
-    + 'lighting, shadows, gutter, thickness, loadWindow, wasmUrl, label, fallback, hash, autoplay, sound, muted, rememberPage, antialias, resolution, turnArea, on, outline, download, edgeMarks, controls, labels, textLayer, readAloudMemory)');
+    + 'lighting, shadows, gutter, showThrough, thickness, loadWindow, wasmUrl, label, fallback, hash, autoplay, sound, muted, rememberPage, antialias, resolution, turnArea, on, outline, download, edgeMarks, controls, labels, textLayer, readAloudMemory)');
   refuses({ pages, antialias: 'yes' }, "option 'antialias' must be 'auto', true or false, got \"yes\"");
   refuses({ pages, startPage: 3 }, "option 'startPage' must be below the page count 3, got 3");
   // A value whose own toString throws or is huge is described, not called.
@@ -136,13 +138,15 @@ test('node: options that are not an object, unknown keys, and a start page past 
   refuses({ pages, display: 'x'.repeat(500) }, `option 'display' must be 'single', 'double' or 'auto', got "${'x'.repeat(57)}..."`);
 });
 
-test('node: setOptions takes only lighting, shadows, gutter, thickness, resolution, display, minPageWidth, sound and muted, checked; flip options are { animate: boolean }', () => {
+test('node: setOptions takes only lighting, shadows, gutter, showThrough, thickness, resolution, display, minPageWidth, sound and muted, checked; flip options are { animate: boolean }', () => {
   assert.deepEqual(checkLiveOptions({ lighting: false }, pages), { lighting: false });
   assert.deepEqual(checkLiveOptions({ minPageWidth: 150 }, pages), { minPageWidth: 150 });
   assert.throws(() => checkLiveOptions({ minPageWidth: -1 }, pages), /option 'minPageWidth' must be a positive number of CSS pixels, got -1/);
   assert.deepEqual(checkLiveOptions({ display: 'single' }, pages), { display: 'single' });
   assert.throws(() => checkLiveOptions({ display: 'triple' }, pages), /option 'display' must be 'single', 'double' or 'auto'/);
-  assert.throws(() => checkLiveOptions({ direction: 'rtl' }, pages), /option 'direction' cannot change on a live book \(only lighting, shadows, gutter, thickness, resolution, display, minPageWidth, sound, muted\)/);
+  assert.throws(() => checkLiveOptions({ direction: 'rtl' }, pages), /option 'direction' cannot change on a live book \(only lighting, shadows, gutter, showThrough, thickness, resolution, display, minPageWidth, sound, muted\)/);
+  assert.deepEqual(checkLiveOptions({ showThrough: 0 }, pages), { showThrough: 0 });
+  assert.throws(() => checkLiveOptions({ showThrough: 1.5 }, pages), /option 'showThrough' must be a number from 0 \(none\) to 1, got 1.5/);
   assert.deepEqual(checkLiveOptions({ resolution: 1.5 }, pages), { resolution: 1.5 });
   assert.deepEqual(checkLiveOptions({ resolution: 'full' }, pages), { resolution: 'full' });
   assert.throws(() => checkLiveOptions({ resolution: 0 }, pages), /option 'resolution' must be 'auto', 'full' or a positive number of device pixels per CSS pixel, got 0/);

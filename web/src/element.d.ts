@@ -17,7 +17,7 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
  * in kebab case, except `on` (listen on the element: it dispatches every book event): pages (URLs
  * separated by spaces; else the child elements: an <img> an image page, alt text kept, any other
  * element a live HTML page shown through a named slot), display, min-page-width, direction, start-page, duration,
- * schedule, center, hard-covers, lighting, shadows, gutter, hash, sound, muted, fallback
+ * schedule, center, hard-covers, lighting, shadows, gutter, show-through (0 to 1), hash, sound, muted, fallback
  * ("true"/"false"), thickness ("true"/"false"/a number), autoplay ("true"/"false"/the milliseconds
  * between turns), antialias ("auto"/"true"/"false"), resolution ("auto"/"full"/a number), turn-area ("page"/"edges"/"corners"/"none"),
  * label (the book's name for screen readers), load-window, remember-page, read-aloud-memory (a key, or "false"), wasm-url, pdf, pdf-worker-src, src (a published book.json: the document option; not named document, which would shadow the global document in inline event handlers),
@@ -25,7 +25,7 @@ export interface ConeFlipbookEventMap extends Omit<HTMLElementEventMap, 'error' 
  * controls (bare or "true": the toolbar; its parts as an object through the property), labels (the
  * toolbar's texts as a JSON object, or an object through the property),
  * text-layer ("true"/"false": a PDF's selectable text).
- * lighting, shadows, gutter, thickness, display, min-page-width, sound and muted apply to the running book; a change of
+ * lighting, shadows, gutter, show-through, thickness, display, min-page-width, sound and muted apply to the running book; a change of
  * any other builds a new book at the page shown.
  */
 export class ConeFlipbookElement extends HTMLElement {
@@ -65,6 +65,7 @@ export class ConeFlipbookElement extends HTMLElement {
   lighting: FlipbookOptions['lighting'];
   shadows: FlipbookOptions['shadows'];
   gutter: FlipbookOptions['gutter'];
+  showThrough: FlipbookOptions['showThrough'];
   thickness: FlipbookOptions['thickness'];
   antialias: FlipbookOptions['antialias'];
   resolution: FlipbookOptions['resolution'];

@@ -130,14 +130,14 @@ export class BookController extends EventTarget {
   }
 
   /**
-   * Switches lighting, shadows, gutter shading, thickness, resolution and display on a live book (same surface, same page);
+   * Switches lighting, shadows, gutter shading, show-through, thickness, resolution and display on a live book (same surface, same page);
    * other options need a new book.
    */
   setOptions(options) {
     this._alive();
     Object.assign(this._settings, checkLiveOptions(options, this._settings.pages));
-    const { lighting, shadows, gutter, thickness, resolution } = this._settings;
-    this._surface.setOptions({ lighting, shadows, gutter, thickness, resolution });
+    const { lighting, shadows, gutter, showThrough, thickness, resolution } = this._settings;
+    this._surface.setOptions({ lighting, shadows, gutter, showThrough, thickness, resolution });
     if ('display' in options || 'minPageWidth' in options) this._relayout();
     this._sound.update();
   }

@@ -228,6 +228,12 @@ export interface FlipbookOptions {
   shadows?: boolean;
   gutter?: boolean;
   /**
+   * How much of a page's print shows through the blank back of its leaf as it turns in single display
+   * (a phone), mirrored, as thin paper held to the light shows it: 0 (none) to 1. Default 0.1. A hard
+   * cover's back stays board. WebGL only. Changes live through setOptions.
+   */
+  showThrough?: number;
+  /**
    * The stacks of leaves under the open pages show their edges (fore-edge, head, tail), as deep as
    * the leaves on each side; hard covers show a board. true (default): a leaf 0.004 of the page width
    * thick; a number from 0 to 0.02: that thickness; false (or 0): no stacks. WebGL only: the 2D
@@ -629,7 +635,7 @@ export class BookController extends EventTarget {
   /** Puts `page` in the place of page `index`, as insertPages applies; a page on screen shows its old image until the new one is ready. */
   replacePage(index: number, page: PageSource | HTMLElement | PageEntry): Promise<PagesChangeDetail>;
   /** Switches the effects, the thickness, the resolution, the display (and minPageWidth) or the sound on a live book (same page); any other option is a TypeError (it needs a new book). */
-  setOptions(options: Pick<FlipbookOptions, 'lighting' | 'shadows' | 'gutter' | 'thickness' | 'resolution' | 'display' | 'minPageWidth' | 'sound' | 'muted'>): void;
+  setOptions(options: Pick<FlipbookOptions, 'lighting' | 'shadows' | 'gutter' | 'showThrough' | 'thickness' | 'resolution' | 'display' | 'minPageWidth' | 'sound' | 'muted'>): void;
   /** The page sound is muted (the `muted` option); setting it is setOptions({ muted }) (TypeError unless a boolean). */
   muted: boolean;
   /** What the page sound is doing, a snapshot for tools and tests; null after destroy(). */

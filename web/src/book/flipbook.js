@@ -162,6 +162,7 @@ export class Flipbook extends BookController {
       lighting: settings.lighting,
       shadows: settings.shadows,
       gutter: settings.gutter,
+      showThrough: settings.showThrough,
       thickness: settings.thickness,
       resolution: settings.resolution,
     });

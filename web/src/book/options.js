@@ -2,7 +2,7 @@
 // a TypeError that names the option and says what is allowed, before anything is built.
 import { BOOK_EVENTS } from './book-events.js';
 import { DIRECTIONS } from '../engine/direction.js';
-import { AUTO_MIN_PAGE_WIDTH, MAX_LEAF_THICKNESS, MAX_PAGES } from '../engine/layout.js';
+import { AUTO_MIN_PAGE_WIDTH, DEFAULT_SHOW_THROUGH, MAX_LEAF_THICKNESS, MAX_PAGES } from '../engine/layout.js';
 import { TURN_AREAS } from '../input/turn-area.js';
 import { checkResolution } from '../surfaces/moving-resolution.js';
 import { describeValue } from '../engine/describe-value.js';
@@ -27,6 +27,8 @@ const OPTION_CHECKS = {
   lighting: BOOLEAN,
   shadows: BOOLEAN,
   gutter: BOOLEAN,
+  // phone turn (issue 40): the print seen through a blank back (single display), as thin paper shows it.
+  showThrough: (v) => (Number.isFinite(v) && v >= 0 && v <= 1) || 'a number from 0 (none) to 1',
   thickness: (v) => typeof v === 'boolean' || (Number.isFinite(v) && v >= 0 && v <= MAX_LEAF_THICKNESS)
     || `true, false or a leaf's thickness as a fraction of the page width (0 to ${MAX_LEAF_THICKNESS})`,
   loadWindow: (v) => (Number.isInteger(v) && v >= 1) || 'a whole number of pages from 1',
@@ -74,14 +76,14 @@ export const DOCUMENT_OPTIONS = ['pdf', 'pdfWorkerSrc', 'document'];
 export const CREATE_OPTIONS = [...OPTION_NAMES, ...DOCUMENT_OPTIONS];
 export const DEFAULTS = {
   display: 'auto', minPageWidth: AUTO_MIN_PAGE_WIDTH, direction: 'ltr', startPage: 0, duration: 1000, schedule: 'paper', center: true, hardCovers: false,
-  lighting: true, shadows: true, gutter: true, thickness: true, loadWindow: 4, label: 'Book', fallback: true, hash: false,
+  lighting: true, shadows: true, gutter: true, showThrough: DEFAULT_SHOW_THROUGH, thickness: true, loadWindow: 4, label: 'Book', fallback: true, hash: false,
   autoplay: false, sound: false, muted: false, antialias: 'auto', resolution: 'auto',
   controls: false,
   textLayer: true,
   readAloudMemory: 'conecurl-read-aloud',  // engine/voice-choice.js DEFAULT_MEMORY_KEY
 };
 /** Options a live book takes through setOptions(); the others need a new book. */
-export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter', 'thickness', 'resolution', 'display', 'minPageWidth', 'sound', 'muted'];
+export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter', 'showThrough', 'thickness', 'resolution', 'display', 'minPageWidth', 'sound', 'muted'];
 const PAGE_ENTRY_KEYS = ['src', 'html', 'alt', 'hard', 'zoomSrc', 'thumbSrc', 'links', 'narration'];
 const PAGE_SOURCES = 'a URL string, HTMLImageElement, HTMLCanvasElement, ImageBitmap, Blob, '
   + 'a function returning one of these (or a Promise of one), or an HTML element (an HTML page)';

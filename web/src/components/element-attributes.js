@@ -81,6 +81,7 @@ export const ATTRIBUTES = {
   lighting: ['lighting', parseBoolean],
   shadows: ['shadows', parseBoolean],
   gutter: ['gutter', parseBoolean],
+  'show-through': ['showThrough', parseNumber],
   thickness: ['thickness', parseThickness],
   'load-window': ['loadWindow', parseNumber],
   hash: ['hash', parseBoolean],

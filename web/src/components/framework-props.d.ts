@@ -6,7 +6,7 @@ import type { StaticBook } from '../book/static-book.js';
 
 /**
  * The book's options as props, except `startPage` (use `page` or `defaultPage`) and `on` (use the
- * event props). `lighting`, `shadows`, `gutter`, `thickness`, `display`, `minPageWidth`, `sound` and `muted` apply to the running book, and so
+ * event props). `lighting`, `shadows`, `gutter`, `showThrough`, `thickness`, `display`, `minPageWidth`, `sound` and `muted` apply to the running book, and so
  * does a changed `pages` (the pages added, removed or replaced go in live: insertPages, removePages,
  * replacePage; the page shown follows, `pageschange` says so); a change of any other builds a new book
  * in the same box at the page shown.

@@ -1,12 +1,12 @@
 // The engine's layout in plain JS (positions, page places, zoom) for the 2D fallback, which has no wasm,
 // and the engine's constants for every JS module; tests/node/layout.test.mjs holds both to the engine.
 import {
-  DEFAULT_PAGE_HEIGHT, DEFAULT_PAGE_WIDTH, FRAME_MARGIN, MAX_LEAF_THICKNESS, MAX_PAGES, MAX_TURNS_IN_FLIGHT, MAX_ZOOM, PAPER_BLUE,
+  DEFAULT_PAGE_HEIGHT, DEFAULT_PAGE_WIDTH, DEFAULT_SHOW_THROUGH, FRAME_MARGIN, MAX_LEAF_THICKNESS, MAX_PAGES, MAX_TURNS_IN_FLIGHT, MAX_ZOOM, PAPER_BLUE,
   PAPER_GREEN, PAPER_RED, SINGLE_FRAME_MARGIN, TURN_QUEUED, TURN_REFUSED, TURN_STARTED,
 } from '../../../dist/engine-constants.js';
 import { directionFacts } from './direction.js';
 
-export { MAX_LEAF_THICKNESS, MAX_PAGES, MAX_TURNS_IN_FLIGHT, MAX_ZOOM, TURN_QUEUED, TURN_REFUSED, TURN_STARTED };
+export { DEFAULT_SHOW_THROUGH, MAX_LEAF_THICKNESS, MAX_PAGES, MAX_TURNS_IN_FLIGHT, MAX_ZOOM, TURN_QUEUED, TURN_REFUSED, TURN_STARTED };
 /** The renderer's placeholder paper, as a CSS colour. */
 export const PAPER = `rgb(${PAPER_RED}, ${PAPER_GREEN}, ${PAPER_BLUE})`;
 /** The engine's default page: width (spine to free edge) over height (along the spine). */

@@ -164,6 +164,11 @@ export interface RenderOptions {
   shadows?: boolean;
   gutter?: boolean;
   /**
+   * How much of the other side's print shows through a blank side of a soft leaf (single display's
+   * back), in [0, 1] (default 0.1): 0 none. RangeError outside [0, 1].
+   */
+  showThrough?: number;
+  /**
    * The share of the drawing buffer's width and height a frame with moving leaves is drawn at, in
    * (0, 1] (default 1): below 1 it is drawn offscreen at that scale and scaled up to the canvas (fewer
    * pixels shaded while a leaf moves). Resting frames are always drawn whole. RangeError outside (0, 1].

@@ -180,7 +180,7 @@ export class BookView {
     this.requestRender();
   }
 
-  /** lighting, shadows, gutter (the renderer's), thickness (the book's stacks), resolution (moving-resolution.js). */
+  /** lighting, shadows, gutter, showThrough (the renderer's), thickness (the book's stacks), resolution (moving-resolution.js). */
   setOptions({ thickness, resolution, ...effects }) {
     if (thickness !== undefined) this.book.setThickness(thickness);
     if (resolution !== undefined) this._resolution.setting = resolution;

@@ -122,7 +122,7 @@ export class CanvasSurface {
   }
 
   sizeChanged() { this._draw(); }
-  /** Lighting, shadows, gutter shading, thickness and resolution: flat still pages show none of them. */
+  /** Lighting, shadows, gutter shading, show-through, thickness and resolution: flat still pages show none of them. */
   setOptions() {}
 
   destroy() {

@@ -36,6 +36,7 @@ export function createEngineObjects(engine, canvas, options) {
   }
   renderer.setOptions({
     lighting: options.lighting ?? true, shadows: options.shadows ?? true, gutter: options.gutter ?? true,
+    ...(options.showThrough === undefined ? {} : { showThrough: options.showThrough }),
   });
   return { book, renderer, loop: new engine.FrameLoop(book, renderer), target };
 }
