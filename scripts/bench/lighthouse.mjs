@@ -6,7 +6,11 @@
 // lighthouse-<pdf>-<road>.report.json (the whole report of the run nearest the median) beside it.
 // Usage: node scripts/bench/lighthouse.mjs [--pdf book.pdf]... [--reps 3] [--out bench-results] [--republish]
 //        [--sites <folder> (published sites to reuse: <folder>/<name>/index.html; default <out>/lighthouse)]
-//        [--roads published,reader] [--port 8150]
+//        [--roads published,reader] [--port 8150 (and the next three)] [--quiet-load 3 (1.5 a core; wait, up to 2 minutes a run,
+//        for the 1-minute load average to fall under this: TBT is main-thread time x4, a busy machine's shows in it)]
+//        [--baseline <dir> (a checkout of an older commit, its node_modules and dist/ in place; its reader.html#file=
+//        is measured too, with the PDF at the same path under it)] [--baseline-sites <folder> (sites that commit
+//        published, <folder>/<name>/)]: before and after in one run, the roads alternated.
 // Without --pdf: the PDFs publish-rate.mjs leaves in build/bench-pdf/ (gnuplot.pdf, magazine-40.pdf).
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
@@ -25,7 +29,7 @@ const arg = (name, fallback) => {
   if (i >= 0 && i + 1 >= args.length) throw new Error(`lighthouse: ${name} needs a value`);
   return i >= 0 ? args[i + 1] : fallback;
 };
-const known = new Set(['--pdf', '--reps', '--out', '--republish', '--sites', '--roads', '--port']);
+const known = new Set(['--pdf', '--reps', '--out', '--republish', '--sites', '--roads', '--port', '--quiet-load', '--baseline', '--baseline-sites']);
 for (const [i, a] of args.entries()) {
   if (a.startsWith('--') && !known.has(a)) throw new Error(`lighthouse: unknown argument ${a} (known: ${[...known].join(' ')})`);
   if (a === '--republish') continue;
@@ -39,6 +43,9 @@ const out = path.resolve(root, arg('--out', 'bench-results'));
 const sitesDir = path.resolve(root, arg('--sites', path.join(out, 'lighthouse')));
 const roads = arg('--roads', 'published,reader').split(',');
 const port = Number(arg('--port', '8150'));
+const quietLoad = Number(arg('--quiet-load', String(1.5 * os.cpus().length)));
+const baselineRoot = args.includes('--baseline') ? path.resolve(arg('--baseline')) : null;
+const baselineSites = args.includes('--baseline-sites') ? path.resolve(arg('--baseline-sites')) : null;
 if (!Number.isInteger(reps) || reps < 1) throw new Error(`lighthouse: --reps must be a whole number from 1, got ${reps}`);
 if (roads.some((road) => !['published', 'reader'].includes(road))) throw new Error(`lighthouse: --roads takes published and reader, got ${roads}`);
 if (pdfs.length === 0) {
@@ -116,6 +123,25 @@ async function audit(url) {
   }
 }
 
+/** Waits (at most 2 minutes) for the machine's 1-minute load average to fall under --quiet-load. */
+async function quiet() {
+  const until = Date.now() + 120_000;
+  while (os.loadavg()[0] >= quietLoad && Date.now() < until) await new Promise((resolve) => setTimeout(resolve, 5000));
+}
+
+/** audit(url) once the machine is quiet; a run Lighthouse itself fails (NO_FCP on a starved machine) is tried twice more. */
+async function auditQuietly(url) {
+  for (let attempt = 1; ; attempt++) {
+    await quiet();
+    try {
+      return await audit(url);
+    } catch (error) {
+      if (attempt >= 3) throw error;
+      console.log(`lighthouse: try ${attempt} failed (${String(error.message).split('\n')[0]}); again`);
+    }
+  }
+}
+
 const median = (values) => (values.some((v) => v === null) ? null : summarize(values).median);
 
 /** The medians of a road's runs, and the misses of the run whose Performance is the median's (or nearest). */
@@ -151,18 +177,28 @@ for (const pdf of pdfs) {
       servers.push(server);
       urls.published = url;
     }
-    if (roads.includes('reader')) {
-      const pdfDir = path.relative(root, path.dirname(pdf));
+    const pdfDir = path.relative(root, path.dirname(pdf));
+    const pdfPath = [...pdfDir.split(path.sep), path.basename(pdf)].map(encodeURIComponent).join('/');
+    const readerOf = async (tree, at) => {
       if (pdfDir.startsWith('..')) throw new Error(`lighthouse: ${pdf} must be inside the repository (the reader's server serves it)`);
-      const { server, url } = await serveDirectory(root, { port: port + 1, compress: true });
+      if (!fs.existsSync(path.join(tree, pdfDir, path.basename(pdf)))) throw new Error(`lighthouse: ${tree} has no ${path.join(pdfDir, path.basename(pdf))}`);
+      const { server, url } = await serveDirectory(tree, { port: at, compress: true });
       servers.push(server);
-      urls.reader = `${url}web/reader/reader.html#file=/${[...pdfDir.split(path.sep), path.basename(pdf)].map(encodeURIComponent).join('/')}`;
+      return `${url}web/reader/reader.html#file=/${pdfPath}`;
+    };
+    if (roads.includes('reader')) urls.reader = await readerOf(root, port + 1);
+    if (roads.includes('published') && baselineSites) {
+      const { server, url } = await serveDirectory(path.join(baselineSites, name), { port: port + 2, compress: true });
+      servers.push(server);
+      urls['published-before'] = url;
     }
-    const runs = Object.fromEntries(roads.map((road) => [road, []]));
+    if (roads.includes('reader') && baselineRoot) urls['reader-before'] = await readerOf(baselineRoot, port + 3);
+    const measured = Object.keys(urls);
+    const runs = Object.fromEntries(measured.map((road) => [road, []]));
     for (let rep = 0; rep < reps; rep++) {
-      for (const road of rep % 2 ? [...roads].reverse() : roads) {
+      for (const road of rep % 2 ? [...measured].reverse() : measured) {
         const t0 = Date.now();
-        const run = await audit(urls[road]);
+        const run = await auditQuietly(urls[road]);
         runs[road].push(run);
         const s = run.scores;
         console.log(`[${name} ${rep + 1}/${reps}] ${road}: Performance ${s.performance}, Accessibility ${s.accessibility}, Best Practices ${s['best-practices']}, `
@@ -171,7 +207,7 @@ for (const pdf of pdfs) {
           + `CPU benchmark index ${Math.round(run.benchmarkIndex)}, load ${run.loadavg.toFixed(1)} (${((Date.now() - t0) / 1000).toFixed(0)} s)`);
       }
     }
-    for (const road of roads) {
+    for (const road of measured) {
       const { typical, ...figures } = summary(runs[road]);
       // The typical run's whole report, for what the summary leaves out (open it in the Lighthouse viewer).
       fs.mkdirSync(out, { recursive: true });
@@ -192,7 +228,7 @@ fs.writeFileSync(file, `${JSON.stringify({
   chromium: chromiumExecutable(), cpus: os.cpus().length, loadavg: os.loadavg(), results,
 }, null, 1)}\n`);
 
-const ROAD = { published: 'published site', reader: 'reader.html#file=' };
+const ROAD = { published: 'published site', reader: 'reader.html#file=', 'published-before': 'published site, before', 'reader-before': 'reader.html#file=, before' };
 console.log(`\nLighthouse ${JSON.parse(fs.readFileSync(path.join(root, 'node_modules/lighthouse/package.json'), 'utf8')).version}, mobile preset, served compressed; medians of ${reps}:`);
 console.log('| PDF | road | Performance | Accessibility | Best Practices | SEO | FCP | LCP | TBT | requests |');
 console.log('|---|---|---|---|---|---|---|---|---|---|');
