@@ -1,9 +1,11 @@
 // The README's picture and animation, made from the real renderer like the reference images: the demo's
 // book (web/demo/book-pages.js) in a Flipbook in Debian's Chromium (WebGL2 on SwiftShader), one turn
 // posed frame by frame with the book's own frozen-frame call (book.previewTurn(direction, t)), written
-// as docs/media/curl.png (one frame mid-curl) and docs/media/turn.png (an animated PNG of the turn).
+// as docs/media/curl.png (one frame mid-curl), docs/media/turn.png (an animated PNG of the turn) and
+// docs/media/phone-turn.png (the same turn as a phone shows it: one page at a time).
 // Usage: npm run readme-media (builds first), or node scripts/readme-media.mjs [--out DIR] [--frames N]
-// [--curl-t T] [--page N] [--scale S]; README_MEDIA_FRAME=file.png also writes the middle frame as a still.
+// [--curl-t T] [--page N] [--scale S]; README_MEDIA_FRAME=file.png also writes the middle frame as a still
+// (and the phone's as file-phone.png).
 // Look at both images before committing them.
 import fs from 'node:fs';
 import path from 'node:path';
@@ -28,6 +30,7 @@ const ANIMATION_SCALE = Number(arg('--scale', '0.75'));  // the animation is dra
 const FRAME_MS = 60;                               // each frame of the turn; the first and last are held
 const HOLD_MS = 900;
 const BACKGROUND = '#f3efe8';
+const PHONE = { width: 195, height: 375 };         // a phone's screen at half size: the single display
 
 // The page the browser opens: the demo's forty drawn pages in a Flipbook, as demo.js makes them.
 const PAGE = `<!doctype html>
@@ -37,11 +40,12 @@ const PAGE = `<!doctype html>
 <script type="module">
   import { Flipbook } from '/web/src/index.js';
   import { DEMO_PAGE_COUNT, drawBookPage, isHardPage } from '/web/demo/book-pages.js';
-  const start = Number(new URLSearchParams(location.search).get('page'));
+  const query = new URLSearchParams(location.search);
+  const start = Number(query.get('page'));
   const pages = Array.from({ length: DEMO_PAGE_COUNT }, (_, index) => ({ src: () => drawBookPage(index), hard: isHardPage(index) }));
   try {
     window.book = await Flipbook.create(document.getElementById('book'), {
-      pages, display: 'double', startPage: start, antialias: true, fallback: false,
+      pages, display: query.get('display'), startPage: start, antialias: true, fallback: false,
     });
     document.body.dataset.ready = 'yes';
   } catch (error) {
@@ -238,11 +242,11 @@ function encodeApng(rgbaFrames, delays, { palette = false } = {}) {
 // ---------------------------------------------------------------------------------------------------
 
 /** Opens the book at `size`, then returns a function that screenshots the frame of the next turn at t. */
-async function openBook(browser, url, size) {
+async function openBook(browser, url, size, display = 'double') {
   const page = await browser.newPage({ viewport: size, deviceScaleFactor: 1 });
   page.on('pageerror', (error) => console.error(`readme-media: page error: ${error.message}`));
   await page.route(`${url}readme-media.html*`, (route) => route.fulfill({ contentType: 'text/html', body: PAGE }));
-  await page.goto(`${url}readme-media.html?page=${START_PAGE}`);
+  await page.goto(`${url}readme-media.html?page=${START_PAGE}&display=${display}`);
   await page.waitForFunction(() => document.body.dataset.ready || document.body.dataset.error, null, { timeout: 120_000 });
   const error = await page.evaluate(() => document.body.dataset.error);
   if (error) throw new Error(`readme-media: the book did not open: ${error}`);
@@ -282,6 +286,16 @@ async function main() {
     console.log(`readme-media: ${path.relative(root, path.join(outDir, 'turn.png'))} ${small.width}x${small.height}, ${FRAMES} frames, ${(turn.length / 1024).toFixed(0)} KB`);
     if (process.env.README_MEDIA_FRAME) {  // one middle frame as a still PNG, to look at
       fs.writeFileSync(process.env.README_MEDIA_FRAME, encodePng(frames[Math.floor(FRAMES / 2)]));
+    }
+
+    const phone = await openBook(browser, url, PHONE, 'single');
+    const phoneFrames = [];
+    for (let i = 0; i < FRAMES; i++) phoneFrames.push(await phone(i / (FRAMES - 1)));
+    const phoneTurn = encodeApng(phoneFrames, delays, { palette: true });
+    fs.writeFileSync(path.join(outDir, 'phone-turn.png'), phoneTurn);
+    console.log(`readme-media: ${path.relative(root, path.join(outDir, 'phone-turn.png'))} ${PHONE.width}x${PHONE.height}, ${FRAMES} frames, ${(phoneTurn.length / 1024).toFixed(0)} KB`);
+    if (process.env.README_MEDIA_FRAME) {
+      fs.writeFileSync(process.env.README_MEDIA_FRAME.replace(/\.png$/, '-phone.png'), encodePng(phoneFrames[Math.floor(FRAMES / 2)]));
     }
   } finally {
     await browser.close();

@@ -17,6 +17,9 @@ const FIXTURE = '/tests/browser/fixtures/flipbook-fixture.html';
 // resting spread was cached; 31 with a shadow pass of its own over the resting pages). The stacks'
 // edges (thickness) rest in the cache: they cost a turning frame nothing.
 const MAX_GL_CALLS_PER_TURNING_FRAME = 25;
+// In single display the view slides towards the spine while a leaf turns (issue 40), so each frame
+// sets the camera again: its matrix in the shadow and leaf programs, the eye, and the cache's offset (4).
+const MAX_GL_CALLS_PER_SINGLE_TURNING_FRAME = MAX_GL_CALLS_PER_TURNING_FRAME + 4;
 
 /** Counts every WebGL2 call and every call from JS into a wasm function, on window.__counts. */
 function countCalls() {
@@ -133,7 +136,7 @@ test('browser: a turning frame costs one call into the wasm engine and a bounded
     const name = `${display}, thickness ${thickness}`;
     console.log(`frame cost, ${name}: JS->wasm calls per frame ${frames.map((f) => f.wasm).join(' ')}; `
       + `WebGL calls per frame ${frames.map((f) => f.gl).join(' ')}; worst frame ${JSON.stringify(worst.glByName)}`);
-    const most = MAX_GL_CALLS_PER_TURNING_FRAME;
+    const most = display === 'single' ? MAX_GL_CALLS_PER_SINGLE_TURNING_FRAME : MAX_GL_CALLS_PER_TURNING_FRAME;
     for (const frame of frames) {
       expect(frame.wasm, `${name}: JS->wasm calls in a turning frame`).toBe(1);
       expect(frame.gl, `${name}: a turning frame drew nothing`).toBeGreaterThan(0);

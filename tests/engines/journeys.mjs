@@ -282,7 +282,7 @@ export function engineSuite(engine) {
       assert.deepEqual(await evaluate(shownAt, [[0.2, 0.85], [0.8, 0.85]]), [3, 4]);
     });
 
-    journey('a phone-sized screen (390x844, in an iframe where the window cannot be that narrow) shows one page filling the width and turns', async () => {
+    journey('a phone-sized screen (390x844, in an iframe where the window cannot be that narrow) shows one page filling the width and turns, and its turn matches the reference images at t = 0.3 and 0.45', async () => {
       await browser.setViewport(800, 900);
       try {
         await browser.goto(url('/tests/engines/phone-frame.html?src=/web/demo/'));
@@ -301,6 +301,26 @@ export function engineSuite(engine) {
           b.next();
         }));
         assert.equal(await evaluate(() => document.querySelector('iframe').contentWindow.conecurlDemo.book.page), 1);
+        // The single-display turn as this engine draws it (issue 40): paper on the back, a soft shadow,
+        // the view leaving the spine room. A paper page of text (page 5; the ones before are boards),
+        // posed, then posed again once its pages have loaded.
+        await evaluate(() => document.querySelector('iframe').contentWindow.conecurlDemo.book.flip(4, { animate: false }));
+        const frame = await evaluate(() => {
+          const r = document.querySelector('iframe').getBoundingClientRect();
+          return { x: r.x, y: r.y, width: r.width, height: r.height };
+        });
+        for (const t of [0.3, 0.45]) {
+          await evaluate((t) => {
+            const w = document.querySelector('iframe').contentWindow;
+            const b = w.conecurlDemo.book;
+            b.previewTurn('forward', t);
+            return b.whenIdle().then(() => new Promise((resolve) => {
+              b.previewTurn('forward', t);
+              w.requestAnimationFrame(() => w.requestAnimationFrame(resolve));
+            }));
+          }, t);
+          matchesReference(engine, `phone-single-turn-t${t}`, cropTo(await browser.screenshot(), frame));
+        }
       } finally {
         await browser.setViewport(800, 600);
       }
