@@ -319,7 +319,7 @@ test('browser: turn-area, label and fallback are attributes too; every option pr
     // A value for every option property (display reads the display shown: the live-attribute test has it).
     const values = {
       pages, minPageWidth: 150, direction: 'rtl', startPage: 2, duration: 300, schedule: 'smooth', center: false, hardCovers: true,
-      lighting: false, shadows: false, gutter: false, thickness: 0.01, loadWindow: 2, hash: false, autoplay, sound: false,
+      lighting: false, shadows: false, gutter: false, showThrough: 0.25, thickness: 0.01, loadWindow: 2, hash: false, autoplay, sound: false,
       muted: true, rememberPage: 'element-spec', wasmUrl: '/dist/x.wasm', antialias: 'auto', resolution: 1.5, turnArea: 'corners',
       label: 'Atlas of clouds', fallback: false, pdf: new Uint8Array([37, 80, 68, 70]), pdfWorkerSrc: '/no/worker.mjs', document: '/files/atlas/book.json',
       outline: [{ title: 'Clouds', page: 1 }], download: '/files/atlas.pdf',
