@@ -3,6 +3,7 @@
 // dist/ built), side by side in one PNG per screen and t (before left, after right), and how many pixels
 // differ. Screens: the phone of the phone tests (390x844 at ratio 3, single page) and a desktop spread.
 // Usage: node scripts/turn-pictures.mjs --before ../conecurl-before [--out turn-pictures] [--port 8099]
+//        [--times 0.15,0.6,0.95] [--screens phone,desktop] [--name turn] (files <name>-<screen>-<t>.png)
 import { spawn } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
@@ -22,11 +23,23 @@ if (!before || !fs.existsSync(path.join(before, 'dist/test/conecurl-engine.mjs')
   console.error('turn-pictures: --before must name another checkout with its dist/ built (bash scripts/build-wasm.sh there)');
   process.exit(1);
 }
-const TIMES = [0.15, 0.6, 0.95];
-const SCREENS = {
+const TIMES = arg('--times', '0.15,0.6,0.95').split(',').map(Number);
+const NAME = arg('--name', 'turn');
+if (TIMES.some((t) => !(t >= 0 && t <= 1))) {
+  console.error('turn-pictures: --times must be numbers from 0 to 1 separated by commas (e.g. 0.15,0.6)');
+  process.exit(1);
+}
+const ALL_SCREENS = {
   phone: { use: phoneUse(PHONES['phone-portrait']), options: { pages: 8, display: 'single', startPage: 2 } },
   desktop: { use: { viewport: { width: 1000, height: 640 }, deviceScaleFactor: 1 }, options: { pages: 8, display: 'double', startPage: 1 } },
 };
+const SCREENS = Object.fromEntries(arg('--screens', 'phone,desktop').split(',').map((name) => {
+  if (!ALL_SCREENS[name]) {
+    console.error(`turn-pictures: unknown screen ${name} in --screens (phone, desktop)`);
+    process.exit(1);
+  }
+  return [name, ALL_SCREENS[name]];
+}));
 
 function serve(tree, at) {
   return spawn(process.execPath, [path.join(tree, 'scripts/serve.mjs'), '--port', String(at)], { cwd: tree, stdio: 'ignore' });
@@ -74,7 +87,7 @@ try {
       for (let i = 0; i < p.length; i += 4) if (Math.abs(p[i] - q[i]) + Math.abs(p[i + 1] - q[i + 1]) + Math.abs(p[i + 2] - q[i + 2]) > 24) count++;
       return { png: canvas.toDataURL('image/png').split(',')[1], differing: count, total: p.length / 4 };
     }, [old[key].toString('base64'), after[key].toString('base64')]);
-    const file = path.join(out, `turn-${key}.png`);
+    const file = path.join(out, `${NAME}-${key}.png`);
     fs.writeFileSync(file, Buffer.from(png, 'base64'));
     console.log(`${path.relative(root, file)}: before | after; ${differing} of ${total} pixels differ by more than 8 a channel on average`);
   }
