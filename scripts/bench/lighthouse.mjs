@@ -90,6 +90,17 @@ function byFolder(requests) {
   return Object.fromEntries(Object.entries(counts).sort((a, b) => b[1] - a[1]));
 }
 
+// The Chromium of the audit under way. Lighthouse keeps the process alive through a plain kill (SIGTERM)
+// or Ctrl-C while it audits: stopping says so in one line, kills that browser and exits.
+let auditing = null;
+for (const [signal, status] of [['SIGINT', 130], ['SIGTERM', 143]]) {
+  process.on(signal, () => {
+    console.error(`lighthouse: stopped by ${signal}; the sites published so far are kept, lighthouse.json is not written`);
+    auditing?.process()?.kill('SIGKILL');
+    process.exit(status);
+  });
+}
+
 /** One Lighthouse run of `url` (mobile preset) in a fresh Chromium: the figures kept, and the misses. */
 async function audit(url) {
   // Chromium refuses to run as root with its sandbox (Playwright's launcher adds --no-sandbox itself; puppeteer's does not).
@@ -97,6 +108,7 @@ async function audit(url) {
   const browser = await puppeteer.launch({
     executablePath: chromiumExecutable(), headless: true, args: [...CHROMIUM_ARGS, ...sandbox, '--remote-debugging-port=0'],
   });
+  auditing = browser;
   try {
     const debugPort = Number(new URL(browser.wsEndpoint()).port);
     const result = await lighthouse(url, { port: debugPort, output: 'json', logLevel: 'error', onlyCategories: CATEGORIES });
@@ -119,6 +131,7 @@ async function audit(url) {
       legibleText: lhr.audits['font-size']?.displayValue ?? null,
     };
   } finally {
+    auditing = null;
     await browser.close();
   }
 }
