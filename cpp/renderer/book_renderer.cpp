@@ -462,18 +462,19 @@ GLuint BookRenderer::textureFor(int page) const {
     return found == pageTextures_.end() ? paperTexture_ : found->second;
 }
 
-BookRenderer::Camera BookRenderer::cameraFor(const Book& book, int width, int height) const {
-    // The core's camera, in float for the GPU: pointer input is solved against the same one.
-    const BookCamera c = bookCamera(book, width, height);
+BookRenderer::Camera BookRenderer::toGpu(const BookCamera& c) {
     return Camera{glm::mat4(c.viewProjection), glm::vec3(c.eye), static_cast<float>(c.pixelsPerUnit),
                   static_cast<float>(c.magnification)};
 }
 
+BookRenderer::Camera BookRenderer::cameraFor(const Book& book, int width, int height) const {
+    // The core's camera, in float for the GPU: pointer input is solved against the same one.
+    return toGpu(bookCamera(book, width, height));
+}
+
 BookRenderer::Camera BookRenderer::restingCameraFor(const Book& book, int width, int height) const {
     if (book.zoom().scale > 1.0) return cameraFor(book, width, height);
-    const BookCamera c = bookCamera(book.config(), width, height, book.zoom(), 0.0);
-    return Camera{glm::mat4(c.viewProjection), glm::vec3(c.eye), static_cast<float>(c.pixelsPerUnit),
-                  static_cast<float>(c.magnification)};
+    return toGpu(bookCamera(book.config(), width, height, book.zoom(), 0.0));
 }
 
 void BookRenderer::ensureShadowTarget(int width, int height) {

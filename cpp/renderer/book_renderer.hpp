@@ -172,6 +172,7 @@ private:
     void destroyGpuObjects();
     void updateGrid(const Book& book, const Camera& camera, int width, int height);
     void uploadGrid();
+    static Camera toGpu(const BookCamera& camera);  // the core's camera in float
     Camera cameraFor(const Book& book, int width, int height) const;
     // The camera what rests is cached through while leaves move: the book's with no centre shift. The
     // shift slides the camera along the page plane, which moves everything on it by the same pixels, so
