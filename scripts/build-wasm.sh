@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds the wasm engine (core + renderer + bindings) into dist/ with emcmake; incremental.
+# Builds the wasm engine (core + renderer + bindings) into dist/ with emcmake (incremental), then the
+# browser bundles made from it (scripts/build-bundles.mjs).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/env.sh
@@ -15,3 +16,5 @@ fi
 cmake --build build/wasm -j2
 test -f dist/conecurl-engine.wasm && test -f dist/conecurl-engine.mjs && test -f dist/engine-constants.js
 test -f dist/test/conecurl-engine.wasm && test -f dist/test/conecurl-engine.mjs
+# The browser bundles (dist/reader/, dist/cdn/) from the engine just built and the sources: a second or so.
+node scripts/build-bundles.mjs --quiet

@@ -22,10 +22,14 @@ export function iframeSnippet({ src, title }) {
     + 'allow="fullscreen" allowfullscreen loading="lazy"></iframe>';
 }
 
+/** How long the reader's files may be kept: their names carry a hash of their content (build-bundles.mjs). */
+export const HASHED = 'Cache-Control: public, max-age=31536000, immutable';
+
 /**
  * The _headers file: index.html and book.json always revalidate (a new publish changes them); the page
- * images, text, thumbnails, cover, narration, the PDF and the reader are numbered or named the same at
- * each publish, not content-hashed, so they are kept NUMBERED_MAX_AGE and then revalidated. No file is
+ * images, text, thumbnails, cover, narration and the PDF are numbered or named the same at each publish,
+ * not content-hashed, so they are kept NUMBERED_MAX_AGE and then revalidated; the reader's files under
+ * conecurl/ are content-hashed, so they are immutable. No file is
  * matched by two rules (both hosts join the headers of every rule that matches). `download`: the PDF's
  * name in book/, or null.
  */
@@ -35,12 +39,13 @@ export function headersFile({ download = null }) {
   const rules = [
     ['/', revalidate], ['/index.html', revalidate], ['/book/book.json', revalidate],
     ...['pages', 'zoom', 'thumbs', 'text', 'narration'].map((folder) => [`/book/${folder}/*`, keep]),
-    ['/book/cover.jpg', keep], ...(download ? [[`/book/${download}`, keep]] : []), ['/conecurl/*', keep],
+    ['/book/cover.jpg', keep], ...(download ? [[`/book/${download}`, keep]] : []), ['/conecurl/*', HASHED],
   ];
   return [
     '# Cache rules for Netlify and Cloudflare Pages, written by conecurl publish (docs/publish.md#caching-and-embedding).',
     '# The page files are numbered, not content-hashed: a new publish rewrites them under the same names, so they',
-    `# are kept ${NUMBERED_MAX_AGE / 3600} hour and revalidated; index.html and book.json always revalidate.`,
+    `# are kept ${NUMBERED_MAX_AGE / 3600} hour and revalidated; index.html and book.json always revalidate; the reader's`,
+    '# files under conecurl/ have a hash of their content in their names, so they never change.',
     '# Paths are from the site\'s root: if the site lives under a folder of the deploy, put that folder before each.',
     ...rules.flatMap(([where, header]) => [where, `  ${header}`]),
     '',

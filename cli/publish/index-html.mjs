@@ -1,5 +1,5 @@
-// The published site's index.html: the reader page (reader.js makes the book in <main id="conecurl-reader">),
-// its modules preloaded so they load in one round trip, link-preview tags, and a <noscript> copy of the
+// The published site's index.html: the reader page (the reader's bundle makes the book in <main id="conecurl-reader">),
+// its first chunks preloaded so they load in one round trip, link-preview tags, and a <noscript> copy of the
 // pages (images and text) for readers and crawlers without JavaScript, and a description for search results
 // and link previews. Every value from the PDF is escaped.
 import { cutWords } from '../../web/src/document/format.js';
@@ -54,8 +54,8 @@ export function indexHtml({ title, lang, manifest, cover, url, runtime, prefix, 
     '<meta name="twitter:card" content="summary_large_image">',
     `<link rel="stylesheet" href="${href(`${prefix}/${runtime.css}`)}">`,
     '<link rel="icon" href="data:,">',  // none: a cover thumbnail here would come before the first spread
-    // What the first spread needs, asked for at once: the modules (those the book imports on its way too),
-    // the manifest and the engine's binary, fetched as the book fetches them (CORS mode, credentials of the
+    // What the first spread needs, asked for at once: the chunks the reader's entry imports (as the bundler's
+    // output lists them: build-bundles.mjs), the manifest and the engine's binary, fetched as the book fetches them (CORS mode, credentials of the
     // same origin), so the book's own requests are answered by these. Not the first page: Chromium failed
     // the book's read of a preloaded 600 KB page still arriving over a throttled network ("Failed to
     // fetch"), and the book asks for it itself as soon as it runs.

@@ -17,7 +17,6 @@ import { COVER } from './render-page.mjs';
 import { startPool } from './render-pool.mjs';
 import { remapLinks, remapOutline } from './remap.mjs';
 import { PACKAGE_ROOT, runtimeFiles } from './runtime-files.mjs';
-import { stripComments } from './strip-comments.mjs';
 import { summary } from './summary.mjs';
 
 const BOOK = 'book';
@@ -122,13 +121,11 @@ async function publish(options) {
     for (const kind of kinds) fs.mkdirSync(path.join(bookDir, kind), { recursive: true });
     const written = new Map();  // relative path -> { bytes, kind }
     for (const file of site.files) {
+      // The reader's bundle as built (minified, content-hashed): copied, never changed.
       const to = path.join(options.out, RUNTIME, file);
       fs.mkdirSync(path.dirname(to), { recursive: true });
-      // The package's own modules without their comments (the engine's glue in dist/ as built).
-      const data = file.startsWith('web/') && file.endsWith('.js')
-        ? stripComments(fs.readFileSync(path.join(PACKAGE_ROOT, file), 'utf8')) : fs.readFileSync(path.join(PACKAGE_ROOT, file));
-      fs.writeFileSync(to, data);
-      written.set(`${RUNTIME}/${file}`, { bytes: Buffer.byteLength(data), kind: 'runtime' });
+      fs.copyFileSync(path.join(site.dir, file), to);
+      written.set(`${RUNTIME}/${file}`, { bytes: fs.statSync(to).size, kind: 'runtime' });
     }
     if (download) {
       fs.writeFileSync(path.join(bookDir, download), bytes);

@@ -2,6 +2,7 @@
 // no speech voice in the browser, the toolbar's Read aloud button shows for the narration alone, and a
 // press plays each narrated page's audio from the site's book/narration/, marking its words.
 import { test, expect } from '@playwright/test';
+import { READER_ENTRY } from '../node/publish-run.mjs';
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, rmSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
@@ -45,7 +46,7 @@ test('browser: a site published with --narration shows Read aloud without a spee
   page.on('pageerror', (error) => problems.push(error.message));
   await page.goto(`${siteUrl()}index.html`);
   await page.evaluate(async (url) => {
-    window.book = await (await import(url)).book;
+    window.book = await (await import(document.querySelector(url).src)).book;
     await window.book.whenIdle();
     window.log = [];
     window.book.addEventListener('readaloudpage', (e) => window.log.push({ type: 'page', page: e.detail.page, source: e.detail.source }));
@@ -53,7 +54,7 @@ test('browser: a site published with --narration shows Read aloud without a spee
       type: 'word', page: e.detail.page, text: e.detail.text, audio: window.book.readingAloud?.audio?.src ?? null,
     }));
     window.book.addEventListener('readaloudend', (e) => window.log.push({ type: 'end', reason: e.detail.reason, error: e.detail.error?.stack }));
-  }, `${siteUrl()}conecurl/web/reader/reader.js`);
+  }, READER_ENTRY);
   const read = page.locator('[data-control="readAloud"]:not([role="menuitem"])');  // the toolbar's, not the More menu's
   await expect(read).toBeVisible();
   await read.click();

@@ -3,6 +3,8 @@
 // as the same PDF opened through pdf.js; the text layer selects; outline() and the Contents panel go
 // where pdf.js says; thumbnails come from the thumbnail images. And the package's reader.html#file=.
 import { test, expect } from '@playwright/test';
+import { READER_ENTRY } from '../node/publish-run.mjs';
+import { runtimeFiles } from '../../cli/publish/runtime-files.mjs';
 import { execFileSync } from 'node:child_process';
 import { mkdirSync, rmSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
@@ -37,9 +39,9 @@ async function openSite(page, hash = '') {
   page.on('pageerror', (error) => problems.push(error.message));
   await page.goto(`${siteUrl(siteName())}index.html${hash}`);
   await page.evaluate(async (url) => {
-    window.book = await (await import(url)).book;
+    window.book = await (await import(document.querySelector(url).src)).book;
     await window.book.whenIdle();
-  }, `${siteUrl(siteName())}conecurl/web/reader/reader.js`);
+  }, READER_ENTRY);
   expect(problems).toEqual([]);
   return requests;
 }
@@ -70,19 +72,19 @@ test('browser: the published site opens its book filling the screen, turns, and 
   // The page images are the reading-size ones; the modules come from the site's own conecurl/ folder.
   expect(requests.some((url) => url.includes('/book/pages/0001.'))).toBe(true);
   expect(requests.filter((url) => url.includes('/node_modules/'))).toEqual([]);
-  // What index.html preloads is what the book asks for, each fetched once: the modules of the first
-  // view (web/reader/first-view-modules.js, which must not go stale), the manifest, the engine, page 1.
-  const { FIRST_VIEW_MODULES } = await import('../../web/reader/first-view-modules.js');
+  // What index.html asks for is what the book needs, each fetched once: the reader's first chunks (as
+  // the bundler listed them), the manifest, the engine, page 1; no other script comes before the first
+  // spread but the lazy chunks the reader imports on its way (requests counted: the bundle's point).
   const site = siteUrl(siteName());
   const fetched = (file) => beforeReady.filter((url) => new URL(url).pathname === `${site}${file}`).length;
-  for (const file of FIRST_VIEW_MODULES) expect(fetched(`conecurl/${file}`), file).toBe(1);
-  for (const file of ['book/book.json', 'book/pages/0001.webp', 'conecurl/dist/conecurl-engine.wasm']) expect(fetched(file), file).toBe(1);
+  const reader = runtimeFiles(root);
+  for (const file of [reader.entry, ...reader.preload, reader.wasm]) expect(fetched(`conecurl/${file}`), file).toBe(1);
+  for (const file of ['book/book.json', 'book/pages/0001.webp']) expect(fetched(file), file).toBe(1);
   const html = await (await page.request.get(`${site}index.html`)).text();
-  const preloaded = new Set([...html.matchAll(/<link rel="modulepreload" href="([^"]+)">/g)].map((m) => m[1]));
-  const modulesBeforeReady = beforeReady.filter((url) => url.endsWith('.js') && new URL(url).pathname.startsWith(`${site}conecurl/web/src/`))
-    .map((url) => new URL(url).pathname.slice(site.length));
-  // Only the text index comes later: it reads the pages' text in idle time once the book is open.
-  expect(modulesBeforeReady.filter((file) => !preloaded.has(file) && file !== 'conecurl/web/src/document/text-index.js')).toEqual([]);
+  const preloaded = [...html.matchAll(/<link rel="modulepreload" href="conecurl\/([^"]+)">/g)].map((m) => m[1]);
+  expect(preloaded).toEqual(reader.preload);
+  const scripts = beforeReady.filter((url) => new URL(url).pathname.endsWith('.js')).map((url) => new URL(url).pathname.slice(site.length));
+  expect(scripts.every((file) => file.startsWith('conecurl/') && reader.files.includes(file.slice('conecurl/'.length))), scripts.join(', ')).toBe(true);
   await page.screenshot({ path: test.info().outputPath('published-site.png') });
 });
 
@@ -173,7 +175,7 @@ test('browser: a bad document is refused with an error naming the file; a page t
   await page.waitForFunction(() => document.body.dataset.ready || document.body.dataset.error);
   const errors = await page.evaluate(async (base) => {
     const out = [];
-    for (const url of [`${base}missing/book.json`, `${base}conecurl/web/reader/reader.css`]) {
+    for (const url of [`${base}missing/book.json`, `${base}index.html`]) {
       try {
         await window.Flipbook.create(window.container, { document: url });
         out.push('opened');
@@ -184,7 +186,7 @@ test('browser: a bad document is refused with an error naming the file; a page t
     return out;
   }, siteUrl(siteName()));
   expect(errors[0]).toMatch(/could not fetch the document .*missing\/book\.json.*404/);
-  expect(errors[1]).toMatch(/reader\.css is not JSON/);
+  expect(errors[1]).toMatch(/index\.html is not JSON/);
   // A manifest whose page 3 failed to draw when published: that page is a placeholder and a pageerror.
   const manifest = await (await page.request.get(`${siteUrl(siteName())}book/book.json`)).json();
   manifest.pages[2] = { width: manifest.pages[2].width, height: manifest.pages[2].height, failed: 'the page could not be drawn' };

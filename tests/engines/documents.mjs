@@ -5,7 +5,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { PNG } from 'pngjs';
 import { makeDocumentPdf } from '../fixtures/document-pdf.mjs';
-import { publish, root } from '../node/publish-run.mjs';
+import { READER_ENTRY, publish, root } from '../node/publish-run.mjs';
 
 const HTML = '/tests/browser/fixtures/html-fixture.html';
 const PDF = '/tests/browser/fixtures/pdf-fixture.html';
@@ -342,14 +342,14 @@ export function documentJourneys(context) {
     assert.equal(result.code, 0, `conecurl publish: ${result.stderr}`);
     await browser.goto(context.url(`/${SITES}/${engine}/index.html`));
     const site = await evaluate(async (url) => {
-      window.book = await (await import(url)).book;
+      window.book = await (await import(document.querySelector(url).src)).book;
       if (!window.book) return { problem: document.querySelector('[role="alert"]')?.textContent ?? 'no book' };
       await window.book.whenIdle();
       window.events = [];
       window.book.addEventListener('turned', (e) => window.events.push(e.detail.page));
       return { count: window.book.pageCount, page: window.book.page, surface: window.book.surface.kind, title: document.title,
         toolbar: Boolean(document.querySelector('[role="toolbar"]')), listening: Array.isArray(window.__heard) };
-    }, `/${SITES}/${engine}/conecurl/web/reader/reader.js`);
+    }, READER_ENTRY);
     // `listening`: the suite's heard.js ran in the site's page (what it throws is heard, so "nothing heard" means something).
     assert.deepEqual(site, { count: 8, page: 0, surface: 'webgl', title: 'The document test', toolbar: true, listening: true });
 

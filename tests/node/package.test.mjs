@@ -23,8 +23,10 @@ function allowedFiles() {
     .map((name) => `cli/${name}`);
   // The reader page (web/reader/): a published site's, and reader.html#file= for a PDF at run time.
   const reader = fs.readdirSync(path.join(repositoryRoot, 'web/reader')).map((name) => `web/reader/${name}`);
+  // The bundles scripts/build-bundles.mjs makes: the published reader and the CDN module with its wasm.
+  const bundles = ['dist/reader', 'dist/cdn'].flatMap((dir) => fs.readdirSync(path.join(repositoryRoot, dir)).map((name) => `${dir}/${name}`));
   return ['package.json', 'README.md', 'LICENSE', 'dist/conecurl-engine.mjs', 'dist/conecurl-engine.wasm',
-    'dist/engine-constants.js', ...sources, ...cli, ...reader].sort();
+    'dist/engine-constants.js', ...sources, ...cli, ...reader, ...bundles].sort();
 }
 
 /** Every string an exports entry points at, with the condition path that leads to it. */
@@ -33,7 +35,7 @@ function exportTargets(entry, where) {
   return Object.entries(entry).flatMap(([condition, value]) => exportTargets(value, `${where} ${condition}`));
 }
 
-test('node: npm pack holds exactly the engine, the web/src modules and typings, the reader page, the cli/ command, README, LICENSE and package.json (needs the wasm built)', () => {
+test('node: npm pack holds exactly the engine, the bundles, the web/src modules and typings, the reader page, the cli/ command, README, LICENSE and package.json (needs the wasm built)', () => {
   const files = packed().files.map((file) => file.path).sort();
   assert.deepEqual(files, allowedFiles());
   for (const file of files) assert.doesNotMatch(file, /(^|\/)(tests?|demo|cpp|shaders|scripts)\//);
@@ -49,13 +51,13 @@ test('node: every exports target is in the tarball, and each entry lists its typ
     assert.ok(target.startsWith('./'), `${where}: '${target}' must start with ./`);
     assert.ok(files.has(target.slice(2)), `${where}: '${target}' is not in the tarball`);
   }
-  for (const subpath of ['.', './element', './engine']) {
+  for (const subpath of ['.', './element', './engine', './cdn']) {
     const conditions = Object.keys(manifest.exports[subpath]);
     assert.deepEqual(conditions, ['types', 'default'], `exports['${subpath}'] conditions`);
   }
   assert.ok(files.has(manifest.types.slice(2)), 'the top-level types field points at a packed file');
-  // element.js defines the custom element on import: bundlers must not drop it as unused.
-  assert.deepEqual(manifest.sideEffects, [manifest.exports['./element'].default]);
+  // element.js and the CDN module define the custom element on import: bundlers must not drop them as unused.
+  assert.deepEqual(manifest.sideEffects, [manifest.exports['./element'].default, manifest.exports['./cdn'].default]);
 });
 
 test('node: every relative import in the packed modules and typings resolves to a packed file', () => {

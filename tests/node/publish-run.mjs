@@ -8,7 +8,8 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 
 export const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
-export const READER = 'web/reader/reader.js';
+/** A published index.html's <script> of the reader's entry chunk (a hashed name): a page imports it for `book`. */
+export const READER_ENTRY = 'script[type="module"][src^="conecurl/"]';
 
 /** Runs `conecurl publish ...args`; resolves { code, stdout, stderr } (code 'hung' if it ran past `limitMs`: a guard, not a timing). */
 export function publish(args, env = {}, limitMs = 300_000) {

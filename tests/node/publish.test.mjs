@@ -7,13 +7,13 @@ import assert from 'node:assert/strict';
 import fs from 'node:fs';
 import path from 'node:path';
 import { documentOptions, loadCanvas, loadPdfjs } from '../../cli/publish/pdfjs-node.mjs';
-import { moduleGraph } from '../../cli/publish/runtime-files.mjs';
+import { runtimeFiles } from '../../cli/publish/runtime-files.mjs';
 import { DESCRIPTION_CHARS, describe } from '../../cli/publish/index-html.mjs';
 import { checkManifest, decodePageText } from '../../web/src/document/format.js';
 import { pdfOutline, pdfPageText } from '../../web/src/document/pdf-document.js';
 import { BOOKMARKS, PAGES, PAGE_SIZE, lineAt, makeDocumentPdf } from '../fixtures/document-pdf.mjs';
 import { LINKS, makeLinkPdf } from '../fixtures/publish-pdfs.mjs';
-import { READER, publish, readJson, root, tempDir } from './publish-run.mjs';
+import { publish, readJson, root, tempDir } from './publish-run.mjs';
 
 const HEIGHT = 400;
 
@@ -62,11 +62,10 @@ test('node: conecurl publish writes every page\'s image, zoom image, thumbnail a
   assert.ok(fs.statSync(path.join(book, 'cover.jpg')).size > 1000);
   assert.deepEqual(fs.readFileSync(path.join(book, 'animals.pdf')), fs.readFileSync(path.join(path.dirname(out), 'animals.pdf')));
   assert.equal(manifest.download, 'animals.pdf');
-  for (const file of ['conecurl/dist/conecurl-engine.mjs', 'conecurl/dist/conecurl-engine.wasm', 'conecurl/dist/engine-constants.js',
-    `conecurl/${READER}`, 'conecurl/web/reader/reader.css', ...moduleGraph(root, READER).all.map((f) => `conecurl/${f}`)]) {
-    assert.ok(fs.existsSync(path.join(out, file)), `${file} is in the site`);
-  }
-  assert.ok(!fs.existsSync(path.join(out, 'conecurl/node_modules')), 'no pdf.js or other package in the site');
+  // The reader is the bundle as built (dist/reader/), copied byte for byte, flat under conecurl/.
+  const reader = runtimeFiles(root);
+  assert.deepEqual(fs.readdirSync(path.join(out, 'conecurl')).sort(), reader.files);
+  for (const file of reader.files) assert.ok(fs.readFileSync(path.join(out, 'conecurl', file)).equals(fs.readFileSync(path.join(reader.dir, file))), file);
   assert.match(run.stdout, /Published 8 of 8 pages .*pages\/s/);
   assert.match(run.stdout, /python3 -m http\.server -d /);
 });
@@ -156,12 +155,14 @@ test('node: conecurl publish index.html holds the reader contract, preloads, Ope
   assert.match(html, /<main id="conecurl-reader" data-document="book\/book\.json">/);
   assert.match(html, /<link rel="preload" href="book\/book\.json" as="fetch" crossorigin>/);
   assert.ok(!/<link rel="preload" href="book\/pages\//.test(html), 'no page image preloaded (see index-html.mjs)');
-  assert.match(html, /<link rel="preload" href="conecurl\/dist\/conecurl-engine\.wasm" as="fetch" crossorigin>/);
+  const reader = runtimeFiles(root);
+  assert.match(html, new RegExp(`<link rel="preload" href="conecurl/${reader.wasm}" as="fetch" crossorigin>`));
+  assert.match(reader.wasm, /^conecurl-engine-[\w-]{8}\.wasm$/, 'the engine\'s binary has a hashed name');
   assert.match(html, /<link rel="icon" href="data:,">/);
-  assert.match(html, new RegExp(`<script type="module" src="conecurl/${READER}"></script>`));
+  assert.match(html, new RegExp(`<script type="module" src="conecurl/${reader.entry}"></script>`));
+  // Preloaded: the chunks the entry imports, as the bundler's output says (bundle.json), each in the site.
   const preloaded = [...html.matchAll(/<link rel="modulepreload" href="conecurl\/([^"]+)">/g)].map((m) => m[1]);
-  const { FIRST_VIEW_MODULES } = await import('../../web/reader/first-view-modules.js');
-  assert.deepEqual(preloaded, [...new Set([...moduleGraph(root, READER).statics, ...FIRST_VIEW_MODULES])].filter((f) => f !== READER).sort());
+  assert.deepEqual(preloaded, reader.preload);
   for (const file of preloaded) assert.ok(fs.existsSync(path.join(out, 'conecurl', file)), file);
   const images = [...html.matchAll(/<img src="book\/pages\/(\d{4})\.webp" width="(\d+)" height="(\d+)" loading="lazy" alt="([^"]*)">/g)];
   assert.equal(images.length, PAGES.length);
@@ -179,11 +180,3 @@ test('node: the published page\'s description is its first words, cut at a word,
   assert.equal(describe('One', [{ text: '' }]), 'One: 1 page');
 });
 
-test('node: the module walker follows static and dynamic relative imports, preloads only the static ones, and never follows a package', () => {
-  const { all, statics } = moduleGraph(root, READER);
-  assert.ok(statics.includes('web/src/book/flipbook.js') && statics.includes('dist/engine-constants.js'));
-  assert.ok(all.includes('web/src/document/published-document.js'), 'a module imported with import() is copied');
-  assert.ok(!statics.includes('web/src/document/published-document.js'), '… but not preloaded');
-  assert.ok(all.every((f) => f.startsWith('web/src/') || f.startsWith('dist/') || f === READER), all.join(', '));
-  assert.ok(!all.some((f) => /pdfjs|react|vue/.test(f.split('/').pop())), 'no pdf.js, React or Vue wrapper');
-});

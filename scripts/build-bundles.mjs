@@ -1,0 +1,103 @@
+// Bundles the package's browser code with rolldown (the bundler vite runs on, already in our tree), so
+// that nothing at run time has to walk ninety source modules: dist/reader/, the published site's reader
+// (minified, content-hashed, the first spread's chunk apart from lazy ones), and dist/cdn/conecurl.js,
+// one ES module for a <script type="module"> that finds the engine's wasm beside it.
+// Usage: node scripts/build-bundles.mjs [--quiet]   (scripts/build-wasm.sh runs it after the engine)
+import fs from 'node:fs';
+import path from 'node:path';
+import zlib from 'node:zlib';
+import { fileURLToPath } from 'node:url';
+import { build } from 'rolldown';
+
+const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
+const quiet = process.argv.includes('--quiet');
+
+/** What `conecurl publish` reads to copy and preload the reader: written last, so its presence means a whole build. */
+export const READER_BUNDLE = 'dist/reader/bundle.json';
+
+// Never bundled: pdf.js (an optional dependency the page maps to where it is installed; only the
+// reader.html#file= road imports it) and the frameworks the React and Vue wrappers take from their host.
+const EXTERNAL = [/^pdfjs-dist(\/|$)/, /^react(\/|$)/, /^vue$/];
+
+// The reader's lazy chunks, by what they serve: code a published book's first spread never runs goes into
+// one of these, loaded when the reader first asks for it. Whatever no group takes and the first spread
+// reaches is in the entry's chunk or in a chunk shared with a lazy one.
+const LAZY = [
+  { name: 'pdf', test: /[\\/]web[\\/]src[\\/]document[\\/]pdf-(pages|document)\.js$/ },
+  { name: 'read-aloud', test: /[\\/]web[\\/]src[\\/]read-aloud[\\/](?!speech-engine)/ },
+  { name: 'panels', test: /[\\/]web[\\/]src[\\/]viewer[\\/](thumbnails|contents|search)-panel\.js$/ },
+  { name: 'search', test: /[\\/]web[\\/]src[\\/](document[\\/](book-search|text-index)|layers[\\/]search-hits)\.js$/ },
+  { name: 'html-pages', test: /([\\/]web[\\/]src[\\/]layers[\\/]html-pages\.js|[\\/]node_modules[\\/]modern-screenshot[\\/])/ },
+  { name: 'static-book', test: /[\\/]web[\\/]src[\\/]book[\\/]static-book\.js$/ },
+];
+
+const gzipSize = (data) => zlib.gzipSync(data, { level: 9 }).length;
+
+/** The reader for published sites: dist/reader/, and bundle.json saying which files the first spread loads. */
+async function buildReader() {
+  const dir = path.join(root, 'dist/reader');
+  fs.rmSync(dir, { recursive: true, force: true });
+  const { output } = await build({
+    cwd: root,
+    input: { reader: path.join(root, 'web/reader/reader.js') },
+    external: EXTERNAL,
+    preserveEntrySignatures: 'allow-extension',  // the reader's `book` stays exported; its chunk may take shared code too
+    logLevel: 'warn',
+    // The engine's glue finds its wasm by new URL('conecurl-engine.wasm', import.meta.url): emitted as a
+    // hashed asset beside the chunks, its name written into the glue.
+    experimental: { resolveNewUrlToAsset: true },
+    output: {
+      dir, format: 'es', minify: true,
+      entryFileNames: '[name]-[hash].js', chunkFileNames: '[name]-[hash].js', assetFileNames: '[name]-[hash][extname]',
+      // The lazy groups first; the rest of what the reader reaches, one chunk with the entry's code.
+      codeSplitting: { includeDependenciesRecursively: false, groups: [...LAZY.map((group) => ({ ...group, priority: 1 })), { name: 'reader', test: /./ }] },
+    },
+  });
+  const chunks = output.filter((file) => file.type === 'chunk');
+  const entry = chunks.find((chunk) => chunk.isEntry);
+  const byName = new Map(chunks.map((chunk) => [chunk.fileName, chunk]));
+  // What the first spread loads before it runs: the entry and its static imports, each once.
+  const first = [entry.fileName];
+  for (const file of first) for (const imported of byName.get(file).imports) if (byName.has(imported) && !first.includes(imported)) first.push(imported);
+  const wasm = output.find((file) => file.type === 'asset' && file.fileName.endsWith('.wasm'));
+  if (!wasm) throw new Error('the engine\'s wasm was not emitted beside the reader: has dist/conecurl-engine.mjs changed how it finds it?');
+  const css = `reader-${(await import('node:crypto')).createHash('sha256').update(fs.readFileSync(path.join(root, 'web/reader/reader.css'))).digest('hex').slice(0, 8)}.css`;
+  fs.copyFileSync(path.join(root, 'web/reader/reader.css'), path.join(dir, css));
+  const files = [...output.map((file) => file.fileName), css].sort();
+  const firstGzip = first.reduce((sum, file) => sum + gzipSize(byName.get(file).code), 0);
+  const manifest = {
+    note: 'written by scripts/build-bundles.mjs: the published reader; conecurl publish copies files and preloads preload',
+    entry: entry.fileName, preload: first.slice(1).sort(), css, wasm: wasm.fileName, files,
+    firstSpreadGzip: firstGzip,
+  };
+  fs.writeFileSync(path.join(root, READER_BUNDLE), `${JSON.stringify(manifest, null, 1)}\n`);
+  return { chunks: chunks.length, first, firstGzip };
+}
+
+/** dist/cdn/conecurl.js: Flipbook and <cone-flipbook> in one module; the wasm beside it keeps its name. */
+async function buildCdn() {
+  const dir = path.join(root, 'dist/cdn');
+  fs.rmSync(dir, { recursive: true, force: true });
+  await build({
+    cwd: root,
+    input: path.join(root, 'web/src/cdn.js'),
+    external: EXTERNAL,
+    logLevel: 'warn',
+    output: { file: path.join(dir, 'conecurl.js'), format: 'es', minify: true, codeSplitting: false },
+  });
+  fs.copyFileSync(path.join(root, 'dist/conecurl-engine.wasm'), path.join(dir, 'conecurl-engine.wasm'));
+  return { gzip: gzipSize(fs.readFileSync(path.join(dir, 'conecurl.js'))) };
+}
+
+try {
+  const reader = await buildReader();
+  const cdn = await buildCdn();
+  if (!quiet) {
+    console.log(`bundles: dist/reader/ (${reader.chunks} chunks; the first spread's ${reader.first.length}, ${(reader.firstGzip / 1024).toFixed(1)} KB gzip), `
+      + `dist/cdn/conecurl.js (${(cdn.gzip / 1024).toFixed(1)} KB gzip)`);
+  }
+} catch (error) {
+  console.error(`build-bundles: ${error.message ?? error} (run npm run build after npm install)`);
+  if (process.env.DEBUG) console.error(error);
+  process.exit(1);
+}

@@ -1,0 +1,3 @@
+// Types of the CDN build (dist/cdn/conecurl.js, from cdn.js): the main entry's and the element's.
+export * from './index.js';
+export { ConeFlipbookElement } from './element.js';
