@@ -24,12 +24,41 @@ const EXTERNAL = [/^pdfjs-dist(\/|$)/, /^react(\/|$)/, /^vue$/];
 // reaches is in the entry's chunk or in a chunk shared with a lazy one.
 const LAZY = [
   { name: 'pdf', test: /[\\/]web[\\/]src[\\/]document[\\/]pdf-(pages|document)\.js$/ },
-  { name: 'read-aloud', test: /[\\/]web[\\/]src[\\/]read-aloud[\\/](?!speech-engine)/ },
-  { name: 'panels', test: /[\\/]web[\\/]src[\\/]viewer[\\/](thumbnails|contents|search)-panel\.js$/ },
+  { name: 'voices', test: /[\\/]web[\\/]src[\\/](read-aloud[\\/]speech-engine|engine[\\/]voice-choice|viewer[\\/]read-aloud-menu)\.js$/ },
+  { name: 'read-aloud', test: /[\\/]web[\\/]src[\\/](read-aloud[\\/]|layers[\\/]reading-mark\.js$)/ },
+  { name: 'panels', test: /[\\/]web[\\/]src[\\/](viewer[\\/](thumbnails|contents|search)-panel|document[\\/]page-thumbnails)\.js$/ },
   { name: 'search', test: /[\\/]web[\\/]src[\\/](document[\\/](book-search|text-index)|layers[\\/]search-hits)\.js$/ },
   { name: 'html-pages', test: /([\\/]web[\\/]src[\\/]layers[\\/]html-pages\.js|[\\/]node_modules[\\/]modern-screenshot[\\/])/ },
   { name: 'static-book', test: /[\\/]web[\\/]src[\\/]book[\\/]static-book\.js$/ },
+  // What a book does only when asked: live pages, autoplay, the page sound, a passage's link, download and print.
+  { name: 'features', test: /[\\/]web[\\/]src[\\/](book[\\/](live-pages|autoplay|page-sound)|document[\\/](passage-link|book-document))\.js$/ },
 ];
+const isLazy = (id) => LAZY.some((group) => group.test.test(id));
+
+/**
+ * The modules the entry reaches without passing through a lazy group's module (static and dynamic
+ * imports alike): those make the first chunk. The rest is left to rolldown, beside the lazy chunks.
+ */
+async function firstChunkModules(input) {
+  let graph = null;
+  await build({
+    input, external: EXTERNAL, logLevel: 'silent', experimental: { resolveNewUrlToAsset: true },
+    plugins: [{
+      name: 'conecurl-module-graph',
+      buildEnd() {
+        graph = new Map([...this.getModuleIds()].map((id) => {
+          const info = this.getModuleInfo(id);
+          return [id, [...info.importedIds, ...info.dynamicallyImportedIds]];
+        }));
+      },
+    }],
+    output: { format: 'es' },
+    write: false,
+  });
+  const reached = new Set(Object.values(input));
+  for (const id of reached) for (const next of graph.get(id) ?? []) if (!isLazy(next) && graph.has(next)) reached.add(next);
+  return reached;
+}
 
 const gzipSize = (data) => zlib.gzipSync(data, { level: 9 }).length;
 
@@ -37,9 +66,11 @@ const gzipSize = (data) => zlib.gzipSync(data, { level: 9 }).length;
 async function buildReader() {
   const dir = path.join(root, 'dist/reader');
   fs.rmSync(dir, { recursive: true, force: true });
+  const input = { reader: path.join(root, 'web/reader/reader.js') };
+  const first = await firstChunkModules(input);
   const { output } = await build({
     cwd: root,
-    input: { reader: path.join(root, 'web/reader/reader.js') },
+    input,
     external: EXTERNAL,
     preserveEntrySignatures: 'allow-extension',  // the reader's `book` stays exported; its chunk may take shared code too
     logLevel: 'warn',
@@ -50,28 +81,28 @@ async function buildReader() {
       dir, format: 'es', minify: true,
       entryFileNames: '[name]-[hash].js', chunkFileNames: '[name]-[hash].js', assetFileNames: '[name]-[hash][extname]',
       // The lazy groups first; the rest of what the reader reaches, one chunk with the entry's code.
-      codeSplitting: { includeDependenciesRecursively: false, groups: [...LAZY.map((group) => ({ ...group, priority: 1 })), { name: 'reader', test: /./ }] },
+      codeSplitting: { includeDependenciesRecursively: false, groups: [...LAZY.map((group, i) => ({ ...group, priority: LAZY.length - i + 1 })), { name: 'reader', test: (id) => first.has(id), priority: 0 }] },
     },
   });
   const chunks = output.filter((file) => file.type === 'chunk');
   const entry = chunks.find((chunk) => chunk.isEntry);
   const byName = new Map(chunks.map((chunk) => [chunk.fileName, chunk]));
   // What the first spread loads before it runs: the entry and its static imports, each once.
-  const first = [entry.fileName];
-  for (const file of first) for (const imported of byName.get(file).imports) if (byName.has(imported) && !first.includes(imported)) first.push(imported);
+  const loaded = [entry.fileName];
+  for (const file of loaded) for (const imported of byName.get(file).imports) if (byName.has(imported) && !loaded.includes(imported)) loaded.push(imported);
   const wasm = output.find((file) => file.type === 'asset' && file.fileName.endsWith('.wasm'));
   if (!wasm) throw new Error('the engine\'s wasm was not emitted beside the reader: has dist/conecurl-engine.mjs changed how it finds it?');
   const css = `reader-${(await import('node:crypto')).createHash('sha256').update(fs.readFileSync(path.join(root, 'web/reader/reader.css'))).digest('hex').slice(0, 8)}.css`;
   fs.copyFileSync(path.join(root, 'web/reader/reader.css'), path.join(dir, css));
   const files = [...output.map((file) => file.fileName), css].sort();
-  const firstGzip = first.reduce((sum, file) => sum + gzipSize(byName.get(file).code), 0);
+  const firstGzip = loaded.reduce((sum, file) => sum + gzipSize(byName.get(file).code), 0);
   const manifest = {
     note: 'written by scripts/build-bundles.mjs: the published reader; conecurl publish copies files and preloads preload',
-    entry: entry.fileName, preload: first.slice(1).sort(), css, wasm: wasm.fileName, files,
+    entry: entry.fileName, preload: loaded.slice(1).sort(), css, wasm: wasm.fileName, files,
     firstSpreadGzip: firstGzip,
   };
   fs.writeFileSync(path.join(root, READER_BUNDLE), `${JSON.stringify(manifest, null, 1)}\n`);
-  return { chunks: chunks.length, first, firstGzip };
+  return { chunks: chunks.length, first: loaded, firstGzip };
 }
 
 /** dist/cdn/conecurl.js: Flipbook and <cone-flipbook> in one module; the wasm beside it keeps its name. */

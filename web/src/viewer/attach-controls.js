@@ -1,7 +1,8 @@
 // attachControls(book, options): the viewer for a book, built on its public API alone (the `controls`
 // option calls this; conecurl/viewer exports it). A toolbar below the book (the book's box gives up
 // its height), the panels over the book's side (on a phone, sheets fixed to the screen), reading mode,
-// all in the book's container so fullscreen takes them.
+// all in the book's container so fullscreen takes them. What the first view does not show (the panels'
+// contents, read-aloud's voices and its popup) is imported once the book's first view is ready.
 import { MAX_ZOOM } from '../engine/layout.js';
 import { languageOf } from '../engine/language.js';
 import { viewerLabels } from './viewer-labels.js';
@@ -9,10 +10,6 @@ import { checkControls, checkLabels, shownParts } from './viewer-options.js';
 import { installViewerStyle } from './viewer-style.js';
 import { createToolbar } from './toolbar.js';
 import { createPanel } from './panel.js';
-import { createReadAloudMenu } from './read-aloud-menu.js';
-import { thumbnailsPanel } from './thumbnails-panel.js';
-import { contentsPanel } from './contents-panel.js';
-import { searchPanel } from './search-panel.js';
 import { canFullscreen, readingMode } from './reading-mode.js';
 
 const ZOOM_STEP = 0.5;
@@ -21,7 +18,12 @@ const COMPACT = 800;        // CSS px: below, the panels' buttons show their ico
 const SHEET_SHARE = 0.62;   // of the book's height, a sheet's (fine pointer, narrow book)
 const COARSE = '(pointer: coarse)';  // a phone's finger: 44 px targets, sheets fixed to the screen, reading mode
 const HIT_MARGIN = 12;      // CSS px kept between a hit shown and the sheet or the screen's edge
-const PANEL_KINDS = { thumbnails: thumbnailsPanel, contents: contentsPanel, search: searchPanel };
+// Each panel's contents, imported when the first view is ready (or at the panel's first opening, if sooner).
+const PANEL_KINDS = {
+  thumbnails: () => import('./thumbnails-panel.js').then((module) => module.thumbnailsPanel),
+  contents: () => import('./contents-panel.js').then((module) => module.contentsPanel),
+  search: () => import('./search-panel.js').then((module) => module.searchPanel),
+};
 
 /**
  * Shows the toolbar and its panels with `book` (a Flipbook or StaticBook). `options.controls`: true or
@@ -65,28 +67,41 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
     readAloudSettings: () => readAloud.toggleMenu(),
   }, { fullscreenKey: fullscreenApi ? 'fullscreen' : 'read' });
   viewer.append(toolbar.element, toolbar.menu.element);
+  let removed = false;
   const readAloud = parts.readAloud ? readAloudPart() : null;
-  if (readAloud) viewer.append(readAloud.menu.element);
-  const contents = [];
-  for (const [kind, make] of Object.entries(PANEL_KINDS)) {
+  const contents = {};  // kind -> the promise of its contents ({ remove }), once asked for
+  for (const kind of Object.keys(PANEL_KINDS)) {
     if (!parts[kind]) continue;
     panels[kind] = createPanel(text, text[kind], toolbar.buttons[kind], () => toolbar.focusTarget(kind));
     viewer.append(panels[kind].element);
-    contents.push(make(book, panels[kind], text, { revealHit }));
   }
+  const panelContents = (kind) => (contents[kind] ??= PANEL_KINDS[kind]().then((make) => {
+    if (removed) return null;
+    return make(book, panels[kind], text, { revealHit });
+  }));
+  // After the first view: a book still being built has no surface yet, and says `ready` once it is on screen.
+  const startLater = () => {
+    if (removed) return;
+    for (const kind of Object.keys(panels)) panelContents(kind);
+    readAloud?.start();
+  };
+  if (book.surface) startLater();
+  else book.addEventListener('ready', startLater, { once: true });
   const openPanel = () => Object.values(panels).find((panel) => panel.isOpen());
   reading = readingMode(book, {
     container, viewer, toolbar,
-    busy: () => Boolean(openPanel()) || toolbar.menu.isOpen() || Boolean(readAloud?.menu.isOpen()),
+    busy: () => Boolean(openPanel()) || toolbar.menu.isOpen() || Boolean(readAloud?.menu?.isOpen()),
     changed: () => { layout(); show(); },
   });
 
-  function toggle(kind) {
+  async function toggle(kind) {
     const panel = panels[kind];
     if (panel.isOpen()) {
       panel.close();
       return;
     }
+    await panelContents(kind);  // at once once loaded
+    if (removed || panel.isOpen()) return;
     for (const other of Object.values(panels)) other.close();
     panel.open();
   }
@@ -137,7 +152,7 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
       });
     }
     toolbar.fit();
-    readAloud?.menu.place();
+    readAloud?.menu?.place();
   }
 
   // Read aloud: its two buttons shown once the book says it can read aloud. Read aloud starts reading
@@ -156,16 +171,22 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
         Promise.resolve(call()).catch(() => {});
       } catch { /* the reading had ended */ }
     };
-    const menu = createReadAloudMenu(text, toolbar.buttons.readAloudSettings, {
-      anchorOf: () => toolbar.focusTarget('readAloudSettings'),
-      voices: () => book.readAloudVoices(),
-      lang: () => (typeof book.pageLanguage === 'function' ? book.pageLanguage() : languageOf(book.element)),  // the reading's own
-      memory: () => book.options?.readAloudMemory,  // engine/voice-choice.js: undefined is its default key
-      changed: (change) => {
-        const now = live();
-        if (now) quietly(() => now.update(change));
-      },
-    });
+    // The Voice and speed popup, imported with the voices once the book can read aloud.
+    let menu = null;
+    const makeMenu = async () => {
+      const { createReadAloudMenu } = await import('./read-aloud-menu.js');
+      menu ??= createReadAloudMenu(text, toolbar.buttons.readAloudSettings, {
+        anchorOf: () => toolbar.focusTarget('readAloudSettings'),
+        voices: () => book.readAloudVoices(),
+        lang: () => (typeof book.pageLanguage === 'function' ? book.pageLanguage() : languageOf(book.element)),  // the reading's own
+        memory: () => book.options?.readAloudMemory,  // engine/voice-choice.js: undefined is its default key
+        changed: (change) => {
+          const now = live();
+          if (now) quietly(() => now.update(change));
+        },
+      });
+      viewer.append(menu.element);
+    };
     const showState = (state) => {  // 'reading' (or waiting), 'paused' or 'ended'
       const on = state === 'reading' || state === 'waiting';
       // A play/pause button as media players have it: its name says what a press does (no aria-pressed
@@ -186,20 +207,22 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
       },
     };
     for (const [type, listener] of Object.entries(events)) book.addEventListener(type, listener);
-    let removed = false;
-    // Shown once the book can read aloud: asked now, and again when voices come late (`readaloudvoices`).
-    const ask = () => Promise.resolve().then(() => book.canReadAloud()).then((can) => {
+    // Shown once the book can read aloud: asked after the first view, and again when voices come late (`readaloudvoices`).
+    const ask = () => Promise.resolve().then(() => book.canReadAloud()).then(async (can) => {
       if (can !== true || removed) return;
+      await makeMenu();
+      if (removed) return;
       toolbar.setPresent('readAloud', true);
       showNow();
-    }, () => {});
-    if (typeof book.canReadAloud === 'function') {
-      events.readaloudvoices = ask;
-      book.addEventListener('readaloudvoices', ask);
-      ask();
-    }
+    }).catch(() => {});
     return {
-      menu,
+      get menu() { return menu; },
+      start() {
+        if (typeof book.canReadAloud !== 'function') return;
+        events.readaloudvoices = ask;
+        book.addEventListener('readaloudvoices', ask);
+        ask();
+      },
       press() {
         const now = live();
         if (now?.state === 'paused') quietly(() => now.resume());
@@ -208,7 +231,7 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
           // Called within the press (speech may want the reader's gesture); a refusal leaves the button as it was.
           let started;
           try {
-            started = book.readAloud(menu.choice());
+            started = book.readAloud(menu?.choice());
           } catch (error) {
             started = Promise.reject(error);
           }
@@ -216,11 +239,10 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
         }
         showNow();
       },
-      toggleMenu: () => (menu.isOpen() ? menu.close(false) : menu.open()),
+      toggleMenu: () => (menu?.isOpen() ? menu.close(false) : menu?.open()),
       remove() {
-        removed = true;
         for (const [type, listener] of Object.entries(events)) book.removeEventListener(type, listener);
-        menu.remove();
+        menu?.remove();
       },
     };
   }
@@ -283,11 +305,13 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
     panels: Object.fromEntries(Object.entries(panels).map(([kind, panel]) => [kind, panel.element])),
     /** Takes the viewer away; the book gets its whole box back. */
     remove() {
+      removed = true;
+      book.removeEventListener('ready', startLater);
       reading.leave();
       window.removeEventListener('resize', resized);
       coarse.removeEventListener?.('change', resized);
       for (const [type, listener] of Object.entries(events)) book.removeEventListener(type, listener);
-      for (const part of contents) part.remove();
+      for (const part of Object.values(contents)) part.then((made) => made?.remove());
       readAloud?.remove();
       for (const panel of Object.values(panels)) panel.close();
       toolbar.remove();
