@@ -2,7 +2,8 @@
 // loopback with the MIME types wasm and ES modules need. Usage: node scripts/serve.mjs [--port N]
 // The consumer tests import serveDirectory() to serve a built app or an unpacked package the same way.
 // No CORS headers, so a page on 127.0.0.1 reading from localhost meets a real cross-origin refusal;
-// a request with the query `cors=1` gets Access-Control-Allow-Origin: * (tests' positive control).
+// a request with the query `cors=1` gets Access-Control-Allow-Origin: * (tests' positive control), and so
+// does every request to a server made with `cors` (a CDN, as the consumer tests serve the package).
 // With `compress` (the Lighthouse bench), text is sent brotli- or gzip-compressed and ranges are answered, as a CDN does.
 import http from 'node:http';
 import fs from 'node:fs';
@@ -37,9 +38,10 @@ function encodingFor(file, accept = '') {
  * `headHtml`, if given, goes first into every HTML page's <head> (tests put a listener there that must
  * run before the page's own scripts). `compress`: text files go brotli- or gzip-compressed when the browser
  * accepts it (Vary: Accept-Encoding), and a Range request gets its bytes (206), as a CDN serves a site.
+ * `cors`: every response may be read from any origin (Access-Control-Allow-Origin: *), as a CDN's.
  * Resolves with { server, url } once listening.
  */
-export function serveDirectory(root, { port = 0, home = null, headHtml = '', compress = false } = {}) {
+export function serveDirectory(root, { port = 0, home = null, headHtml = '', compress = false, cors = false } = {}) {
   root = path.resolve(root);
   const server = http.createServer((req, res) => {
     const url = new URL(req.url, `http://${host}`);
@@ -61,7 +63,7 @@ export function serveDirectory(root, { port = 0, home = null, headHtml = '', com
       const headers = {
         'Content-Type': types[path.extname(file)] || 'application/octet-stream',
         'Cache-Control': 'no-cache',
-        ...(url.searchParams.get('cors') === '1' ? { 'Access-Control-Allow-Origin': '*' } : {}),
+        ...(cors || url.searchParams.get('cors') === '1' ? { 'Access-Control-Allow-Origin': '*' } : {}),
       };
       if (compress && !headHtml) return sendCompressed(req, res, file, data, headers);
       res.writeHead(200, headers);

@@ -1,6 +1,8 @@
 // Browser: the packed npm package in real consumers. Once per run, `npm pack` makes the tarball; a Vite
 // app (tests/consumers/vite-app) installs it and is built with the repository's vite, and a static page
-// (tests/consumers/static-page) gets the tarball unpacked beside it. What shows is judged from screenshots.
+// (tests/consumers/static-page) gets the tarball unpacked beside it; a page on another origin loads the
+// package's CDN build (conecurl/cdn) from a server of the unpacked package, as from a CDN. What shows is
+// judged from screenshots.
 import { test, expect } from '@playwright/test';
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
@@ -18,6 +20,7 @@ let work;
 let viteApp;
 let viteSite;
 let staticSite;
+let cdnSite;
 
 test.describe.configure({ mode: 'serial' });  // the tests share one tarball, one build, two servers
 test.use({ viewport: { width: 800, height: 900 } });
@@ -37,11 +40,19 @@ test.beforeAll(async () => {
   writePageImages(path.join(site, 'pages'), PAGE_COUNT);
   unpackTo(tarball, path.join(site, 'node_modules/conecurl'));
   staticSite = await serveDirectory(site);
+  // The unpacked package as a CDN serves it (any origin may read it), on a port of its own: another origin.
+  cdnSite = await serveDirectory(path.join(site, 'node_modules/conecurl'), { cors: true });
+  const manifest = JSON.parse(fs.readFileSync(path.join(site, 'node_modules/conecurl/package.json'), 'utf8'));
+  const cdnModule = new URL(manifest.exports['./cdn'].default, cdnSite.url).href;
+  fs.writeFileSync(path.join(site, 'cdn.html'), fs.readFileSync(path.join(site, 'index.html'), 'utf8')
+    .replace(/<script type="importmap">[\s\S]*?<\/script>\n<script type="module">[\s\S]*?<\/script>/,
+      `<script type="module" src="${cdnModule}"></script>\n<script type="module">\n  import { Flipbook } from '${cdnModule}';\n  window.Flipbook = Flipbook;\n</script>`));
 });
 
 test.afterAll(async () => {
   viteSite?.server.close();
   staticSite?.server.close();
+  cdnSite?.server.close();
   if (work) fs.rmSync(work, { recursive: true, force: true });
 });
 
@@ -105,6 +116,30 @@ test('browser: a static page imports <cone-flipbook> from the unpacked package (
     ['turned', { page: 1 }],
   ]);
   expect(await book.evaluate((element) => element.book.pageCount)).toBe(PAGE_COUNT);
+  expect(problems).toEqual([]);
+});
+
+test('browser: a page on another origin loads conecurl/cdn, one module from a CDN: <cone-flipbook> and Flipbook work, and the wasm comes from beside the module', async ({ page }) => {
+  const requests = [];
+  page.on('request', (request) => requests.push(request.url()));
+  const problems = watchProblems(page);
+  await page.goto(`${staticSite.url}cdn.html`);
+  const book = page.locator('cone-flipbook');
+  await page.waitForFunction(() => document.querySelector('cone-flipbook')?.book?.pageCount > 0 && window.Flipbook);
+  await book.evaluate((element) => element.book.whenIdle());
+  const shares = await pageShares(book);
+  expect(shares[0]).toBeGreaterThan(SHOWN);
+  for (const share of shares.slice(1)) expect(share).toBeLessThan(ABSENT);
+  expect(await book.evaluate((element) => element.next())).toBe(true);
+  const after = await pageShares(book);
+  expect(after[1]).toBeGreaterThan(SHOWN);
+  expect(after[2]).toBeGreaterThan(SHOWN);
+  // The module's Flipbook is the element's: one engine, one class.
+  expect(await book.evaluate((element) => element.book instanceof window.Flipbook)).toBe(true);
+  // From the CDN: the one module and the wasm beside it, nothing else; nothing of the package from the page's origin.
+  const fromCdn = requests.filter((url) => url.startsWith(cdnSite.url)).map((url) => new URL(url).pathname).sort();
+  expect(fromCdn).toEqual(['/dist/cdn/conecurl-engine.wasm', '/dist/cdn/conecurl.js']);
+  expect(requests.filter((url) => url.includes('node_modules'))).toEqual([]);
   expect(problems).toEqual([]);
 });
 
