@@ -33,7 +33,7 @@ export function describe(title, pages) {
 
 /**
  * index.html for a site: `title`, `lang`, `manifest` (path of book.json), `cover` (path), `url` (absolute
- * base or null), `runtime` (runtimeFiles(): entry, css, preload, wasm, under `prefix`), `pages` ([{ src, width, height, alt, text } | { failed }], paths relative to the site).
+ * base or null), `runtime` (runtimeFiles(): entry, preload, wasm, under `prefix`, and style), `pages` ([{ src, width, height, alt, text } | { failed }], paths relative to the site).
  */
 export function indexHtml({ title, lang, manifest, cover, url, runtime, prefix, pages }) {
   const absolute = (relative) => (url ? escapeHtml(new URL(relative, url).href) : href(relative));
@@ -52,7 +52,7 @@ export function indexHtml({ title, lang, manifest, cover, url, runtime, prefix, 
     `<meta property="og:image" content="${absolute(cover)}">`,
     ...(url ? [`<meta property="og:url" content="${escapeHtml(url)}">`] : []),
     '<meta name="twitter:card" content="summary_large_image">',
-    `<link rel="stylesheet" href="${href(`${prefix}/${runtime.css}`)}">`,
+    `<style>\n${runtime.style.trim()}\n</style>`,
     '<link rel="icon" href="data:,">',  // none: a cover thumbnail here would come before the first spread
     // What the first spread needs, asked for at once: the chunks the reader's entry imports (as the bundler's
     // output lists them: build-bundles.mjs), the manifest and the engine's binary, fetched as the book fetches them (CORS mode, credentials of the

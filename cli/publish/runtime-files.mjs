@@ -10,9 +10,10 @@ export const READER_DIR = 'dist/reader';
 export const READER_BUNDLE = `${READER_DIR}/bundle.json`;
 
 /**
- * The reader's files (`files`, names inside READER_DIR), its `entry` chunk, the chunks the entry imports
- * before it runs (`preload`: the first spread's, as the bundler's output says), its `css` and `wasm`.
- * A missing or partial bundle throws, saying how to make it.
+ * The reader's files to copy (`files`, names inside READER_DIR), its `entry` chunk, the chunks the entry
+ * imports before it runs (`preload`: the first spread's, as the bundler's output says), its `wasm`, and
+ * `style`, the page's CSS, which index.html holds itself (a style sheet file would hold back the first paint
+ * by a round trip). A missing or partial bundle throws, saying how to make it.
  */
 export function runtimeFiles(root = PACKAGE_ROOT) {
   const rebuild = `reinstall conecurl (or, in a checkout, build it: npm run build)`;
@@ -29,5 +30,6 @@ export function runtimeFiles(root = PACKAGE_ROOT) {
   for (const file of files) {
     if (!fs.existsSync(path.join(root, READER_DIR, file))) throw new Error(`${READER_DIR}/${file} is missing from conecurl at ${root}: ${rebuild}`);
   }
-  return { dir: path.join(root, READER_DIR), files, preload, entry, css, wasm };
+  const style = fs.readFileSync(path.join(root, READER_DIR, css), 'utf8');
+  return { dir: path.join(root, READER_DIR), files: files.filter((file) => file !== css), preload, entry, style, wasm };
 }

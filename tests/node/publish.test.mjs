@@ -159,6 +159,9 @@ test('node: conecurl publish index.html holds the reader contract, preloads, Ope
   assert.match(html, new RegExp(`<link rel="preload" href="conecurl/${reader.wasm}" as="fetch" crossorigin>`));
   assert.match(reader.wasm, /^conecurl-engine-[\w-]{8}\.wasm$/, 'the engine\'s binary has a hashed name');
   assert.match(html, /<link rel="icon" href="data:,">/);
+  // The reader's CSS in the page itself (no style sheet to wait for before the first paint).
+  assert.ok(html.includes(`<style>\n${reader.style.trim()}\n</style>`) && reader.style.includes('#conecurl-reader'));
+  assert.ok(!/<link rel="stylesheet"/.test(html));
   assert.match(html, new RegExp(`<script type="module" src="conecurl/${reader.entry}"></script>`));
   // Preloaded: the chunks the entry imports, as the bundler's output says (bundle.json), each in the site.
   const preloaded = [...html.matchAll(/<link rel="modulepreload" href="conecurl\/([^"]+)">/g)].map((m) => m[1]);
