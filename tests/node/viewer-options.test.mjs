@@ -9,11 +9,13 @@ import { attachControls } from '../../web/src/viewer.js';
 
 const on = (parts) => CONTROL_PARTS.filter((part) => parts[part]);
 
-test('node: controls: true shows every part but Download and Print on an image book; a PDF shows them, a download URL shows Download', () => {
-  const all = CONTROL_PARTS.filter((part) => part !== 'download' && part !== 'print');
+test('node: controls: true shows every part but Download, Print and Keep offline on an image book; a PDF shows Download and Print, a download URL shows Download; { keepOffline: true } shows Keep offline', () => {
+  const shown = CONTROL_PARTS.filter((part) => part !== 'keepOffline');
+  const all = shown.filter((part) => part !== 'download' && part !== 'print');
   assert.deepEqual(on(shownParts(true, { pdf: false, downloadUrl: false })), all);
-  assert.deepEqual(on(shownParts(true, { pdf: true, downloadUrl: false })), CONTROL_PARTS);
-  assert.deepEqual(on(shownParts(true, { pdf: false, downloadUrl: true })), CONTROL_PARTS.filter((part) => part !== 'print'));
+  assert.deepEqual(on(shownParts(true, { pdf: true, downloadUrl: false })), shown);
+  assert.deepEqual(on(shownParts(true, { pdf: false, downloadUrl: true })), shown.filter((part) => part !== 'print'));
+  assert.deepEqual(on(shownParts({ keepOffline: true }, { pdf: false, downloadUrl: false })), [...all, 'keepOffline']);
 });
 
 test('node: an object of parts hides those set false and shows Download or Print when set true, whatever the book', () => {

@@ -14,6 +14,7 @@ import { thumbnailsPanel } from './thumbnails-panel.js';
 import { contentsPanel } from './contents-panel.js';
 import { searchPanel } from './search-panel.js';
 import { canFullscreen, readingMode } from './reading-mode.js';
+import { keepOfflinePart } from './keep-offline.js';
 
 const ZOOM_STEP = 0.5;
 const NARROW = 600;         // CSS px: below, icons only and panels as sheets from the bottom
@@ -63,10 +64,12 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
     search: () => toggle('search'),
     readAloud: () => readAloud.press(),
     readAloudSettings: () => readAloud.toggleMenu(),
+    keepOffline: () => keepOffline.press(),
   }, { fullscreenKey: fullscreenApi ? 'fullscreen' : 'read' });
   viewer.append(toolbar.element, toolbar.menu.element);
   const readAloud = parts.readAloud ? readAloudPart() : null;
   if (readAloud) viewer.append(readAloud.menu.element);
+  const keepOffline = parts.keepOffline ? keepOfflinePart(book, toolbar, text, viewer) : null;
   const contents = [];
   for (const [kind, make] of Object.entries(PANEL_KINDS)) {
     if (!parts[kind]) continue;
@@ -289,6 +292,7 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
       for (const [type, listener] of Object.entries(events)) book.removeEventListener(type, listener);
       for (const part of contents) part.remove();
       readAloud?.remove();
+      keepOffline?.remove();
       for (const panel of Object.values(panels)) panel.close();
       toolbar.remove();
       viewer.remove();
