@@ -204,10 +204,11 @@ async function publish(options) {
     fs.writeFileSync(path.join(options.out, HEADERS), headers);
     written.set(HEADERS, { bytes: Buffer.byteLength(headers), kind: 'text' });
     // Last: the web app manifest, and the service worker whose version hashes every file written above.
-    // Precached at install: the page, the reader, book.json, the manifest and its icons; the rest as read.
+    // Precached at install: the page, the reader, book.json, the manifest and its icons, and every page's
+    // text (small; search reads them all); the images as they are read.
     const shellFiles = ['index.html', `${BOOK}/${MANIFEST}`, WEB_MANIFEST, ...icons.map(({ src }) => src)];
     writeWebApp({ out: options.out, title, lang, written, icons, skip: [HEADERS],
-      shell: (file, { kind }) => kind === 'runtime' || shellFiles.includes(file) });
+      shell: (file, { kind }) => kind === 'runtime' || shellFiles.includes(file) || file.startsWith(`${BOOK}/text/`) });
     settleOutFolder(options.out, previous, [...written.keys()]);
     steps.lap('finish');  // narration, book.json, index.html, _headers, the web app files, the out folder settled
     steps.save({ jobs: options.jobs, pageCount: numbers.length, workerStartMs });

@@ -60,25 +60,37 @@ function ask(worker, message) {
  * A published site's service worker (sw.js beside index.html, written by conecurl publish): registered
  * once the book is open and the page has loaded, so it never delays the first spread; where the browser
  * has service workers (https, localhost). Once it controls the page, it keeps the files the page read
- * before. A new publish's worker takes over at once: a page that was shown by the old one loads again,
- * so nothing stale stays on the screen. Resolves to the registration, null where there is none.
+ * before (the pages of the first spread and those near it). Resolves to the registration, null where
+ * there is none.
  */
 async function registerServiceWorker() {
   const container = navigator.serviceWorker;
   if (!main.dataset.document || !container) return null;
   await book;
   if (document.readyState !== 'complete') await new Promise((resolve) => addEventListener('load', resolve, { once: true }));
-  let updated = Boolean(container.controller);
-  container.addEventListener('controllerchange', () => {
-    if (updated) location.reload();
-    updated = true;  // the first worker took this page: later ones are updates
-  });
   const registration = await container.register(new URL('sw.js', location.href), { scope: './', updateViaCache: 'none' });
   registration.update().catch(() => {});  // offline: the worker kept serves on
   if (!container.controller) await new Promise((resolve) => container.addEventListener('controllerchange', resolve, { once: true }));
+  await (await book)?.whenIdle();  // the pages asked for before the worker took over have arrived
   await ask(container.controller, { type: 'conecurl-keep-read', urls: performance.getEntriesByType('resource').map((entry) => entry.name) });
   return registration;
 }
+
+/**
+ * A page shown by one version of the site loads again when a new publish's worker takes it over (the
+ * first worker taking a page that had none changes nothing). Listened for from the start, before the book
+ * opens: a new worker may take over while it does.
+ */
+function reloadOnUpdate() {
+  const container = navigator.serviceWorker;
+  if (!main.dataset.document || !container) return;
+  let updated = Boolean(container.controller);
+  container.addEventListener('controllerchange', () => {
+    if (updated) location.reload();
+    updated = true;
+  });
+}
+reloadOnUpdate();
 
 /** The service worker's registration once it controls the page and keeps what it read (null: none). */
 export const serviceWorker = registerServiceWorker().catch((error) => {

@@ -120,11 +120,15 @@ export function keepOfflinePart(book, toolbar, text, element, container = global
   const turned = () => { if (!busy) status.hidden = true; };
   book.addEventListener('turned', turned);
   container?.addEventListener?.('controllerchange', refresh);
+  // The size said again each time the More menu opens: the worker keeps pages as they are read.
+  const opened = new MutationObserver(() => { if (toolbar.menu.isOpen()) refresh(); });
+  opened.observe(toolbar.menu.button, { attributes: true, attributeFilter: ['aria-expanded'] });
   refresh();
   return {
     press,
     remove() {
       removed = true;
+      opened.disconnect();
       book.removeEventListener('turned', turned);
       container?.removeEventListener?.('controllerchange', refresh);
       status.remove();
