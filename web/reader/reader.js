@@ -92,7 +92,10 @@ function reloadOnUpdate() {
 }
 reloadOnUpdate();
 
-/** The service worker's registration once it controls the page and keeps what it read (null: none). */
+/**
+ * The service worker's registration once it controls the page and keeps what it read; null where there
+ * is none (not a published site, no service workers, registration refused); pending while it installs.
+ */
 export const serviceWorker = registerServiceWorker().catch((error) => {
   console.warn(`conecurl reader: the service worker could not be registered (${error?.message ?? error}); the book reads online only`);
   return null;

@@ -14,7 +14,6 @@ import { thumbnailsPanel } from './thumbnails-panel.js';
 import { contentsPanel } from './contents-panel.js';
 import { searchPanel } from './search-panel.js';
 import { canFullscreen, readingMode } from './reading-mode.js';
-import { keepOfflinePart } from './keep-offline.js';
 
 const ZOOM_STEP = 0.5;
 const NARROW = 600;         // CSS px: below, icons only and panels as sheets from the bottom
@@ -64,12 +63,24 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
     search: () => toggle('search'),
     readAloud: () => readAloud.press(),
     readAloudSettings: () => readAloud.toggleMenu(),
-    keepOffline: () => keepOffline.press(),
+    keepOffline: () => keepOffline?.then((part) => part?.press()),
   }, { fullscreenKey: fullscreenApi ? 'fullscreen' : 'read' });
   viewer.append(toolbar.element, toolbar.menu.element);
   const readAloud = parts.readAloud ? readAloudPart() : null;
   if (readAloud) viewer.append(readAloud.menu.element);
-  const keepOffline = parts.keepOffline ? keepOfflinePart(book, toolbar, text, viewer) : null;
+  let keepOffline = null;
+  let detached = false;
+  // Keep offline's module loads only once a service worker controls the page: on a site's first visit
+  // after the first spread (the reader registers it then), never for a book without one.
+  const workers = globalThis.navigator?.serviceWorker;
+  const loadKeepOffline = () => {
+    if (keepOffline || !workers?.controller) return;
+    keepOffline = import('./keep-offline.js').then(({ keepOfflinePart }) => (detached ? null : keepOfflinePart(book, toolbar, text, viewer)));
+  };
+  if (parts.keepOffline) {
+    workers?.addEventListener?.('controllerchange', loadKeepOffline);
+    loadKeepOffline();
+  }
   const contents = [];
   for (const [kind, make] of Object.entries(PANEL_KINDS)) {
     if (!parts[kind]) continue;
@@ -292,7 +303,9 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
       for (const [type, listener] of Object.entries(events)) book.removeEventListener(type, listener);
       for (const part of contents) part.remove();
       readAloud?.remove();
-      keepOffline?.remove();
+      detached = true;
+      workers?.removeEventListener?.('controllerchange', loadKeepOffline);
+      keepOffline?.then((part) => part?.remove());
       for (const panel of Object.values(panels)) panel.close();
       toolbar.remove();
       viewer.remove();
