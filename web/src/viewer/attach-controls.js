@@ -75,7 +75,8 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
   const workers = globalThis.navigator?.serviceWorker;
   const loadKeepOffline = () => {
     if (keepOffline || !workers?.controller) return;
-    keepOffline = import('./keep-offline.js').then(({ keepOfflinePart }) => (detached ? null : keepOfflinePart(book, toolbar, text, viewer)));
+    keepOffline = import('./keep-offline.js')
+      .then(({ keepOfflinePart }) => (detached ? null : keepOfflinePart(book, toolbar, text, viewer)), () => null);
   };
   if (parts.keepOffline) {
     workers?.addEventListener?.('controllerchange', loadKeepOffline);
