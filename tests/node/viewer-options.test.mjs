@@ -49,3 +49,8 @@ test('node: attachControls refuses a bad option with a TypeError naming it, befo
   assert.throws(() => attachControls(book, { labels: { nextPage: 'Suivant' } }), (error) => error instanceof TypeError
     && /attachControls option 'labels' must be/.test(error.message));
 });
+
+test('node: Keep offline says sizes as people read them: KB under a megabyte (at least 1), MB with one decimal under 100 MB (needs nothing)', async () => {
+  const { sizeText } = await import('../../web/src/viewer/keep-offline.js');
+  assert.deepEqual([120, 90_400, 999_000, 4_250_000, 12_500_000, 340_000_000].map(sizeText), ['1 KB', '90 KB', '999 KB', '4.3 MB', '12.5 MB', '340 MB']);
+});
