@@ -30,8 +30,9 @@ const LAZY = [
   { name: 'search', test: /[\\/]web[\\/]src[\\/](document[\\/](book-search|text-index)|layers[\\/]search-hits)\.js$/ },
   { name: 'html-pages', test: /([\\/]web[\\/]src[\\/]layers[\\/]html-pages\.js|[\\/]node_modules[\\/]modern-screenshot[\\/])/ },
   { name: 'static-book', test: /[\\/]web[\\/]src[\\/]book[\\/]static-book\.js$/ },
-  // What a book does only when asked: live pages, autoplay, the page sound, a passage's link, download and print.
-  { name: 'features', test: /[\\/]web[\\/]src[\\/](book[\\/](live-pages|autoplay|page-sound)|document[\\/](passage-link|book-document))\.js$/ },
+  // What a book does only when asked: live pages, autoplay, the page sound, a passage's link, download and
+  // print, Keep offline (loaded once a service worker controls the page).
+  { name: 'features', test: /[\\/]web[\\/]src[\\/](book[\\/](live-pages|autoplay|page-sound)|document[\\/](passage-link|book-document)|viewer[\\/]keep-offline)\.js$/ },
 ];
 const isLazy = (id) => LAZY.some((group) => group.test.test(id));
 

@@ -17,10 +17,10 @@ const types = {
   '.html': 'text/html; charset=utf-8', '.js': 'text/javascript', '.mjs': 'text/javascript',
   '.wasm': 'application/wasm', '.css': 'text/css', '.json': 'application/json',
   '.png': 'image/png', '.jpg': 'image/jpeg', '.svg': 'image/svg+xml', '.ico': 'image/x-icon',
-  '.webp': 'image/webp', '.avif': 'image/avif', '.pdf': 'application/pdf',
+  '.webp': 'image/webp', '.avif': 'image/avif', '.pdf': 'application/pdf', '.webmanifest': 'application/manifest+json',
 };
 // What a CDN compresses (images and PDFs are compressed already), and each file's encodings, made once.
-const COMPRESSIBLE = new Set(['.html', '.js', '.mjs', '.css', '.json', '.svg', '.wasm', '.txt', '.vtt']);
+const COMPRESSIBLE = new Set(['.html', '.js', '.mjs', '.css', '.json', '.webmanifest', '.svg', '.wasm', '.txt', '.vtt']);
 const ENCODERS = {
   br: (data) => zlib.brotliCompressSync(data, { params: { [zlib.constants.BROTLI_PARAM_QUALITY]: 11 } }),
   gzip: (data) => zlib.gzipSync(data, { level: 9 }),

@@ -3,6 +3,7 @@
 // pages (images and text) for readers and crawlers without JavaScript, and a description for search results
 // and link previews. Every value from the PDF is escaped.
 import { cutWords } from '../../web/src/document/format.js';
+import { COLORS, WEB_MANIFEST } from './web-app.mjs';
 
 /** Characters of a page's text in the noscript copy at most, and of all pages' together: the HTML stays small. */
 export const NOSCRIPT_CHARS = 400;
@@ -33,9 +34,10 @@ export function describe(title, pages) {
 
 /**
  * index.html for a site: `title`, `lang`, `manifest` (path of book.json), `cover` (path), `url` (absolute
- * base or null), `runtime` (runtimeFiles(): entry, preload, wasm, under `prefix`, and style), `pages` ([{ src, width, height, alt, text } | { failed }], paths relative to the site).
+ * base or null), `runtime` (runtimeFiles(): entry, preload, wasm, under `prefix`, and style), `pages` ([{ src, width, height, alt, text } | { failed }], paths relative to the site),
+ * `touchIcon` (path of the home screen icon, or none).
  */
-export function indexHtml({ title, lang, manifest, cover, url, runtime, prefix, pages }) {
+export function indexHtml({ title, lang, manifest, cover, url, runtime, prefix, pages, touchIcon = null }) {
   const absolute = (relative) => (url ? escapeHtml(new URL(relative, url).href) : href(relative));
   const description = escapeHtml(describe(title, pages));
   const lines = [
@@ -54,6 +56,10 @@ export function indexHtml({ title, lang, manifest, cover, url, runtime, prefix, 
     '<meta name="twitter:card" content="summary_large_image">',
     `<style>\n${runtime.style.trim()}\n</style>`,
     '<link rel="icon" href="data:,">',  // none: a cover thumbnail here would come before the first spread
+    // Installable (web-app.mjs): the web app manifest beside this page, the bar's colour, the home screen icon.
+    `<link rel="manifest" href="${href(WEB_MANIFEST)}">`,
+    `<meta name="theme-color" content="${COLORS.theme}">`,
+    ...(touchIcon ? [`<link rel="apple-touch-icon" href="${href(touchIcon)}">`] : []),
     // What the first spread needs, asked for at once: the chunks the reader's entry imports (as the bundler's
     // output lists them: build-bundles.mjs), the manifest and the engine's binary, fetched as the book fetches them (CORS mode, credentials of the
     // same origin), so the book's own requests are answered by these. Not the first page: Chromium failed

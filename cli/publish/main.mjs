@@ -18,6 +18,7 @@ import { startPool } from './render-pool.mjs';
 import { remapLinks, remapOutline } from './remap.mjs';
 import { PACKAGE_ROOT, runtimeFiles } from './runtime-files.mjs';
 import { summary } from './summary.mjs';
+import { ICON_SIDES, SERVICE_WORKER, WEB_MANIFEST, iconFile, writeWebApp } from './web-app.mjs';
 
 const BOOK = 'book';
 const RUNTIME = 'conecurl';
@@ -112,7 +113,9 @@ async function publish(options) {
     const ext = FORMATS[options.format];
     const kinds = ['pages', 'thumbs', 'text', ...(options.zoom > 0 ? ['zoom'] : [])];
     const pageFiles = numbers.flatMap((_, i) => kinds.map((kind) => `${BOOK}/${pagePath(kind, i, kind === 'text' ? 'json' : ext)}`));
+    const icons = ICON_SIDES.map((side) => ({ src: `${BOOK}/${iconFile(side)}`, side }));
     const fixed = ['index.html', HEADERS, `${BOOK}/${MANIFEST}`, `${BOOK}/${COVER}`, ...(download ? [`${BOOK}/${download}`] : []),
+      WEB_MANIFEST, SERVICE_WORKER, ...icons.map(({ src }) => src),
       ...site.files.map((file) => `${RUNTIME}/${file}`), ...[...narration.values()].flatMap(({ src, words }) => [`${BOOK}/${src}`, `${BOOK}/${words}`])];
     const { previous } = claimOutFolder(options.out, [...fixed, ...pageFiles]);
     steps.lap('open');  // pdf.js loaded, the PDF opened, its outline read, the out folder checked
@@ -186,6 +189,7 @@ async function publish(options) {
 
     const html = indexHtml({
       title, lang, manifest: `${BOOK}/${MANIFEST}`, cover: `${BOOK}/${COVER}`, url: options.url, runtime: site, prefix: RUNTIME,
+      touchIcon: written.has(icons[0].src) ? icons[0].src : null,
       pages: pages.map((page, i) => (page.failed ? page : {
         src: `${BOOK}/${page.src}`, imageWidth: results[i].imageWidth, imageHeight: results[i].imageHeight,
         alt: altText(i, results[i].text, ALT_CHARS), text: results[i].text,
@@ -196,8 +200,14 @@ async function publish(options) {
     const headers = headersFile({ download });
     fs.writeFileSync(path.join(options.out, HEADERS), headers);
     written.set(HEADERS, { bytes: Buffer.byteLength(headers), kind: 'text' });
+    // Last: the web app manifest, and the service worker whose version hashes every file written above.
+    // Precached at install: the page, the reader, book.json, the manifest and its icons, and every page's
+    // text (small; search reads them all); the images as they are read.
+    const shellFiles = ['index.html', `${BOOK}/${MANIFEST}`, WEB_MANIFEST, ...icons.map(({ src }) => src)];
+    writeWebApp({ out: options.out, title, lang, written, icons, skip: [HEADERS],
+      shell: (file, { kind }) => kind === 'runtime' || shellFiles.includes(file) || file.startsWith(`${BOOK}/text/`) });
     settleOutFolder(options.out, previous, [...written.keys()]);
-    steps.lap('finish');  // narration, book.json, index.html, _headers, the out folder settled
+    steps.lap('finish');  // narration, book.json, index.html, _headers, the web app files, the out folder settled
     steps.save({ jobs: options.jobs, pageCount: numbers.length, workerStartMs });
 
     for (const failure of failures.sort((a, b) => a.index - b.index)) {

@@ -7,6 +7,7 @@ import path from 'node:path';
 import { encodePageText, pagePath } from '../../web/src/document/format.js';
 import { pdfPageLinks, pdfPageText } from '../../web/src/document/pdf-document.js';
 import { FORMATS } from './args.mjs';
+import { COLORS, ICON_SIDES, iconFile } from './web-app.mjs';
 
 const COVER = 'cover.jpg';
 /** The most pixels a side each format takes: WebP's 14-bit sizes, AVIF kept to WebP's 16384 (what decoders take for sure), JPEG's 16 bits. */
@@ -49,6 +50,22 @@ export function fitScale(width, height, wanted, maxSide, budget = PIXEL_BUDGET) 
 function release(canvas) {
   canvas.width = 1;
   canvas.height = 1;
+}
+
+/**
+ * A square `side` px PNG of `source` (page 1) for the web app's icons: the page kept whole, its shape
+ * padded with the site's background colour, an eighth of the side free around it.
+ */
+function squareIcon(createCanvas, source, side) {
+  const canvas = createCanvas(side, side);
+  const context = canvas.getContext('2d');
+  context.imageSmoothingQuality = 'high';
+  context.fillStyle = COLORS.background;
+  context.fillRect(0, 0, side, side);
+  const fit = (side * 0.75) / Math.max(source.width, source.height);
+  const [width, height] = [Math.max(1, Math.round(source.width * fit)), Math.max(1, Math.round(source.height * fit))];
+  context.drawImage(source, Math.round((side - width) / 2), Math.round((side - height) / 2), width, height);
+  return canvas;
 }
 
 /** A white canvas of `width` x `height` holding `source` scaled down to it. */
@@ -155,6 +172,12 @@ export async function renderPage({ doc, textDoc = doc, createCanvas, number, ind
         lap('scale');
         await write(COVER, await cover.encode('jpeg', 85), 'image');
         release(cover);
+        for (const side of ICON_SIDES) {
+          const square = squareIcon(createCanvas, canvas, side);
+          lap('scale');
+          await write(iconFile(side), await square.encode('png'), 'image');
+          release(square);
+        }
       }
       release(canvas);
       return size;

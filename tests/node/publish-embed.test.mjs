@@ -22,7 +22,7 @@ function parseHeaders(text) {
 /** Whether a _headers path (a trailing * matches the rest) matches a site path like /book/pages/0001.webp. */
 const matches = (rule, file) => (rule.endsWith('*') ? file.startsWith(rule.slice(0, -1)) : file === rule);
 
-test('node: conecurl publish prints an <iframe> snippet of the site (its relative path, the book\'s title, fullscreen allowed) and writes _headers where index.html and book.json revalidate, the reader\'s hashed files are immutable and each file has one cache rule (needs pdfjs-dist, @napi-rs/canvas)', async (t) => {
+test('node: conecurl publish prints an <iframe> snippet of the site (its relative path, the book\'s title, fullscreen allowed) and writes _headers where index.html, book.json, sw.js and manifest.webmanifest revalidate, the reader\'s hashed files are immutable and each file has one cache rule (needs pdfjs-dist, @napi-rs/canvas)', async (t) => {
   const dir = tempDir(t);
   const pdf = path.join(dir, 'links.pdf');
   fs.writeFileSync(pdf, await makeLinkPdf());
@@ -45,12 +45,15 @@ test('node: conecurl publish prints an <iframe> snippet of the site (its relativ
     assert.equal(hits[0].headers.length, 1);
     return hits[0].headers[0];
   };
-  for (const file of ['/', '/index.html', '/book/book.json']) assert.equal(cache(file), 'Cache-Control: no-cache', file);
+  // The service worker and the web app manifest name the publish's version: they revalidate too.
+  const revalidated = ['index.html', 'book/book.json', 'sw.js', 'manifest.webmanifest'];
+  for (const file of ['/', ...revalidated.map((f) => `/${f}`)]) assert.equal(cache(file), 'Cache-Control: no-cache', file);
   // Every file the site holds but its own ledger (which the host may serve or not): the reader's, named by
   // their content's hash, immutable; the numbered page files cached for a while, then revalidated.
   const files = readJson(path.join(out, '.conecurl-publish.json')).files;
   assert.ok(files.includes('_headers'), 'the ledger lists _headers: a new publish replaces it');
-  for (const file of files.filter((f) => !['index.html', 'book/book.json', '_headers'].includes(f))) {
+  assert.ok(files.includes('sw.js') && files.includes('manifest.webmanifest') && files.includes('book/icon-512.png'), 'the web app\'s files are written');
+  for (const file of files.filter((f) => ![...revalidated, '_headers'].includes(f))) {
     if (file.startsWith('conecurl/')) {
       assert.match(file, /-[\w-]{8}\.(js|css|wasm)$/, 'a hashed name');
       assert.equal(cache(`/${file}`), 'Cache-Control: public, max-age=31536000, immutable', file);

@@ -9,11 +9,13 @@ import { attachControls } from '../../web/src/viewer.js';
 
 const on = (parts) => CONTROL_PARTS.filter((part) => parts[part]);
 
-test('node: controls: true shows every part but Download and Print on an image book; a PDF shows them, a download URL shows Download', () => {
-  const all = CONTROL_PARTS.filter((part) => part !== 'download' && part !== 'print');
+test('node: controls: true shows every part but Download, Print and Keep offline on an image book; a PDF shows Download and Print, a download URL shows Download; { keepOffline: true } shows Keep offline', () => {
+  const shown = CONTROL_PARTS.filter((part) => part !== 'keepOffline');
+  const all = shown.filter((part) => part !== 'download' && part !== 'print');
   assert.deepEqual(on(shownParts(true, { pdf: false, downloadUrl: false })), all);
-  assert.deepEqual(on(shownParts(true, { pdf: true, downloadUrl: false })), CONTROL_PARTS);
-  assert.deepEqual(on(shownParts(true, { pdf: false, downloadUrl: true })), CONTROL_PARTS.filter((part) => part !== 'print'));
+  assert.deepEqual(on(shownParts(true, { pdf: true, downloadUrl: false })), shown);
+  assert.deepEqual(on(shownParts(true, { pdf: false, downloadUrl: true })), shown.filter((part) => part !== 'print'));
+  assert.deepEqual(on(shownParts({ keepOffline: true }, { pdf: false, downloadUrl: false })), [...all, 'keepOffline']);
 });
 
 test('node: an object of parts hides those set false and shows Download or Print when set true, whatever the book', () => {
@@ -46,4 +48,9 @@ test('node: attachControls refuses a bad option with a TypeError naming it, befo
     && /attachControls option 'controls' must be/.test(error.message));
   assert.throws(() => attachControls(book, { labels: { nextPage: 'Suivant' } }), (error) => error instanceof TypeError
     && /attachControls option 'labels' must be/.test(error.message));
+});
+
+test('node: Keep offline says sizes as people read them: KB under a megabyte (at least 1), MB with one decimal under 100 MB (needs nothing)', async () => {
+  const { sizeText } = await import('../../web/src/viewer/keep-offline.js');
+  assert.deepEqual([120, 90_400, 999_000, 4_250_000, 12_500_000, 340_000_000].map(sizeText), ['1 KB', '90 KB', '999 KB', '4.3 MB', '12.5 MB', '340 MB']);
 });

@@ -34,7 +34,9 @@ async function open() {
     if (file) document.title = decodeURIComponent(new URL(file).pathname.split('/').pop() || document.title);
     // A page that fails shows plain paper; the reason goes to the console, for whoever runs the site.
     const pageerror = ({ detail }) => console.warn(`conecurl reader: page ${detail.index + 1} could not be shown (${detail.reason}): ${detail.error?.message ?? ''}`);
-    return await Flipbook.create(main, { ...source, controls: true, hash: Boolean(published), on: { pageerror } });
+    // A published site's service worker (sw.js) may keep the whole book: the More menu's Keep offline.
+    const controls = published ? { keepOffline: true } : true;
+    return await Flipbook.create(main, { ...source, controls, hash: Boolean(published), on: { pageerror } });
   } catch (error) {
     if (error?.fallback) return error.fallback;  // no WebGL2: the pages still show, as still pages
     showProblem(`This book could not be opened. ${error?.message ?? error}`);
@@ -44,3 +46,57 @@ async function open() {
 
 /** The book on the page, once open (null when it could not be opened): for the page's own scripts. */
 export const book = open();
+
+/** A question to the service worker `worker`, answered on a port of its own (web/reader/service-worker.js). */
+function ask(worker, message) {
+  return new Promise((resolve) => {
+    const channel = new MessageChannel();
+    channel.port1.onmessage = ({ data }) => resolve(data);
+    worker.postMessage(message, [channel.port2]);
+  });
+}
+
+/**
+ * A published site's service worker (sw.js beside index.html, written by conecurl publish): registered
+ * once the book is open and the page has loaded, so it never delays the first spread; where the browser
+ * has service workers (https, localhost). Once it controls the page, it keeps the files the page read
+ * before (the pages of the first spread and those near it). Resolves to the registration, null where
+ * there is none.
+ */
+async function registerServiceWorker() {
+  const container = navigator.serviceWorker;
+  if (!main.dataset.document || !container) return null;
+  await book;
+  if (document.readyState !== 'complete') await new Promise((resolve) => addEventListener('load', resolve, { once: true }));
+  const registration = await container.register(new URL('sw.js', location.href), { scope: './', updateViaCache: 'none' });
+  registration.update().catch(() => {});  // offline: the worker kept serves on
+  if (!container.controller) await new Promise((resolve) => container.addEventListener('controllerchange', resolve, { once: true }));
+  await (await book)?.whenIdle();  // the pages asked for before the worker took over have arrived
+  await ask(container.controller, { type: 'conecurl-keep-read', urls: performance.getEntriesByType('resource').map((entry) => entry.name) });
+  return registration;
+}
+
+/**
+ * A page shown by one version of the site loads again when a new publish's worker takes it over (the
+ * first worker taking a page that had none changes nothing). Listened for from the start, before the book
+ * opens: a new worker may take over while it does.
+ */
+function reloadOnUpdate() {
+  const container = navigator.serviceWorker;
+  if (!main.dataset.document || !container) return;
+  let updated = Boolean(container.controller);
+  container.addEventListener('controllerchange', () => {
+    if (updated) location.reload();
+    updated = true;
+  });
+}
+reloadOnUpdate();
+
+/**
+ * The service worker's registration once it controls the page and keeps what it read; null where there
+ * is none (not a published site, no service workers, registration refused); pending while it installs.
+ */
+export const serviceWorker = registerServiceWorker().catch((error) => {
+  console.warn(`conecurl reader: the service worker could not be registered (${error?.message ?? error}); the book reads online only`);
+  return null;
+});

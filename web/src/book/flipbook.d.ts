@@ -356,6 +356,12 @@ export interface ControlParts {
   print?: boolean;
   /** Read aloud (play and pause) and Voice and speed: shown once the book's `canReadAloud()` resolves true. */
   readAloud?: boolean;
+  /**
+   * Keep offline, a More menu item: fetches every file of the site through the service worker that
+   * controls the page (a published site's sw.js), its size shown before. Default: off; shown with
+   * `true` only while such a worker controls the page (a published site's reader sets it).
+   */
+  keepOffline?: boolean;
 }
 
 /** The viewer's texts (the `labels` option); `{n}` and `{total}` are filled in with numbers. */
@@ -411,6 +417,14 @@ export interface ViewerLabels {
   defaultVoice?: string;
   /** The popup's language select, shown over more than 300 voices (one language's listed at a time): 'Language'. */
   voiceLanguage?: string;
+  /** The More menu's item, the size of what it will fetch filled in: 'Keep offline ({size})'. */
+  keepOffline?: string;
+  /** Said as it fetches: 'Keeping offline: {percent}% of {size}'. */
+  keepingOffline?: string;
+  /** Said once every file is kept, and the item's name then: 'Kept offline'. */
+  keptOffline?: string;
+  /** Said when a fetch failed: 'Keeping offline stopped: the network failed. Try again online.' */
+  keepOfflineFailed?: string;
 }
 
 /** Where a page stands: not wanted yet ('idle'), loading, loaded, or failed (with why, as `pageerror` said). */

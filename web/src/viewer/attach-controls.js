@@ -65,10 +65,24 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
     search: () => toggle('search'),
     readAloud: () => readAloud.press(),
     readAloudSettings: () => readAloud.toggleMenu(),
+    keepOffline: () => keepOffline?.then((part) => part?.press()),
   }, { fullscreenKey: fullscreenApi ? 'fullscreen' : 'read' });
   viewer.append(toolbar.element, toolbar.menu.element);
   let removed = false;
   const readAloud = parts.readAloud ? readAloudPart() : null;
+  let keepOffline = null;
+  // Keep offline's module loads only once a service worker controls the page: on a site's first visit
+  // after the first spread (the reader registers it then), never for a book without one.
+  const workers = globalThis.navigator?.serviceWorker;
+  const loadKeepOffline = () => {
+    if (keepOffline || !workers?.controller) return;
+    keepOffline = import('./keep-offline.js')
+      .then(({ keepOfflinePart }) => (removed ? null : keepOfflinePart(book, toolbar, text, viewer)), () => null);
+  };
+  if (parts.keepOffline) {
+    workers?.addEventListener?.('controllerchange', loadKeepOffline);
+    loadKeepOffline();
+  }
   const contents = {};  // kind -> the promise of its contents ({ remove }), once asked for
   for (const kind of Object.keys(PANEL_KINDS)) {
     if (!parts[kind]) continue;
@@ -313,6 +327,8 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
       for (const [type, listener] of Object.entries(events)) book.removeEventListener(type, listener);
       for (const part of Object.values(contents)) part.then((made) => made?.remove());
       readAloud?.remove();
+      workers?.removeEventListener?.('controllerchange', loadKeepOffline);
+      keepOffline?.then((part) => part?.remove());
       for (const panel of Object.values(panels)) panel.close();
       toolbar.remove();
       viewer.remove();

@@ -25,6 +25,8 @@ const PANELS = ['thumbnails', 'contents', 'search'];
  * a book reading itself is paused with its button alone, which should then be one press away.
  */
 export const OVERFLOW_ORDER = ['print', 'download', 'fullscreen', 'contents', 'thumbnails', 'zoom', 'readAloud', 'search'];
+/** The parts only ever in the More menu (no toolbar button): made absent, shown by setPresent. */
+export const MENU_ONLY = ['keepOffline'];
 // The buttons a part is made of.
 const BUTTONS_OF = { zoom: ['zoomOut', 'zoomIn'], readAloud: ['readAloud', 'readAloudSettings'] };
 const buttonsOf = (part) => BUTTONS_OF[part] ?? [part];
@@ -101,8 +103,11 @@ export function createToolbar(labels, parts, actions, { fullscreenKey = 'fullscr
     const key = name === 'fullscreen' ? fullscreenKey : name;
     menuItems.push({ part: name, label: labels[key], iconName: name === 'fullscreen' && fullscreenKey === 'read' ? 'read' : name });
   }
+  const menuOnly = MENU_ONLY.filter((part) => parts[part]);
+  for (const part of menuOnly) menuItems.push({ part, label: labels[part], iconName: part });
   const menu = createMoreMenu(labels, menuItems, (name) => {
-    if (buttons[name].getAttribute('aria-disabled') !== 'true') actions[name](buttons[name]);
+    const control = buttons[name] ?? menu.items[name];
+    if (control.getAttribute('aria-disabled') !== 'true') actions[name](control);
   });
   element.append(buttons.exit, menu.button);
   for (const [name, button] of Object.entries(buttons)) {
@@ -118,10 +123,11 @@ export function createToolbar(labels, parts, actions, { fullscreenKey = 'fullscr
   // OVERFLOW_ORDER moves into the menu. Measured on the real widths (labels, fonts, a coarse pointer's
   // 44 px targets), again whenever the toolbar's width changes.
   let reading = false;
-  const absent = new Set(buttons.readAloud ? ['readAloud'] : []);
+  const absent = new Set([...(buttons.readAloud ? ['readAloud'] : []), ...menuOnly]);
   const present = (part) => buttonsOf(part).every((name) => buttons[name]) && !absent.has(part)
     && !(reading && part === 'fullscreen');
-  const setShown = (part, on) => { for (const name of buttonsOf(part)) buttons[name].hidden = !on; };
+  const setShown = (part, on) => { for (const name of buttonsOf(part)) if (buttons[name]) buttons[name].hidden = !on; };
+  const menuOnlyShown = () => menuOnly.filter((part) => !absent.has(part));
   // A group of absent parts alone (Read aloud, with zoom hidden) takes no gap either.
   const tidyGaps = () => { for (const { gap, group: parts } of gaps) gap.hidden = parts.every((part) => absent.has(part)); };
   for (const part of absent) setShown(part, false);
@@ -136,7 +142,7 @@ export function createToolbar(labels, parts, actions, { fullscreenKey = 'fullscr
     const movable = OVERFLOW_ORDER.filter(present);
     for (const part of movable) setShown(part, true);
     if (buttons.fullscreen) buttons.fullscreen.hidden = reading;
-    menu.show([]);
+    menu.show(menuOnlyShown());  // More stays while it holds a menu-only item
     moved = [];
     if (!fits()) {
       menu.button.hidden = false;
@@ -147,7 +153,7 @@ export function createToolbar(labels, parts, actions, { fullscreenKey = 'fullscr
       }
     }
     const names = moved.flatMap(buttonsOf);
-    menu.show(Object.keys(menu.items).filter((name) => names.includes(name)));  // in toolbar order
+    menu.show(Object.keys(menu.items).filter((name) => names.includes(name) || menuOnlyShown().includes(name)));  // in toolbar order
     if (focused && document.activeElement !== focused) (focused.hidden ? menu.button : focused).focus();
     focus.refresh();
   }
@@ -179,7 +185,7 @@ export function createToolbar(labels, parts, actions, { fullscreenKey = 'fullscr
     focusTarget: (name) => (buttons[name] && !buttons[name].hidden ? buttons[name] : menu.button),
     /** Shows a part made absent (`on`), or takes it away again (hidden, and not in the menu); fits again. */
     setPresent(part, on) {
-      if (!buttons[buttonsOf(part)[0]] || absent.has(part) === !on) return;
+      if (!(buttons[buttonsOf(part)[0]] ?? menu.items[part]) || absent.has(part) === !on) return;
       if (on) absent.delete(part);
       else {
         absent.add(part);
@@ -188,12 +194,12 @@ export function createToolbar(labels, parts, actions, { fullscreenKey = 'fullscr
       tidyGaps();
       fit();
     },
-    /** Names button `name` by label `key` with icon `iconName`, in the toolbar and in the More menu. */
-    relabel(name, key, iconName) {
+    /** Names button `name` by label `key` (or `text`, that label filled in) with icon `iconName`, in the toolbar and in the More menu. */
+    relabel(name, key, iconName, text = labels[key]) {
       for (const control of [buttons[name], menu.items[name]]) {
         if (!control) continue;
-        control.querySelector('span').textContent = labels[key];
-        if (control.title) control.title = labels[key];
+        control.querySelector('span').textContent = text;
+        if (control.title) control.title = text;
         control.querySelector('svg').replaceWith(icon(iconName));
       }
     },

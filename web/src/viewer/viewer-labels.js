@@ -1,7 +1,7 @@
 // The texts of the toolbar and its panels, by key, so a book can be translated (the `labels` option):
 // the defaults, the keys allowed, and the few texts made from numbers ("3 of 17", "Page 12").
 
-/** Every label and its English default. `{n}` and `{total}` are filled in where a number goes. */
+/** Every label and its English default. `{n}`, `{total}`, `{size}` and `{percent}` are filled in where a number goes. */
 export const DEFAULT_LABELS = Object.freeze({
   toolbar: 'Book controls',
   previous: 'Previous page',
@@ -36,6 +36,10 @@ export const DEFAULT_LABELS = Object.freeze({
   speed: 'Speed',
   defaultVoice: 'Browser\'s default',
   voiceLanguage: 'Language',
+  keepOffline: 'Keep offline ({size})',
+  keepingOffline: 'Keeping offline: {percent}% of {size}',
+  keptOffline: 'Kept offline',
+  keepOfflineFailed: 'Keeping offline stopped: the network failed. Try again online.',
 });
 export const LABEL_KEYS = Object.keys(DEFAULT_LABELS);
 

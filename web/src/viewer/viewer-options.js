@@ -4,9 +4,11 @@ import { LABEL_KEYS } from './viewer-labels.js';
 
 /**
  * The toolbar's parts; `controls: { thumbnails: false }` hides one. `readAloud` (Read aloud and Voice
- * and speed) shows only once the book says it can read aloud (`canReadAloud()`).
+ * and speed) shows only once the book says it can read aloud (`canReadAloud()`). `keepOffline` (a More
+ * menu item) is off unless given, and shows only while a service worker that keeps the site (a published
+ * site's sw.js) controls the page.
  */
-export const CONTROL_PARTS = ['previous', 'next', 'page', 'zoom', 'fullscreen', 'thumbnails', 'contents', 'search', 'download', 'print', 'readAloud'];
+export const CONTROL_PARTS = ['previous', 'next', 'page', 'zoom', 'fullscreen', 'thumbnails', 'contents', 'search', 'download', 'print', 'readAloud', 'keepOffline'];
 
 const plain = (value) => value !== null && typeof value === 'object' && Object.getPrototypeOf(value) === Object.prototype;
 
@@ -25,11 +27,12 @@ export function checkLabels(value) {
 
 /**
  * The parts shown for a `controls` value: every part is on unless set false, except Download (on
- * for a PDF or a `download` URL) and Print (on for a PDF), which `{ download: true }` or `{ print: true }` shows anyway.
+ * for a PDF or a `download` URL) and Print (on for a PDF), which `{ download: true }` or `{ print: true }` shows anyway,
+ * and Keep offline, on only with `{ keepOffline: true }`.
  * @param {boolean|object} controls @param {{ pdf: boolean, downloadUrl: boolean }} book
  */
 export function shownParts(controls, { pdf, downloadUrl }) {
   const given = plain(controls) ? controls : {};
-  const automatic = { download: pdf || downloadUrl, print: pdf };
+  const automatic = { download: pdf || downloadUrl, print: pdf, keepOffline: false };
   return Object.fromEntries(CONTROL_PARTS.map((part) => [part, given[part] ?? automatic[part] ?? true]));
 }

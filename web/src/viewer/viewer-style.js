@@ -87,6 +87,13 @@ const VIEWER_CSS = `
 }
 .conecurl-menu[data-below] { bottom: auto; top: 100%; }
 .conecurl-menu[hidden] { display: none; }
+.conecurl-offline-status {
+  position: absolute; right: 4px; bottom: 100%; z-index: 2; display: flex; flex-direction: column; gap: 4px;
+  max-width: min(320px, calc(100% - 8px)); margin-bottom: 4px; padding: 8px 12px; border-radius: 6px;
+  background: var(--conecurl-toolbar-bg, #24292e); color: var(--conecurl-toolbar-fg, #f5f5f2);
+}
+.conecurl-offline-status[hidden], .conecurl-offline-status progress[hidden] { display: none; }
+.conecurl-offline-status progress { width: 100%; accent-color: var(--conecurl-accent, #3d7be0); }
 .conecurl-viewer .conecurl-menu button {
   justify-content: flex-start; width: 100%; height: auto; min-height: 36px; padding: 0 14px; gap: 10px; border-radius: 0;
 }

@@ -1,0 +1,89 @@
+// What makes a published site an installable web app that reads offline: its web app manifest
+// (manifest.webmanifest) and its service worker (sw.js, from web/reader/service-worker.js with this
+// publish's version and file list put in). The list is what this publish wrote, never a hand list.
+import { createHash } from 'node:crypto';
+import fs from 'node:fs';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { inputError } from './errors.mjs';
+
+export const WEB_MANIFEST = 'manifest.webmanifest';
+export const SERVICE_WORKER = 'sw.js';
+/** The icons made from the cover (render-page.mjs), in book/: their side in px, and their file names. */
+export const ICON_SIDES = [192, 512];
+export const iconFile = (side) => `icon-${side}.png`;
+/**
+ * The site's colours: the reader page's background (web/reader/reader.css) behind the icons and on the
+ * splash screen, and the browser's bar. book.json has no colours of its own: these are the reader's.
+ */
+export const COLORS = { background: '#d9d4cc', theme: '#d9d4cc' };
+/** The line of the service worker's source that publish replaces with the site's facts. */
+const SITE_LINE = 'const SITE = null;  // replaced by conecurl publish';
+/** The characters of the title a home screen shows under the icon at most (short_name). */
+const SHORT_NAME = 12;
+
+/**
+ * manifest.webmanifest: name and short_name from the title, start_url and scope the site's own folder
+ * ("./", so it works under any sub-path), standalone, the colours, the two icons (paths from the site).
+ */
+export function webManifest({ title, lang, icons }) {
+  const name = String(title).trim() || 'Book';
+  const short = name.length <= SHORT_NAME ? name : `${name.slice(0, SHORT_NAME - 1).trimEnd()}\u2026`;
+  return `${JSON.stringify({
+    name, short_name: short, ...(lang ? { lang } : {}), start_url: './', scope: './', display: 'standalone',
+    background_color: COLORS.background, theme_color: COLORS.theme,
+    icons: icons.map(({ src, side }) => ({ src, sizes: `${side}x${side}`, type: 'image/png', purpose: 'any' })),
+  }, null, 1)}\n`;
+}
+
+/**
+ * The version of a site: a hash of every file's path and contents (`files`: relative paths in `out`),
+ * so a publish that changes any file gets a new one and one that changes none keeps it.
+ */
+export function siteVersion(out, files) {
+  const hash = createHash('sha256');
+  for (const file of [...files].sort()) {
+    hash.update(`${file}\0`);
+    hash.update(createHash('sha256').update(fs.readFileSync(path.join(out, file))).digest());
+  }
+  return hash.digest('hex').slice(0, 16);
+}
+
+/**
+ * sw.js: `template` (web/reader/service-worker.js's text) with its SITE line holding `version`,
+ * `shell` (the files precached at install: relative paths) and `files` ([path, bytes] of every file
+ * the site serves, which Keep offline fetches). An error if the template lost its SITE line.
+ */
+export function serviceWorker(template, { version, shell, files }) {
+  if (!template.includes(SITE_LINE)) throw new Error(`the service worker's source has no line "${SITE_LINE}": reinstall conecurl`);
+  const missing = shell.filter((file) => !files.some(([name]) => name === file));
+  if (missing.length > 0) throw new Error(`the service worker's shell names files the site does not have: ${missing.join(', ')}`);
+  return template.replace(SITE_LINE, `const SITE = ${JSON.stringify({ version, shell, files })};`);
+}
+
+/** The service worker's source in the package. */
+const TEMPLATE = fileURLToPath(new URL('../../web/reader/service-worker.js', import.meta.url));
+
+/**
+ * Writes manifest.webmanifest and sw.js into `out` once every other file is written, and records both
+ * in `written` (relative path -> { bytes, kind }, main.mjs's). `shell`: whether a file is precached at
+ * install; `skip`: files the site does not serve to readers (_headers). The version hashes every file
+ * written but sw.js itself. Returns { version, files } (files: the sw's list, [path, bytes]).
+ */
+export function writeWebApp({ out, title, lang, written, icons, shell, skip = [] }) {
+  const manifest = webManifest({ title, lang, icons: icons.filter(({ src }) => written.has(src)) });
+  fs.writeFileSync(path.join(out, WEB_MANIFEST), manifest);
+  written.set(WEB_MANIFEST, { bytes: Buffer.byteLength(manifest), kind: 'text' });
+  const files = [...written].filter(([file]) => !skip.includes(file)).map(([file, { bytes }]) => [file, bytes]).sort(([a], [b]) => (a < b ? -1 : 1));
+  let template;
+  try {
+    template = fs.readFileSync(TEMPLATE, 'utf8');
+  } catch (error) {
+    throw Object.assign(inputError(`${TEMPLATE} is missing from conecurl: reinstall conecurl`), { cause: error });
+  }
+  const version = siteVersion(out, files.map(([file]) => file));
+  const worker = serviceWorker(template, { version, shell: files.map(([file]) => file).filter((file) => shell(file, written.get(file))), files });
+  fs.writeFileSync(path.join(out, SERVICE_WORKER), worker);
+  written.set(SERVICE_WORKER, { bytes: Buffer.byteLength(worker), kind: 'text' });
+  return { version, files };
+}

@@ -1,0 +1,187 @@
+// Browser: a site `conecurl publish` wrote, as an offline, installable web app (its sw.js and
+// manifest.webmanifest): once loaded its service worker controls the page, and offline a reload shows the
+// first spread, turns and searches; Keep offline fetches the whole book; the manifest and icons meet
+// Chromium's install criteria; a re-publish's worker replaces the old version's cache and what is shown.
+// The sites are served under a sub-path (/build/test-sites/<name>/). Every wait is for an event or a state.
+import { test, expect } from '@playwright/test';
+import { execFileSync } from 'node:child_process';
+import { mkdirSync, rmSync, writeFileSync } from 'node:fs';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { makeDocumentPdf } from './document-pdf.js';
+import { READER_ENTRY } from '../node/publish-run.mjs';
+
+const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
+const SITES = path.join(root, 'build/test-sites');
+const TITLE = 'The offline test';
+// Folders of their own per worker: two workers never publish into the same one.
+const siteName = (kind) => `offline-${kind}-${test.info().workerIndex}`;
+const siteUrl = (name) => `/build/test-sites/${name}/`;
+const CACHE_PREFIX = 'conecurl-site ';  // web/reader/service-worker.js names its caches so
+
+let pdf;
+/** Publishes the test PDF into build/test-sites/`name` (over an earlier publish there, as a re-publish does). */
+function publish(name, title) {
+  execFileSync(process.execPath, [path.join(root, 'cli/conecurl.mjs'), 'publish', pdf, '--out', path.join(SITES, name),
+    '--height', '400', '--title', title], { stdio: 'pipe' });
+}
+
+test.beforeAll(async () => {
+  mkdirSync(SITES, { recursive: true });
+  pdf = path.join(SITES, `offline-${test.info().workerIndex}.pdf`);
+  writeFileSync(pdf, Buffer.from((await makeDocumentPdf()).base64, 'base64'));
+  for (const kind of ['read', 'keep', 'install', 'update']) rmSync(path.join(SITES, siteName(kind)), { recursive: true, force: true });
+  for (const kind of ['read', 'keep', 'install']) publish(siteName(kind), TITLE);
+});
+
+/**
+ * The site's book once open (`window.book`) and, online, its service worker once it controls the page and
+ * has kept what the page read (the reader's `serviceWorker` promise). Resolves whether a worker controls it.
+ */
+async function openBook(page, site) {
+  return page.evaluate(async (entry) => {
+    const module = await import(document.querySelector(entry).src);
+    window.book = await module.book;
+    await window.book.whenIdle();
+    window.registration = await module.serviceWorker;
+    return Boolean(window.registration && navigator.serviceWorker.controller);
+  }, READER_ENTRY);
+}
+
+/** Turns to the next spread; resolves to the open pages' states once their images are in. */
+const turnNext = (page) => page.evaluate(async () => {
+  const turned = new Promise((resolve) => window.book.addEventListener('turned', resolve, { once: true }));
+  window.book.next();
+  await turned;
+  await window.book.whenIdle();
+  return window.book.openPages.map((index) => window.book.pageState(index).state);
+});
+
+/** What the controlling worker says of the site's files (Keep offline's question). */
+const plan = (page) => page.evaluate(() => new Promise((resolve) => {
+  const channel = new MessageChannel();
+  channel.port1.onmessage = ({ data }) => resolve(data);
+  navigator.serviceWorker.controller.postMessage({ type: 'conecurl-offline-plan' }, [channel.port2]);
+}));
+
+test('browser: once loaded online, the published site reads offline: a reload offline shows the first spread, turns, and search finds its words (needs conecurl publish and Chromium\'s service workers)', async ({ page, context }) => {
+  await page.setViewportSize({ width: 390, height: 844 });  // a phone's screen, for the picture below
+  const problems = [];
+  page.on('pageerror', (error) => problems.push(error.message));
+  const site = siteUrl(siteName('read'));
+  await page.goto(`${site}index.html`);
+  expect(await openBook(page, site)).toBe(true);
+
+  await context.setOffline(true);
+  await page.reload();
+  expect(await openBook(page, site)).toBe(true);
+  const first = await page.evaluate(() => ({
+    online: navigator.onLine, title: document.title, open: window.book.openPages,
+    states: window.book.openPages.map((index) => window.book.pageState(index).state),
+  }));
+  expect(first).toEqual({ online: false, title: TITLE, open: [0], states: ['loaded'] });
+  mkdirSync(path.join(root, 'build'), { recursive: true });
+  await page.screenshot({ path: path.join(root, 'build/offline-shot.png') });
+  // The next page was read online (near the first, the book fetched it before the worker took over).
+  const next = await turnNext(page);
+  expect(next.length).toBeGreaterThan(0);
+  expect(next.every((state) => state === 'loaded')).toBe(true);
+  // Every page's text is precached: search finds the words offline, on the pages pdf.js puts them.
+  expect((await page.evaluate(() => window.book.search('zebra'))).map((hit) => hit.page)).toEqual([1, 1, 4]);
+  expect(problems).toEqual([]);
+});
+
+test('browser: Keep offline in the More menu says the size it will fetch, fetches the whole book with progress, and then the site opens offline from its start_url at a page never read (needs conecurl publish, service workers)', async ({ page, context }) => {
+  const site = siteUrl(siteName('keep'));
+  await page.goto(`${site}index.html`);
+  expect(await openBook(page, site)).toBe(true);
+  const before = await plan(page);
+  const left = before.files.filter((file) => !file.kept);
+  const lastPage = new URL(`${site}book/pages/0008.webp`, page.url()).href;
+  expect(left.map((file) => file.url)).toContain(lastPage);  // the last page was never read
+  const { sizeText } = await import('../../web/src/viewer/keep-offline.js');
+  const size = sizeText(left.reduce((sum, file) => sum + file.bytes, 0));
+
+  // Everything the live region says, as it says it.
+  await page.evaluate(() => {
+    window.said = [];
+    const status = document.querySelector('.conecurl-offline-status');
+    new MutationObserver(() => window.said.push(status.textContent)).observe(status, { subtree: true, childList: true, characterData: true });
+  });
+  await page.getByRole('button', { name: 'More' }).click();
+  const item = page.getByRole('menuitem', { name: `Keep offline (${size})` });
+  await item.click();
+  await expect(page.getByRole('status').filter({ hasText: 'Kept offline' })).toBeVisible();
+  const said = await page.evaluate(() => window.said);
+  expect(said[0]).toBe(`Keeping offline: 0% of ${size}`);
+  expect(said.at(-1)).toBe('Kept offline');
+  expect(said.every((text) => /^Keeping offline: \d+% of /.test(text) || text === 'Kept offline')).toBe(true);
+  expect((await plan(page)).files.filter((file) => !file.kept)).toEqual([]);
+  await page.getByRole('button', { name: 'More' }).click();
+  await expect(page.getByRole('menuitem', { name: 'Kept offline' })).toHaveAttribute('aria-disabled', 'true');
+  await page.keyboard.press('Escape');
+
+  // Offline, the site opened as its home screen icon opens it (the manifest's start_url, ./), at the last page.
+  const manifest = await (await page.request.get(`${site}manifest.webmanifest`)).json();
+  await context.setOffline(true);
+  await page.goto(`${new URL(manifest.start_url, page.url()).href}#page=8`);
+  expect(await openBook(page, site)).toBe(true);
+  const last = await page.evaluate(() => ({ online: navigator.onLine, open: window.book.openPages, state: window.book.pageState(7).state }));
+  expect(last.online).toBe(false);
+  expect(last.open).toContain(7);
+  expect(last.state).toBe('loaded');
+});
+
+test('browser: the published site meets Chromium\'s install criteria: the manifest\'s name, start_url, scope, display and icons, the icons\' sizes, a service worker (needs conecurl publish, service workers)', async ({ page, context }) => {
+  const site = siteUrl(siteName('install'));
+  await page.goto(`${site}index.html`);
+  expect(await openBook(page, site)).toBe(true);
+  const manifestUrl = await page.evaluate(() => document.querySelector('link[rel="manifest"]').href);
+  expect(new URL(manifestUrl).pathname).toBe(`${site}manifest.webmanifest`);
+  const manifest = await (await page.request.get(manifestUrl)).json();
+  expect(manifest).toMatchObject({ name: TITLE, short_name: 'The offline…', start_url: './', scope: './', display: 'standalone' });
+  const icons = await page.evaluate((list) => Promise.all(list.map(async (icon) => {
+    const image = new Image();
+    image.src = new URL(icon.src, document.querySelector('link[rel="manifest"]').href).href;
+    await image.decode();
+    return { sizes: icon.sizes, type: icon.type, drawn: `${image.naturalWidth}x${image.naturalHeight}` };
+  })), manifest.icons);
+  expect(icons).toEqual([
+    { sizes: '192x192', type: 'image/png', drawn: '192x192' },
+    { sizes: '512x512', type: 'image/png', drawn: '512x512' },
+  ]);
+  // Chromium's own verdict, as its install prompt would ask it.
+  const cdp = await context.newCDPSession(page);
+  const { url, errors } = await cdp.send('Page.getAppManifest');
+  expect({ url, errors }).toEqual({ url: manifestUrl, errors: [] });
+  const { installabilityErrors } = await cdp.send('Page.getInstallabilityErrors');
+  // Playwright's browser contexts are incognito ones, where Chromium offers no install whatever the site.
+  expect(installabilityErrors.filter((error) => error.errorId !== 'in-incognito')).toEqual([]);
+});
+
+test('browser: a re-publish replaces the site online: the new version\'s worker takes over, the page loads again with the new book, and the old version\'s cache is deleted (needs conecurl publish twice, service workers)', async ({ page }) => {
+  const name = siteName('update');
+  const site = siteUrl(name);
+  publish(name, 'First edition');
+  await page.goto(`${site}index.html`);
+  expect(await openBook(page, site)).toBe(true);
+  const caches = () => page.evaluate((prefix) => caches.keys().then((names) => names.filter((n) => n.startsWith(prefix))), CACHE_PREFIX);
+  const first = await caches();
+  expect(first).toHaveLength(1);
+  expect(await page.evaluate(() => window.book.options.label)).toBe('First edition');
+
+  publish(name, 'Second edition');
+  // The reload is answered by the first version's cache; the new worker found online takes over and the
+  // page loads again: the second load is the new edition.
+  const reloaded = page.waitForEvent('load').then(() => page.waitForEvent('load'));
+  await page.reload();
+  await reloaded;
+  await expect(page).toHaveTitle('Second edition');
+  expect(await openBook(page, site)).toBe(true);
+  expect(await page.evaluate(() => window.book.options.label)).toBe('Second edition');
+  const second = await caches();
+  expect(second).toHaveLength(1);
+  expect(second[0]).not.toBe(first[0]);
+  const cachedIndex = await page.evaluate(async (name) => (await (await caches.open(name)).match('index.html')).text(), second[0]);
+  expect(cachedIndex).toContain('<title>Second edition</title>');
+});

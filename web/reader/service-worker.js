@@ -1,0 +1,87 @@
+// A published site's service worker: `conecurl publish` writes it as sw.js at the site's root with SITE
+// filled in (cli/publish/web-app.mjs), so the reader and the pages read stay readable offline.
+// At install it precaches SITE.shell (the page, the reader, book.json, the icons); every other file of
+// the site is kept as it is read (cache first), and those the page read before it took over when the
+// reader says ("conecurl-keep-read"); the More menu's Keep offline asks it for SITE.files
+// ("conecurl-offline-plan") and fetches those it lacks through it. Its cache is named by the site's
+// folder and SITE.version (a hash of the files written): a new publish installs a new worker that
+// takes over at once and deletes the old version's cache. Every URL is relative to its scope, so the
+// site works under any sub-path. Requests for anything else pass by untouched.
+const SITE = null;  // replaced by conecurl publish
+
+const PREFIX = 'conecurl-site ';
+const scope = self.registration.scope;
+const OWN = `${PREFIX}${scope} `;
+const CACHE = `${OWN}${SITE.version}`;
+/** A site file's absolute URL, its path encoded as index.html's links encode it. */
+const urlOf = (file) => new URL(file.split('/').map(encodeURIComponent).join('/'), scope).href;
+const FILES = new Map(SITE.files.map(([file, bytes]) => [urlOf(file), bytes]));
+const INDEX = urlOf('index.html');
+
+self.addEventListener('install', (event) => {
+  event.waitUntil((async () => {
+    const cache = await caches.open(CACHE);
+    // From the server, not the HTTP cache: a file kept there an hour may be the last publish's.
+    await cache.addAll(SITE.shell.map((file) => new Request(urlOf(file), { cache: 'reload' })));
+    await self.skipWaiting();
+  })());
+});
+
+self.addEventListener('activate', (event) => {
+  event.waitUntil((async () => {
+    for (const name of await caches.keys()) if (name.startsWith(OWN) && name !== CACHE) await caches.delete(name);
+    await self.clients.claim();
+  })());
+});
+
+/** The site file a request asks for (its URL without query), or null: the folder itself is index.html. */
+function siteFile(request) {
+  const url = new URL(request.url);
+  url.search = '';
+  url.hash = '';
+  if (request.mode === 'navigate' && url.href === scope) return INDEX;
+  return FILES.has(url.href) ? url.href : null;
+}
+
+/** The file from this version's cache; else from the server (revalidated), kept for next time. */
+async function cacheFirst(file, request = null) {
+  const cache = await caches.open(CACHE);
+  const kept = await cache.match(file);
+  if (kept) return kept;
+  // A range of a recording not kept (narration's <audio>): the server answers it, nothing is kept.
+  if (request?.headers.has('range')) return fetch(request);
+  const response = await fetch(file, { cache: 'no-cache', credentials: 'same-origin' });
+  // Kept before it is answered, so a page that fetched it (Keep offline) finds it kept when the fetch ends.
+  if (response.status === 200) await cache.put(file, response.clone()).catch(() => {});
+  return response;
+}
+
+self.addEventListener('fetch', (event) => {
+  if (event.request.method !== 'GET') return;
+  const file = siteFile(event.request);
+  if (file) event.respondWith(cacheFirst(file, event.request));
+});
+
+/** Keep offline's question: every file of the site, its size, and whether this version's cache holds it. */
+async function plan() {
+  const kept = new Set((await (await caches.open(CACHE)).keys()).map((request) => request.url));
+  return { version: SITE.version, files: [...FILES].map(([url, bytes]) => ({ url, bytes, kept: kept.has(url) })) };
+}
+
+/**
+ * The reader's, once this worker controls its page: `urls` the page read before (its resource timing),
+ * those of the site kept as if read through this worker. Answers how many of the site's it holds.
+ */
+async function keepRead(urls) {
+  const files = [...new Set(urls.map((url) => siteFile({ url, mode: 'cors' })).filter(Boolean))];
+  const kept = await Promise.all(files.map((file) => cacheFirst(file).then((response) => response.ok, () => false)));
+  return { kept: kept.filter(Boolean).length };
+}
+
+// The page's questions, each answered on the port it sent.
+self.addEventListener('message', (event) => {
+  const port = event.ports?.[0];
+  const answer = { 'conecurl-offline-plan': () => plan(), 'conecurl-keep-read': () => keepRead(event.data.urls ?? []) }[event.data?.type];
+  if (!port || !answer) return;
+  event.waitUntil(answer().then((reply) => port.postMessage(reply)));
+});
