@@ -24,7 +24,9 @@ const EXTERNAL = [/^pdfjs-dist(\/|$)/, /^react(\/|$)/, /^vue$/];
 // reaches is in the entry's chunk or in a chunk shared with a lazy one.
 const LAZY = [
   { name: 'pdf', test: /[\\/]web[\\/]src[\\/]document[\\/]pdf-(pages|document)\.js$/ },
-  { name: 'voices', test: /[\\/]web[\\/]src[\\/](read-aloud[\\/]speech-engine|engine[\\/]voice-choice|viewer[\\/]read-aloud-menu)\.js$/ },
+  // The browser's voices, asked for at once by the toolbar (whether to show Read aloud), and the Voice and speed popup.
+  { name: 'speech', test: /[\\/]web[\\/]src[\\/]read-aloud[\\/]speech-engine\.js$/ },
+  { name: 'voices', test: /[\\/]web[\\/]src[\\/](engine[\\/]voice-choice|viewer[\\/]read-aloud-menu)\.js$/ },
   { name: 'read-aloud', test: /[\\/]web[\\/]src[\\/](read-aloud[\\/]|layers[\\/]reading-mark\.js$)/ },
   { name: 'panels', test: /[\\/]web[\\/]src[\\/](viewer[\\/](thumbnails|contents|search)-panel|document[\\/]page-thumbnails)\.js$/ },
   { name: 'search', test: /[\\/]web[\\/]src[\\/](document[\\/](book-search|text-index)|layers[\\/]search-hits)\.js$/ },

@@ -2,7 +2,7 @@
 // option calls this; conecurl/viewer exports it). A toolbar below the book (the book's box gives up
 // its height), the panels over the book's side (on a phone, sheets fixed to the screen), reading mode,
 // all in the book's container so fullscreen takes them. What the first view does not show (the panels'
-// contents, read-aloud's voices and its popup) is imported once the book's first view is ready.
+// contents, read-aloud's Voice and speed popup) is imported once the book's first view is ready or asks.
 import { MAX_ZOOM } from '../engine/layout.js';
 import { languageOf } from '../engine/language.js';
 import { viewerLabels } from './viewer-labels.js';
@@ -97,7 +97,6 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
   const startLater = () => {
     if (removed) return;
     for (const kind of Object.keys(panels)) panelContents(kind);
-    readAloud?.start();
   };
   if (book.surface) startLater();
   else book.addEventListener('ready', startLater, { once: true });
@@ -185,11 +184,13 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
         Promise.resolve(call()).catch(() => {});
       } catch { /* the reading had ended */ }
     };
-    // The Voice and speed popup, imported with the voices once the book can read aloud.
+    // The Voice and speed popup, imported once the book can read aloud (the button shows at once; a press
+    // before it came reads with the book's own choice).
     let menu = null;
-    const makeMenu = async () => {
-      const { createReadAloudMenu } = await import('./read-aloud-menu.js');
-      menu ??= createReadAloudMenu(text, toolbar.buttons.readAloudSettings, {
+    let menuLoading = null;
+    const makeMenu = () => (menuLoading ??= import('./read-aloud-menu.js').then(({ createReadAloudMenu }) => {
+      if (removed) return;
+      menu = createReadAloudMenu(text, toolbar.buttons.readAloudSettings, {
         anchorOf: () => toolbar.focusTarget('readAloudSettings'),
         voices: () => book.readAloudVoices(),
         lang: () => (typeof book.pageLanguage === 'function' ? book.pageLanguage() : languageOf(book.element)),  // the reading's own
@@ -200,7 +201,7 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
         },
       });
       viewer.append(menu.element);
-    };
+    }));
     const showState = (state) => {  // 'reading' (or waiting), 'paused' or 'ended'
       const on = state === 'reading' || state === 'waiting';
       // A play/pause button as media players have it: its name says what a press does (no aria-pressed
@@ -221,22 +222,20 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
       },
     };
     for (const [type, listener] of Object.entries(events)) book.addEventListener(type, listener);
-    // Shown once the book can read aloud: asked after the first view, and again when voices come late (`readaloudvoices`).
-    const ask = () => Promise.resolve().then(() => book.canReadAloud()).then(async (can) => {
+    // Shown once the book can read aloud: asked now, and again when voices come late (`readaloudvoices`).
+    const ask = () => Promise.resolve().then(() => book.canReadAloud()).then((can) => {
       if (can !== true || removed) return;
-      await makeMenu();
-      if (removed) return;
       toolbar.setPresent('readAloud', true);
       showNow();
-    }).catch(() => {});
+      makeMenu().catch(() => {});
+    }, () => {});
+    if (typeof book.canReadAloud === 'function') {
+      events.readaloudvoices = ask;
+      book.addEventListener('readaloudvoices', ask);
+      ask();
+    }
     return {
       get menu() { return menu; },
-      start() {
-        if (typeof book.canReadAloud !== 'function') return;
-        events.readaloudvoices = ask;
-        book.addEventListener('readaloudvoices', ask);
-        ask();
-      },
       press() {
         const now = live();
         if (now?.state === 'paused') quietly(() => now.resume());
@@ -253,7 +252,7 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
         }
         showNow();
       },
-      toggleMenu: () => (menu?.isOpen() ? menu.close(false) : menu?.open()),
+      toggleMenu: () => (menu?.isOpen() ? menu.close(false) : makeMenu().then(() => menu?.open())),
       remove() {
         for (const [type, listener] of Object.entries(events)) book.removeEventListener(type, listener);
         menu?.remove();
