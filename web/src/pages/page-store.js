@@ -1,6 +1,8 @@
 // A book's pages as the controller keeps them, whichever surface draws them: which are loading,
 // loaded or failed (and why), the images kept for the pages near the open spread (a bounded cache, the
-// least recently wanted let go first), their sizes for the screen, and sharper images when zoomed in.
+// least recently wanted let go first), their sizes for the screen, and sharper images when zoomed in. A
+// page with a `placeholder` shows that small image while its own loads (the surface draws it over the
+// whole page, so nothing moves) and swaps its own in when decoded, in the same texture.
 import { loadPage, pageFailure } from './page-loader.js';
 import { EarlyLoads, FirstView } from './early-loads.js';
 import { PageCache } from './page-residency.js';
@@ -30,6 +32,9 @@ export class PageStore {
     this._images = new Map();
     this._naturals = new Map();  // page -> size its source holds, where the image kept was decoded smaller
     this._owned = new Set();   // images made here (ImageBitmaps from URLs and Blobs): closed when let go
+    // page -> its placeholder image, held by the surface while the page's own image loads (one texture a
+    // page: the image replaces it). Counted with the kept images against the cache's capacity.
+    this._placeholders = new Map();
     this._cache = new PageCache(settings.loadWindow, entries.length);
     this._abort = new AbortController();  // fetches still running when the book is destroyed stop
     this._early = new EarlyLoads(this._abort.signal);  // the opening pages, asked for before the surface exists
@@ -166,7 +171,9 @@ export class PageStore {
    */
   splice(at, removed, inserted) {
     for (const [page, image] of this._images) if (page >= at && page < at + removed) this._closeIfOwned(image);
+    for (const [page, image] of this._placeholders) if (page >= at && page < at + removed) this._closeIfOwned(image);
     this._images = splicePageMap(this._images, at, removed, inserted);
+    this._placeholders = splicePageMap(this._placeholders, at, removed, inserted);
     this._naturals = splicePageMap(this._naturals, at, removed, inserted);
     this._cache.splice(at, removed, inserted);
   }
@@ -214,12 +221,14 @@ export class PageStore {
     for (const image of this._owned) image.close?.();
     this._owned.clear();
     this._images.clear();
+    this._placeholders.clear();
     this._cache.releaseWaiters();
   }
 
   _releaseExcess() {
-    for (const page of this._cache.release([...this._images.keys()])) {
+    for (const page of this._cache.release([...this._images.keys(), ...this._placeholders.keys()])) {
       this._hooks.surface().releasePageImage(page);
+      if (this._dropPlaceholder(page)) continue;  // still loading: its image is kept or dropped when it lands
       this._closeIfOwned(this._images.get(page));
       this._images.delete(page);
       this._naturals.delete(page);
@@ -235,6 +244,8 @@ export class PageStore {
   async _load(index) {
     this._cache.startLoad(index);
     const entry = this.entries[index];
+    const swap = { landed: false };  // the page's own image is in hand: its placeholder is not drawn any more
+    if (entry.placeholder !== undefined) this._showPlaceholder(entry, index, swap);
     try {
       // A function makes its page only when the page is wanted (drawn, fetched or rendered on
       // demand), told the size in device pixels the page is drawn at. Asked for early (prefetch), taken up.
@@ -242,15 +253,20 @@ export class PageStore {
       const early = this._early.take(entry, cover);
       const { image, owned, natural } = (early && await early)
         ?? await loadPage(entry.src, { index, size: cover, signal: this._abort.signal });
+      swap.landed = true;
       if (owned) this._owned.add(image);
       index = this._closed ? -1 : this._indexOf(entry, index);
       if (index < 0 || this._cache.stateOf(index) !== 'loading'
           || (!this._cache.wanted.has(index) && this._images.size >= this._cache.capacity)) {
         // Destroyed, removed or replaced, or no longer wanted and no room: not worth keeping.
         this._closeIfOwned(image);
-        if (index >= 0 && this._cache.stateOf(index) === 'loading') this._cache.setState(index, 'idle');
+        if (index >= 0 && this._cache.stateOf(index) === 'loading') {
+          this._releasePlaceholder(index);
+          this._cache.setState(index, 'idle');
+        }
         return;
       }
+      // Over the placeholder's texture, if it has one: the placeholder stays drawn until this replaces it.
       await this._hooks.surface().queuePageImage(index, this.presented(index, image), { cover: this.cover() });  // mid-turn: in bands over frames
       if (this._closed) return;
       index = this._indexOf(entry, index);  // the surface renumbered its texture along with the page
@@ -258,16 +274,19 @@ export class PageStore {
         this._closeIfOwned(image);
         return;
       }
+      this._dropPlaceholder(index);
       this._keep(index, image);
       this._keepNatural(index, natural);
       this._cache.setState(index, 'loaded');
       this._releaseExcess();
       this._hooks.onOpenPageLoaded(index);
     } catch (error) {
+      swap.landed = true;
       index = this._closed ? -1 : this._indexOf(entry, index);
       if (index < 0 || this._cache.stateOf(index) !== 'loading') return;
-      // The page keeps the plain paper placeholder; the book keeps working. `reason` says why:
-      // 'http', 'network', 'cors', 'decode' or 'source' (PageLoadError), or 'upload'.
+      // The page keeps (or goes back to) the plain paper placeholder; the book keeps working. `reason` says
+      // why: 'http', 'network', 'cors', 'decode' or 'source' (PageLoadError), or 'upload'.
+      this._releasePlaceholder(index);
       const failure = pageFailure(error);
       this._cache.setState(index, 'failed', failure);
       this._hooks.emit('pageerror', { index, ...failure });
@@ -275,6 +294,48 @@ export class PageStore {
       const progress = this._cache.endLoad();
       if (!this._closed) this._hooks.emit('progress', progress);
     }
+  }
+
+  // Page `index`'s `placeholder` (entry.placeholder), loaded beside its own image and handed to the surface
+  // at its own small size (the surface draws any page image over the whole page: the layout comes from the
+  // page, never from the image) if the page is still loading without it (`swap.landed` false). A
+  // placeholder that fails is passed over: the page loads as without one.
+  async _showPlaceholder(entry, index, swap) {
+    let loaded;
+    try {
+      loaded = await loadPage(entry.placeholder, { index, signal: this._abort.signal });
+    } catch {
+      return;
+    }
+    const { image, owned } = loaded;
+    if (owned) this._owned.add(image);
+    index = this._closed ? -1 : this._indexOf(entry, index);
+    if (swap.landed || index < 0 || this._cache.stateOf(index) !== 'loading' || this._images.has(index)) {
+      this._closeIfOwned(image);
+      return;
+    }
+    try {
+      this._hooks.surface().setPageImage(index, image, { cover: this.cover() });
+    } catch {
+      this._closeIfOwned(image);
+      return;
+    }
+    this._placeholders.set(index, image);
+    this._releaseExcess();
+  }
+
+  // Page `index`'s placeholder image is let go (its texture replaced by the page's image, or released by
+  // the caller); whether it had one.
+  _dropPlaceholder(index) {
+    if (!this._placeholders.has(index)) return false;
+    this._closeIfOwned(this._placeholders.get(index));
+    this._placeholders.delete(index);
+    return true;
+  }
+
+  // A page that will not show its image (it failed, or is let go) gives back its placeholder's texture too.
+  _releasePlaceholder(index) {
+    if (this._dropPlaceholder(index)) this._hooks.surface().releasePageImage(index);
   }
 
   _keepNatural(index, natural) { if (natural) this._naturals.set(index, natural); else this._naturals.delete(index); }
