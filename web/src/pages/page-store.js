@@ -188,6 +188,7 @@ export class PageStore {
       this._reload(index, this.cover(), this.entries[index].src, false, { force: true, replacing: true });
       return;
     }
+    this._releasePlaceholder(index);  // the old entry's, while it loaded
     this._cache.setState(index, 'idle');  // a load under way finds its entry gone and is dropped
     this.update();
   }
@@ -320,6 +321,7 @@ export class PageStore {
       this._closeIfOwned(image);
       return;
     }
+    this._dropPlaceholder(index);
     this._placeholders.set(index, image);
     this._releaseExcess();
   }
