@@ -4,7 +4,10 @@
 // down, 150 ms round trip) and a 4x CPU slowdown; a fresh browser a run, roads alternated. The server
 // compresses text (HTML, JS, JSON, CSS, wasm) as a CDN would and answers range requests (pdf.js asks
 // for the PDF in ranges). Reports, per road, the time to the first spread drawn and the bytes loaded
-// before it (encoded, as they came over the wire), and checks them against the targets.
+// before it (encoded, as they came over the wire) and the requests sent before it, and checks them against
+// the targets. The first spread is the first page image drawn: a page's placeholder where it has one (the
+// published road inlines the cover's: a blurred cover is what the reader sees first, drawn over the whole
+// page), else its reading image; the time to the reading image ("sharp") is reported beside it.
 // Usage: node scripts/bench/first-spread.mjs --pdf book.pdf [--pdf magazine.pdf] [--reps 3] [--out bench-results]
 //        [--kbps 1600] [--latency 150] [--cpu 4] [--republish] [--timeline (each request of the first run)]
 import { execFileSync } from 'node:child_process';
@@ -84,7 +87,8 @@ function serve(routes) {
   return new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(server)));
 }
 
-/** One run of one road: ms to the first spread drawn, and the bytes received before it (`timeline`: print each request). */
+/** One run of one road: ms to the first spread drawn and to its reading image ("sharp"), the bytes received and
+ * requests sent before each (`timeline`: print each request). */
 async function measure(url, { timeline = false } = {}) {
   served.length = 0;
   const browser = await chromium.launch(chromiumLaunchOptions());
@@ -109,12 +113,20 @@ async function measure(url, { timeline = false } = {}) {
     cdp.on('Network.loadingFinished', (e) => { const request = requests.get(e.requestId); if (request) request.done = e.timestamp; });
     await page.addInitScript(() => {
       const upload = WebGL2RenderingContext.prototype.texImage2D;
+      // Two frames after an upload: the frame that draws it is on screen.
+      const shown = (name) => requestAnimationFrame(() => requestAnimationFrame(() => { window[name] = performance.now(); }));
       WebGL2RenderingContext.prototype.texImage2D = function pageUpload(...args) {
         const source = args.length === 6 ? args[5] : null;
         (window.__uploads ??= []).push([Math.round(performance.now()), source?.width ?? args[3]]);
-        if (window.__firstSpread === undefined && !window.__uploaded && source && source.width >= 256) {
+        // A page image: its placeholder (the published cover's is 128 px wide) or its reading image (256 px
+        // and more); not the 1-pixel textures the renderer makes for itself.
+        if (!window.__uploaded && source && source.width >= 64) {
           window.__uploaded = true;
-          requestAnimationFrame(() => requestAnimationFrame(() => { window.__firstSpread = performance.now(); }));
+          shown('__firstSpread');
+        }
+        if (!window.__uploadedSharp && source && source.width >= 256) {
+          window.__uploadedSharp = true;
+          shown('__sharpSpread');
         }
         return upload.apply(this, args);
       };
@@ -123,15 +135,18 @@ async function measure(url, { timeline = false } = {}) {
     // The first spread on screen: two frames after the open page's image went to the GPU (the engine hands a
     // page to WebGL whole, texImage2D of an image; on the phone one page is open). Both roads draw with it.
     // Left to load as a reader's browser loads it (nothing imported from here, which would race its preloads).
-    await page.waitForFunction(() => window.__firstSpread !== undefined || document.querySelector('.conecurl-reader-problem'),
+    await page.waitForFunction(() => window.__sharpSpread !== undefined || document.querySelector('.conecurl-reader-problem'),
       null, { timeout: 180_000, polling: 100 });
-    const { ms, origin, uploads, problem } = await page.evaluate(() => ({
-      ms: window.__firstSpread, origin: performance.timeOrigin, uploads: window.__uploads ?? [],
+    const { ms, sharpMs, origin, uploads, problem } = await page.evaluate(() => ({
+      ms: window.__firstSpread, sharpMs: window.__sharpSpread, origin: performance.timeOrigin, uploads: window.__uploads ?? [],
       problem: document.querySelector('.conecurl-reader-problem')?.textContent ?? null,
     }));
     if (problem) throw new Error(`first-spread: the reader said: ${problem}`);
-    const until = start + ((origin + ms) / 1000 - startWall);  // the first spread, in CDP's clock
-    const seen = received.filter(([t]) => t <= until).reduce((sum, [, n]) => sum + n, 0);
+    const cdpTime = (at) => start + ((origin + at) / 1000 - startWall);  // a time of the page's clock in CDP's
+    const until = cdpTime(ms);  // the first spread
+    const bytesUntil = (t) => received.filter(([at]) => at <= t).reduce((sum, [, n]) => sum + n, 0);
+    const seen = bytesUntil(until);
+    const requestsBefore = [...requests.values()].filter((r) => r.sent <= until).length;
     // pdf.js's worker (its script, and the PDF it fetches) is a dedicated worker: its data never reaches the
     // page's session. Its requests made before the first spread are counted whole, as the server sent them.
     // (Any other request's bytes are the session's, received before the first spread: in flight, in part.)
@@ -149,9 +164,13 @@ async function measure(url, { timeline = false } = {}) {
       }
       for (const entry of unseen) console.log(`  (worker) ${`${(entry.bytes / 1024).toFixed(1)}`.padStart(7)} KB  ${entry.url}`);
       console.log(`  textures (ms, width): ${uploads.map(([t, w]) => `${t}:${w}`).join(' ')}`);
-      console.log(`  first spread at ${Math.round(ms)} ms`);
+      console.log(`  first spread at ${Math.round(ms)} ms, its reading image at ${Math.round(sharpMs)} ms`);
     }
-    return { ms: Math.round(ms), bytes: seen + workerBytes, workerBytes, pdfjs: urls.some((u) => /pdfjs|pdf\.worker/.test(u)) };
+    return {
+      ms: Math.round(ms), bytes: seen + workerBytes, workerBytes, requests: requestsBefore + unseen.length,
+      sharpMs: Math.round(sharpMs), sharpBytes: bytesUntil(cdpTime(sharpMs)) + workerBytes,
+      pdfjs: urls.some((u) => /pdfjs|pdf\.worker/.test(u)),
+    };
   } finally {
     await browser.close();
   }
@@ -178,17 +197,19 @@ for (const pdf of pdfs) {
       for (const road of rep % 2 ? ['pdfjs', 'published'] : ['published', 'pdfjs']) {
         const run = await roads[road]({ timeline: args.includes('--timeline') && rep === 0 });
         runs[road].push(run);
-        console.log(`[${name} ${rep + 1}/${reps}] ${road}: first spread ${run.ms} ms after ${(run.bytes / 1024).toFixed(0)} KB${run.pdfjs ? ' (pdf.js loaded)' : ''}`);
+        console.log(`[${name} ${rep + 1}/${reps}] ${road}: first spread ${run.ms} ms after ${(run.bytes / 1024).toFixed(0)} KB and ${run.requests} requests; `
+          + `its reading image ${run.sharpMs} ms after ${(run.sharpBytes / 1024).toFixed(0)} KB${run.pdfjs ? ' (pdf.js loaded)' : ''}`);
       }
     }
   } finally {
     server.close();
   }
   const median = (road, key) => summarize(runs[road].map((r) => r[key])).median;
+  const medians = (road) => Object.fromEntries(['ms', 'bytes', 'requests', 'sharpMs', 'sharpBytes'].map((key) => [key, median(road, key)]));
   const result = {
     pdf: path.basename(pdf), reps, kbps, latency, cpu,
-    published: { ms: median('published', 'ms'), bytes: median('published', 'bytes'), runs: runs.published },
-    pdfjs: { ms: median('pdfjs', 'ms'), bytes: median('pdfjs', 'bytes'), runs: runs.pdfjs },
+    published: { ...medians('published'), runs: runs.published },
+    pdfjs: { ...medians('pdfjs'), runs: runs.pdfjs },
   };
   result.timeRatio = result.published.ms / result.pdfjs.ms;
   result.meets = { time: result.timeRatio <= TARGETS.timeRatio, bytes: result.published.bytes <= TARGETS.bytes,
@@ -199,10 +220,12 @@ for (const pdf of pdfs) {
 fs.mkdirSync(out, { recursive: true });
 fs.writeFileSync(path.join(out, 'first-spread.json'), `${JSON.stringify({ date: new Date().toISOString(), targets: TARGETS, results }, null, 2)}\n`);
 console.log(`\nFirst spread on a phone (390x844 at ratio 3), ${kbps} kbit/s down, ${latency} ms round trip, CPU ${cpu}x slower; medians of ${reps}:`);
-console.log('| PDF | published: time | published: bytes before it | pdf.js: time | pdf.js: bytes before it | time ratio (target ≤ 0.33) | bytes (target ≤ 300 KB) |');
-console.log('|---|---|---|---|---|---|---|');
+console.log('| PDF | published: time | published: bytes before it | requests before it | its reading image: time, bytes | pdf.js: time | pdf.js: bytes before it | time ratio (target ≤ 0.33) | bytes (target ≤ 300 KB) |');
+console.log('|---|---|---|---|---|---|---|---|---|');
 for (const r of results) {
   const kb = (b) => `${(b / 1024).toFixed(0)} KB`;
-  console.log(`| ${r.pdf} | ${r.published.ms} ms | ${kb(r.published.bytes)} | ${r.pdfjs.ms} ms | ${kb(r.pdfjs.bytes)} | ${r.timeRatio.toFixed(2)} ${r.meets.time ? 'met' : 'missed'} | ${r.meets.bytes ? 'met' : 'missed'} |`);
+  const p = r.published;
+  console.log(`| ${r.pdf} | ${p.ms} ms | ${kb(p.bytes)} | ${p.requests} | ${p.sharpMs} ms, ${kb(p.sharpBytes)} | ${r.pdfjs.ms} ms | ${kb(r.pdfjs.bytes)} | `
+    + `${r.timeRatio.toFixed(2)} ${r.meets.time ? 'met' : 'missed'} | ${r.meets.bytes ? 'met' : 'missed'} |`);
 }
 console.log(`(written to ${path.relative(root, path.join(out, 'first-spread.json'))})`);
