@@ -36,11 +36,18 @@ export class EarlyLoads {
   constructor(signal) {
     this._signal = signal;
     this._loads = new Map();  // page entry -> loadPage's promise
+    this._placeholders = new Map();  // page entry -> loadPage's promise of its placeholder, ready for the surface's first frame
   }
 
-  /** Starts loading each page of `pages` ([index, entry]) whose source is a URL or a Blob, decoded to cover `cover`. */
+  /** Starts loading each page of `pages` ([index, entry]) whose source is a URL or a Blob, decoded to cover `cover`,
+   * and its placeholder where it has one (a URL or a Blob). */
   start(pages, cover) {
     for (const [index, entry] of pages) {
+      if (isEncoded(entry.placeholder) && !this._placeholders.has(entry)) {
+        const load = loadPage(entry.placeholder, { index, signal: this._signal });
+        load.catch(() => {});  // a placeholder that fails is passed over by the store
+        this._placeholders.set(entry, load);
+      }
       if (!isEncoded(entry.src) || this._loads.has(entry)) continue;
       const load = loadPage(entry.src, { index, size: cover, signal: this._signal });
       load.catch(() => {});  // a failure is reported by the load that takes it up
@@ -67,9 +74,17 @@ export class EarlyLoads {
     });
   }
 
+  /** The early load of `entry`'s placeholder as loadPage resolves (or rejects), or null; taken synchronously. */
+  takePlaceholder(entry) {
+    const load = this._placeholders.get(entry) ?? null;
+    this._placeholders.delete(entry);
+    return load;
+  }
+
   /** Loads not taken are let go: their images closed as they land. */
   drop() {
-    for (const load of this._loads.values()) load.then(closeOwned, () => {});
+    for (const load of [...this._loads.values(), ...this._placeholders.values()]) load.then(closeOwned, () => {});
     this._loads.clear();
+    this._placeholders.clear();
   }
 }

@@ -302,9 +302,10 @@ export class PageStore {
   // page, never from the image) if the page is still loading without it (`swap.landed` false). A
   // placeholder that fails is passed over: the page loads as without one.
   async _showPlaceholder(entry, index, swap) {
+    const early = this._early.takePlaceholder(entry);  // decoded while the surface was made
     let loaded;
     try {
-      loaded = await loadPage(entry.placeholder, { index, signal: this._abort.signal });
+      loaded = await (early ?? loadPage(entry.placeholder, { index, signal: this._abort.signal }));
     } catch {
       return;
     }
