@@ -37,6 +37,7 @@ export class EarlyLoads {
     this._signal = signal;
     this._loads = new Map();  // page entry -> loadPage's promise
     this._placeholders = new Map();  // page entry -> loadPage's promise of its placeholder, ready for the surface's first frame
+    this._landed = new Set();  // page entries whose early load has settled
   }
 
   /** Starts loading each page of `pages` ([index, entry]) whose source is a URL or a Blob, decoded to cover `cover`,
@@ -50,7 +51,8 @@ export class EarlyLoads {
       }
       if (!isEncoded(entry.src) || this._loads.has(entry)) continue;
       const load = loadPage(entry.src, { index, size: cover, signal: this._signal });
-      load.catch(() => {});  // a failure is reported by the load that takes it up
+      const landed = () => { if (this._loads.get(entry) === load) this._landed.add(entry); };
+      load.then(landed, landed);  // a failure is reported by the load that takes it up
       this._loads.set(entry, load);
     }
   }
@@ -64,6 +66,7 @@ export class EarlyLoads {
     const load = this._loads.get(entry);
     if (!load) return null;
     this._loads.delete(entry);
+    this._landed.delete(entry);
     return load.then((result) => {
       const have = naturalSize(result.image);
       const from = result.natural ?? have;
@@ -73,6 +76,9 @@ export class EarlyLoads {
       return null;
     });
   }
+
+  /** Whether `entry`'s early load has settled already (its image is in hand: no placeholder is worth drawing). */
+  landed(entry) { return this._landed.has(entry); }
 
   /** The early load of `entry`'s placeholder as loadPage resolves (or rejects), or null; taken synchronously. */
   takePlaceholder(entry) {
@@ -86,5 +92,6 @@ export class EarlyLoads {
     for (const load of [...this._loads.values(), ...this._placeholders.values()]) load.then(closeOwned, () => {});
     this._loads.clear();
     this._placeholders.clear();
+    this._landed.clear();
   }
 }

@@ -246,12 +246,13 @@ export class PageStore {
     this._cache.startLoad(index);
     const entry = this.entries[index];
     const swap = { landed: false };  // the page's own image is in hand: its placeholder is not drawn any more
-    if (entry.placeholder !== undefined) this._showPlaceholder(entry, index, swap);
     try {
       // A function makes its page only when the page is wanted (drawn, fetched or rendered on
       // demand), told the size in device pixels the page is drawn at. Asked for early (prefetch), taken up.
       const cover = this.cover();
+      const inHand = this._early.landed(entry);  // fetched and decoded while the surface was made
       const early = this._early.take(entry, cover);
+      if (entry.placeholder !== undefined && !inHand) this._showPlaceholder(entry, index, swap);
       const { image, owned, natural } = (early && await early)
         ?? await loadPage(entry.src, { index, size: cover, signal: this._abort.signal });
       swap.landed = true;
