@@ -1,11 +1,12 @@
 // A book's pages as the controller keeps them, whichever surface draws them: which are loading,
 // loaded or failed (and why), the images kept for the pages near the open spread (a bounded cache, the
 // least recently wanted let go first), their sizes for the screen, and sharper images when zoomed in. A
-// page with a `placeholder` shows that small image while its own loads (the surface draws it over the
-// whole page, so nothing moves) and swaps its own in when decoded, in the same texture.
+// page's `placeholder` is drawn while its own image loads (page-placeholders.js), replaced in the same texture.
+// Over 350 lines because a page's load is one flow (early load, placeholder, upload, keep, failure) read in one place.
 import { loadPage, pageFailure } from './page-loader.js';
 import { EarlyLoads, FirstView } from './early-loads.js';
 import { PageCache } from './page-residency.js';
+import { PagePlaceholders } from './page-placeholders.js';
 import { uploadSizeFor } from './texture-upload.js';
 import { directionFacts } from '../engine/direction.js';
 import { isZoomed, openPages, restingRect, splicePageMap } from '../engine/layout.js';
@@ -32,12 +33,18 @@ export class PageStore {
     this._images = new Map();
     this._naturals = new Map();  // page -> size its source holds, where the image kept was decoded smaller
     this._owned = new Set();   // images made here (ImageBitmaps from URLs and Blobs): closed when let go
-    // page -> its placeholder image, held by the surface while the page's own image loads (one texture a
-    // page: the image replaces it). Counted with the kept images against the cache's capacity.
-    this._placeholders = new Map();
     this._cache = new PageCache(settings.loadWindow, entries.length);
     this._abort = new AbortController();  // fetches still running when the book is destroyed stop
     this._early = new EarlyLoads(this._abort.signal);  // the opening pages, asked for before the surface exists
+    this._placeholders = new PagePlaceholders({  // drawn while their pages load
+      surface: () => this._hooks.surface(), early: this._early, signal: this._abort.signal,
+      own: (image) => this._owned.add(image), close: (image) => this._closeIfOwned(image), cover: () => this.cover(),
+      loadingAt: (entry, index) => {
+        const at = this._closed ? -1 : this._indexOf(entry, index);
+        return at >= 0 && this._cache.stateOf(at) === 'loading' && !this._images.has(at) ? at : -1;
+      },
+      shown: () => this._releaseExcess(),
+    });
     this._reloads = new Map();  // page entry -> its reload running now (by entry: indices move as pages are spliced)
     this._firstView = new FirstView();  // its pages on screen load alone, their neighbours after
     this._closed = false;
@@ -171,9 +178,8 @@ export class PageStore {
    */
   splice(at, removed, inserted) {
     for (const [page, image] of this._images) if (page >= at && page < at + removed) this._closeIfOwned(image);
-    for (const [page, image] of this._placeholders) if (page >= at && page < at + removed) this._closeIfOwned(image);
+    this._placeholders.splice(at, removed, inserted);
     this._images = splicePageMap(this._images, at, removed, inserted);
-    this._placeholders = splicePageMap(this._placeholders, at, removed, inserted);
     this._naturals = splicePageMap(this._naturals, at, removed, inserted);
     this._cache.splice(at, removed, inserted);
   }
@@ -188,7 +194,7 @@ export class PageStore {
       this._reload(index, this.cover(), this.entries[index].src, false, { force: true, replacing: true });
       return;
     }
-    this._releasePlaceholder(index);  // the old entry's, while it loaded
+    this._placeholders.release(index);  // the old entry's, while it loaded
     this._cache.setState(index, 'idle');  // a load under way finds its entry gone and is dropped
     this.update();
   }
@@ -227,9 +233,9 @@ export class PageStore {
   }
 
   _releaseExcess() {
-    for (const page of this._cache.release([...this._images.keys(), ...this._placeholders.keys()])) {
+    for (const page of this._cache.release([...this._images.keys(), ...this._placeholders.pages()])) {
       this._hooks.surface().releasePageImage(page);
-      if (this._dropPlaceholder(page)) continue;  // still loading: its image is kept or dropped when it lands
+      if (this._placeholders.drop(page)) continue;  // still loading: its image is kept or dropped when it lands
       this._closeIfOwned(this._images.get(page));
       this._images.delete(page);
       this._naturals.delete(page);
@@ -252,7 +258,7 @@ export class PageStore {
       const cover = this.cover();
       const inHand = this._early.landed(entry);  // fetched and decoded while the surface was made
       const early = this._early.take(entry, cover);
-      if (entry.placeholder !== undefined && !inHand) this._showPlaceholder(entry, index, swap);
+      if (entry.placeholder !== undefined && !inHand) this._placeholders.show(entry, index, swap);
       const { image, owned, natural } = (early && await early)
         ?? await loadPage(entry.src, { index, size: cover, signal: this._abort.signal });
       swap.landed = true;
@@ -263,7 +269,7 @@ export class PageStore {
         // Destroyed, removed or replaced, or no longer wanted and no room: not worth keeping.
         this._closeIfOwned(image);
         if (index >= 0 && this._cache.stateOf(index) === 'loading') {
-          this._releasePlaceholder(index);
+          this._placeholders.release(index);
           this._cache.setState(index, 'idle');
         }
         return;
@@ -276,7 +282,7 @@ export class PageStore {
         this._closeIfOwned(image);
         return;
       }
-      this._dropPlaceholder(index);
+      this._placeholders.drop(index);
       this._keep(index, image);
       this._keepNatural(index, natural);
       this._cache.setState(index, 'loaded');
@@ -288,7 +294,7 @@ export class PageStore {
       if (index < 0 || this._cache.stateOf(index) !== 'loading') return;
       // The page keeps (or goes back to) the plain paper placeholder; the book keeps working. `reason` says
       // why: 'http', 'network', 'cors', 'decode' or 'source' (PageLoadError), or 'upload'.
-      this._releasePlaceholder(index);
+      this._placeholders.release(index);
       const failure = pageFailure(error);
       this._cache.setState(index, 'failed', failure);
       this._hooks.emit('pageerror', { index, ...failure });
@@ -296,50 +302,6 @@ export class PageStore {
       const progress = this._cache.endLoad();
       if (!this._closed) this._hooks.emit('progress', progress);
     }
-  }
-
-  // Page `index`'s `placeholder` (entry.placeholder), loaded beside its own image and handed to the surface
-  // at its own small size (the surface draws any page image over the whole page: the layout comes from the
-  // page, never from the image) if the page is still loading without it (`swap.landed` false). A
-  // placeholder that fails is passed over: the page loads as without one.
-  async _showPlaceholder(entry, index, swap) {
-    const early = this._early.takePlaceholder(entry);  // decoded while the surface was made
-    let loaded;
-    try {
-      loaded = await (early ?? loadPage(entry.placeholder, { index, signal: this._abort.signal }));
-    } catch {
-      return;
-    }
-    const { image, owned } = loaded;
-    if (owned) this._owned.add(image);
-    index = this._closed ? -1 : this._indexOf(entry, index);
-    if (swap.landed || index < 0 || this._cache.stateOf(index) !== 'loading' || this._images.has(index)) {
-      this._closeIfOwned(image);
-      return;
-    }
-    try {
-      this._hooks.surface().setPageImage(index, image, { cover: this.cover() });
-    } catch {
-      this._closeIfOwned(image);
-      return;
-    }
-    this._dropPlaceholder(index);
-    this._placeholders.set(index, image);
-    this._releaseExcess();
-  }
-
-  // Page `index`'s placeholder image is let go (its texture replaced by the page's image, or released by
-  // the caller); whether it had one.
-  _dropPlaceholder(index) {
-    if (!this._placeholders.has(index)) return false;
-    this._closeIfOwned(this._placeholders.get(index));
-    this._placeholders.delete(index);
-    return true;
-  }
-
-  // A page that will not show its image (it failed, or is let go) gives back its placeholder's texture too.
-  _releasePlaceholder(index) {
-    if (this._dropPlaceholder(index)) this._hooks.surface().releasePageImage(index);
   }
 
   _keepNatural(index, natural) { if (natural) this._naturals.set(index, natural); else this._naturals.delete(index); }
