@@ -146,7 +146,8 @@ async function measure(url, { timeline = false } = {}) {
     const until = cdpTime(ms);  // the first spread
     const bytesUntil = (t) => received.filter(([at]) => at <= t).reduce((sum, [, n]) => sum + n, 0);
     const seen = bytesUntil(until);
-    const requestsBefore = [...requests.values()].filter((r) => r.sent <= until).length;
+    // Requests that went to the network: a data: URL (the placeholder inlined in book.json) is read in place.
+    const requestsBefore = [...requests.values()].filter((r) => r.sent <= until && !r.url.startsWith('data:')).length;
     // pdf.js's worker (its script, and the PDF it fetches) is a dedicated worker: its data never reaches the
     // page's session. Its requests made before the first spread are counted whole, as the server sent them.
     // (Any other request's bytes are the session's, received before the first spread: in flight, in part.)
