@@ -178,6 +178,8 @@ async function publish(options) {
         ...(result.limited ? { limited: result.limited } : {}),
         // No alt: the reader takes it from the page's text file (most readers read the text layer instead).
         thumbSrc: pagePath('thumbs', index, ext), text,
+        // The first spread's tiny placeholder, inline (render-page.mjs PLACEHOLDER): drawn while the reading image loads.
+        ...(result.placeholder ? { placeholder: result.placeholder } : {}),
         links: remapLinks(result.links, numbers),
         ...(narration.has(index) ? { narration: { src: narration.get(index).src, words: narration.get(index).words } } : {}),
       });

@@ -26,6 +26,10 @@ export const POOL_PIXELS = 64_000_000;
 export const MIN_ZOOM = 1.1;
 /** How much of a page's text the main thread gets back (alt text and the noscript copy need less). */
 const TEXT_BACK = 1000;
+// The first spread's placeholder (page 1: a book opens at its cover, alone in either display): a WebP this
+// small (about 3 KB) goes inline in book.json as a data: URL, so the reader draws it with no request of its
+// own while the reading image loads (docs/publish.md). Always WebP: every browser with WebGL2 decodes it.
+export const PLACEHOLDER = { pages: 1, width: 128, quality: 40 };
 
 async function encode(canvas, format, quality) {
   return canvas.encode(format, format === 'avif' ? { quality } : quality);
@@ -122,6 +126,7 @@ export async function renderPage({ doc, textDoc = doc, createCanvas, number, ind
       lap('write');
     };
     let reading;
+    let placeholder;  // a data: URL, for the first spread's pages
     const giveBack = await reserve(pixels(largest) + (zoomed ? pixels(scale) : 0));
     lap('wait');
     try {
@@ -142,7 +147,7 @@ export async function renderPage({ doc, textDoc = doc, createCanvas, number, ind
     lap('links');
     return {
       index, width: unit.width, height: unit.height, links, text: record.text.slice(0, TEXT_BACK),
-      imageWidth: reading.width, imageHeight: reading.height, zoomed, ...(limited ? { limited } : {}), files, steps,
+      imageWidth: reading.width, imageHeight: reading.height, zoomed, ...(placeholder ? { placeholder } : {}), ...(limited ? { limited } : {}), files, steps,
     };
 
     /** Draws the page once at the largest size and writes its images; returns the reading image's size. */
@@ -166,6 +171,14 @@ export async function renderPage({ doc, textDoc = doc, createCanvas, number, ind
       lap('scale');
       await write(pagePath('thumbs', index, ext), await encode(thumb, options.format, options.quality), 'image');
       release(thumb);
+      if (index < PLACEHOLDER.pages) {
+        const k = Math.min(PLACEHOLDER.width / unit.width, (2 * PLACEHOLDER.width) / unit.height);  // a tall page: 256 high at most
+        const small = scaled(createCanvas, canvas, unit.width * k, unit.height * k);
+        lap('scale');
+        placeholder = `data:image/webp;base64,${(await encode(small, 'webp', PLACEHOLDER.quality)).toString('base64')}`;
+        lap('encode');
+        release(small);
+      }
       if (index === 0) {
         const coverScale = fit(Math.min(options.coverWidth, canvas.width) / unit.width, MAX_SIDE.jpeg);
         const cover = scaled(createCanvas, canvas, unit.width * coverScale, unit.height * coverScale);

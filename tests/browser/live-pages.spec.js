@@ -154,7 +154,7 @@ test('browser: bad arguments to insertPages, removePages and replacePage are ref
     'RangeError: conecurl: removePages cannot remove all 4 pages: a book keeps at least one',
     'RangeError: conecurl: removePages count must be from 1 to 4 (the pages from 0 on), got 0',
     'RangeError: conecurl: replacePage index must be from 0 to 3, got -1',
-    "TypeError: conecurl: replacePage 'page' has an unknown key 'side' (allowed: src, html, alt, hard, zoomSrc, thumbSrc, links, narration)",
+    "TypeError: conecurl: replacePage 'page' has an unknown key 'side' (allowed: src, html, alt, hard, zoomSrc, thumbSrc, placeholder, links, narration)",
     4,
   ]);
   expect(problems).toEqual([]);

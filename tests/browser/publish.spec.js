@@ -170,6 +170,34 @@ test('browser: the published outline is pdf.js\'s, and a Contents entry opens it
   expect(download).toMatch(/\/book\/[^/]+\.pdf$/);
 });
 
+test('browser: the published site draws its first page at once from the placeholder inlined in book.json (no request of its own), then the reading image over it; the next pages take their thumbnails as placeholders (texture uploads in order, reading images held back)', async ({ page }) => {
+  await page.addInitScript(() => {
+    const upload = WebGL2RenderingContext.prototype.texImage2D;
+    WebGL2RenderingContext.prototype.texImage2D = function recorded(...args) {
+      const source = args.length === 6 ? args[5] : null;
+      if (source && source.width > 1) (window.uploads ??= []).push(source.width);  // page images, not the renderer's own
+      return upload.apply(this, args);
+    };
+  });
+  let release;
+  const held = new Promise((resolve) => { release = resolve; });
+  await page.route('**/book/pages/*.webp', async (route) => { await held; await route.continue(); });
+  const images = [];
+  page.on('request', (request) => { if (/\/book\/(pages|thumbs)\//.test(request.url())) images.push(new URL(request.url()).pathname.split('/book/')[1]); });
+  await page.goto(`${siteUrl(siteName())}index.html`);
+  await page.waitForFunction(() => (window.uploads ?? []).includes(128));  // the cover's placeholder is drawn
+  expect(images).toEqual(['pages/0001.webp']);  // held: the placeholder came with book.json
+  release();
+  await page.evaluate(async (url) => {
+    window.book = await (await import(url)).book;
+    await window.book.whenIdle();
+  }, `${siteUrl(siteName())}conecurl/web/reader/reader.js`);
+  const uploads = await page.evaluate(() => window.uploads);
+  expect(uploads[0]).toBe(128);
+  expect(uploads[1]).toBeGreaterThan(256);  // the reading image, over it
+  expect(images).toContain('thumbs/0002.webp');  // the next page's placeholder
+});
+
 test('browser: a bad document is refused with an error naming the file; a page that was not published shows its placeholder', async ({ page }) => {
   await page.goto('/tests/browser/fixtures/flipbook-fixture.html');
   await page.waitForFunction(() => document.body.dataset.ready || document.body.dataset.error);

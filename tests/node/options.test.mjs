@@ -107,9 +107,11 @@ test('node: pages must be a non-empty array of page sources; each entry is check
   refuses({ pages: [{ alt: 'no source' }] }, `option 'pages[0].src' must be ${sources}; got undefined`);
   refuses({ pages: [{ src: 'a.png', alt: 5 }] }, "option 'pages[0].alt' must be a string (the page's text for screen readers); got 5");
   refuses({ pages: [{ src: 'a.png', hard: 'yes' }] }, "option 'pages[0].hard' must be true or false; got \"yes\"");
-  refuses({ pages: [{ src: 'a.png', title: 'x' }] }, "option 'pages[0]' has an unknown key 'title' (allowed: src, html, alt, hard, zoomSrc, thumbSrc, links, narration)");
+  refuses({ pages: [{ src: 'a.png', title: 'x' }] }, "option 'pages[0]' has an unknown key 'title' (allowed: src, html, alt, hard, zoomSrc, thumbSrc, placeholder, links, narration)");
   refuses({ pages: [{ src: 'a.png', zoomSrc: () => 'b.png' }] },
     "option 'pages[0].zoomSrc' must be a URL, HTMLImageElement, HTMLCanvasElement, ImageBitmap or Blob; got a function");
+  refuses({ pages: [{ src: 'a.png', placeholder: 5 }] },
+    "option 'pages[0].placeholder' must be a URL, HTMLImageElement, HTMLCanvasElement, ImageBitmap or Blob; got 5");
   refuses({ pages: [{ src: 'a.png', links: {} }] }, "option 'pages[0].links' must be an array of { rect, href } or { rect, page }; got an object");
   refuses({ pages: [{ src: 'a.png', links: [{ rect: [0, 0, 2, NaN], href: 'x' }] }] },
     "option 'pages[0].links[0].rect' must be [x, y, width, height] as fractions of the page (0 to 1); got an array of 4");

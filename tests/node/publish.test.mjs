@@ -14,6 +14,7 @@ import { pdfOutline, pdfPageText } from '../../web/src/document/pdf-document.js'
 import { BOOKMARKS, PAGES, PAGE_SIZE, lineAt, makeDocumentPdf } from '../fixtures/document-pdf.mjs';
 import { LINKS, makeLinkPdf } from '../fixtures/publish-pdfs.mjs';
 import { publish, readJson, root, tempDir } from './publish-run.mjs';
+import { PLACEHOLDER } from '../../cli/publish/render-page.mjs';
 
 const HEIGHT = 400;
 
@@ -90,6 +91,39 @@ test('node: conecurl publish page images show the page: ink where the fixture dr
   // The space below the last body line of the page is blank paper.
   const below = await darkPixels(path.join(book, 'pages/0002.webp'), [0, (lineAt(1, 3).baseline + 10) / h, 1, 0.9]);
   assert.equal(below.inside, 0);
+});
+
+test('node: conecurl publish gives the first page an inline placeholder in book.json (a data: URL of a WebP 128 px wide, a few KB, showing the page\'s heading) and no other page one; checkManifest passes (needs pdfjs-dist, @napi-rs/canvas)', async (t) => {
+  const { dir, manifest } = await documentSite(t);
+  checkManifest(manifest, 'book.json');
+  const [first, ...others] = manifest.pages;
+  const match = /^data:image\/webp;base64,([A-Za-z0-9+/=]+)$/.exec(first.placeholder ?? '');
+  assert.ok(match, `page 1's placeholder is an inline WebP: ${String(first.placeholder).slice(0, 40)}`);
+  const bytes = Buffer.from(match[1], 'base64');
+  assert.equal(bytes.subarray(8, 12).toString('latin1'), 'WEBP');
+  assert.ok(bytes.length > 100 && bytes.length < 6000, `${bytes.length} bytes`);
+  for (const page of others) assert.equal(page.placeholder, undefined, 'only the first spread is inlined (the reader draws the others\' thumbnails)');
+  // It shows the page: dark pixels where the heading is, the rest paper.
+  const file = path.join(dir, 'placeholder.webp');
+  fs.writeFileSync(file, bytes);
+  const heading = lineAt(0, -1);
+  const [w, h] = PAGE_SIZE;
+  const { createCanvas, loadImage } = loadCanvas();
+  const image = await loadImage(fs.readFileSync(file));
+  assert.equal(image.width, PLACEHOLDER.width);
+  assert.equal(image.height, Math.round(PLACEHOLDER.width * h / w));
+  const canvas = createCanvas(image.width, image.height);
+  canvas.getContext('2d').drawImage(image, 0, 0);
+  const { data } = canvas.getContext('2d').getImageData(0, 0, image.width, image.height);
+  const darkest = (y0, y1) => {
+    let min = 255;
+    for (let y = Math.floor(y0 * image.height); y < Math.ceil(y1 * image.height); y++) {
+      for (let x = 0; x < image.width; x++) min = Math.min(min, data[(y * image.width + x) * 4]);
+    }
+    return min;
+  };
+  assert.ok(darkest((heading.baseline - heading.size) / h, (heading.baseline + 4) / h) < 160, 'ink in the heading\'s band');
+  assert.ok(darkest(0, (heading.baseline - heading.size - 12) / h) > 230, 'paper above it');
 });
 
 test('node: conecurl publish text files, outline and manifest hold what pdf.js reads from the same PDF, and checkManifest passes', async (t) => {

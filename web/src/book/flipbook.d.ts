@@ -38,6 +38,11 @@ export interface PageEntry {
   zoomSrc?: PageImage;
   /** A small image of the page: pageThumbnail() up to 512 px wide draws it (a published document has one a page). */
   thumbSrc?: PageImage;
+  /**
+   * A small image shown at once while `src` loads (a data: URL costs no request): drawn over the whole page,
+   * then replaced by `src` once decoded, with no paper between and no layout change. One that fails is passed over.
+   */
+  placeholder?: PageImage;
   /** Clickable areas of the page, active while it lies open and flat. */
   links?: PageLink[];
   /** Recorded narration: readAloud() plays it and marks each word at its time, in place of a speech voice. */

@@ -84,7 +84,7 @@ export const DEFAULTS = {
 };
 /** Options a live book takes through setOptions(); the others need a new book. */
 export const LIVE_OPTIONS = ['lighting', 'shadows', 'gutter', 'showThrough', 'thickness', 'resolution', 'display', 'minPageWidth', 'sound', 'muted'];
-const PAGE_ENTRY_KEYS = ['src', 'html', 'alt', 'hard', 'zoomSrc', 'thumbSrc', 'links', 'narration'];
+const PAGE_ENTRY_KEYS = ['src', 'html', 'alt', 'hard', 'zoomSrc', 'thumbSrc', 'placeholder', 'links', 'narration'];
 const PAGE_SOURCES = 'a URL string, HTMLImageElement, HTMLCanvasElement, ImageBitmap, Blob, '
   + 'a function returning one of these (or a Promise of one), or an HTML element (an HTML page)';
 
@@ -135,7 +135,7 @@ export function checkPage(page, name, pageCount, kind = 'option') {
   if (page.hard !== undefined && typeof page.hard !== 'boolean') {
     throw new TypeError(`conecurl: ${kind} '${name}.hard' must be true or false; got ${describeValue(page.hard)}`);
   }
-  for (const key of ['zoomSrc', 'thumbSrc']) {
+  for (const key of ['zoomSrc', 'thumbSrc', 'placeholder']) {
     if (page[key] !== undefined && !isPageImage(page[key])) {
       throw new TypeError(`conecurl: ${kind} '${name}.${key}' must be a URL, HTMLImageElement, HTMLCanvasElement, ImageBitmap or Blob; `
         + `got ${describeValue(page[key])}`);
@@ -237,7 +237,7 @@ function checkOutline(entries, where, pageCount) {
 const oneLinkForm = (l) => ({ rect: l.rect, href: l.href ?? '#', toPage: l.page, title: l.title });
 
 /**
- * The page entries of checked options: every page as { src, alt?, hard?, zoomSrc?, thumbSrc?, links? } (or { html, ... }), links
+ * The page entries of checked options: every page as { src, alt?, hard?, zoomSrc?, thumbSrc?, placeholder?, links? } (or { html, ... }), links
  * in one form { rect, href, toPage, title }. Entries without links stay the objects given (a PDF's
  * fill in their alt and links as their pages render) unless `copy`: each entry its own object, so the
  * same page given twice is two entries (pages spliced on a live book are followed by their entries).

@@ -113,8 +113,8 @@ export function altText(index, text, max = Infinity) {
 
 /**
  * The manifest of a published document. `pages[i]`: { width, height (page units), src, zoomSrc?,
- * thumbSrc?, text?, alt? (else made from the text once read), links? ([{ rect, href } | { rect, page }]) } with paths relative to the
- * manifest, or { width, height, failed: 'why' } for a page that could not be drawn.
+ * thumbSrc?, placeholder? (a small image drawn while `src` loads: a path or a data: URL), text?, alt? (else made from
+ * the text once read), links? ([{ rect, href } | { rect, page }]) } with paths relative to the manifest, or { width, height, failed: 'why' } for a page that could not be drawn.
  * @param {{ title?: string, lang?: string, pages: object[], outline?: object[], download?: string|null }} parts
  */
 export function makeManifest({ title = '', lang = '', pages, outline = [], download = null }) {
@@ -153,7 +153,7 @@ export function checkManifest(json, where) {
     if (!page || !(page.width > 0 && page.height > 0)) throw bad(`'pages[${i}]' has no width and height`);
     if (page.failed !== undefined) return;
     if (!isPath(page.src)) throw bad(`'pages[${i}].src' is not a path`);
-    for (const key of ['zoomSrc', 'thumbSrc', 'text']) {
+    for (const key of ['zoomSrc', 'thumbSrc', 'placeholder', 'text']) {
       if (page[key] !== undefined && !isPath(page[key])) throw bad(`'pages[${i}].${key}' is not a path`);
     }
     (page.links ?? []).forEach((link, k) => {

@@ -39,6 +39,9 @@ export async function openPublished(url) {
     const entry = { src: at(page.src), alt: page.alt ?? `Page ${index + 1}` };  // without one, from the page's text once read
     if (page.zoomSrc) entry.zoomSrc = at(page.zoomSrc);
     if (page.thumbSrc) entry.thumbSrc = at(page.thumbSrc);
+    // Drawn while the page image loads: the manifest's own (the first spread's, inline), else the thumbnail.
+    const placeholder = page.placeholder ?? page.thumbSrc;
+    if (placeholder) entry.placeholder = at(placeholder);
     if (page.links?.length) entry.links = page.links.map((link) => ({ ...link }));
     // Recorded narration (`conecurl publish --narration`): its audio and word-times files, beside the pages.
     if (page.narration !== undefined) {

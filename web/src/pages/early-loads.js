@@ -36,14 +36,23 @@ export class EarlyLoads {
   constructor(signal) {
     this._signal = signal;
     this._loads = new Map();  // page entry -> loadPage's promise
+    this._placeholders = new Map();  // page entry -> loadPage's promise of its placeholder, ready for the surface's first frame
+    this._landed = new Set();  // page entries whose early load has settled
   }
 
-  /** Starts loading each page of `pages` ([index, entry]) whose source is a URL or a Blob, decoded to cover `cover`. */
+  /** Starts loading each page of `pages` ([index, entry]) whose source is a URL or a Blob, decoded to cover `cover`,
+   * and its placeholder where it has one (a URL or a Blob). */
   start(pages, cover) {
     for (const [index, entry] of pages) {
+      if (isEncoded(entry.placeholder) && !this._placeholders.has(entry)) {
+        const load = loadPage(entry.placeholder, { index, signal: this._signal });
+        load.catch(() => {});  // a placeholder that fails is passed over by the store
+        this._placeholders.set(entry, load);
+      }
       if (!isEncoded(entry.src) || this._loads.has(entry)) continue;
       const load = loadPage(entry.src, { index, size: cover, signal: this._signal });
-      load.catch(() => {});  // a failure is reported by the load that takes it up
+      const landed = () => { if (this._loads.get(entry) === load) this._landed.add(entry); };
+      load.then(landed, landed);  // a failure is reported by the load that takes it up
       this._loads.set(entry, load);
     }
   }
@@ -57,6 +66,7 @@ export class EarlyLoads {
     const load = this._loads.get(entry);
     if (!load) return null;
     this._loads.delete(entry);
+    this._landed.delete(entry);
     return load.then((result) => {
       const have = naturalSize(result.image);
       const from = result.natural ?? have;
@@ -67,9 +77,21 @@ export class EarlyLoads {
     });
   }
 
+  /** Whether `entry`'s early load has settled already (its image is in hand: no placeholder is worth drawing). */
+  landed(entry) { return this._landed.has(entry); }
+
+  /** The early load of `entry`'s placeholder as loadPage resolves (or rejects), or null; taken synchronously. */
+  takePlaceholder(entry) {
+    const load = this._placeholders.get(entry) ?? null;
+    this._placeholders.delete(entry);
+    return load;
+  }
+
   /** Loads not taken are let go: their images closed as they land. */
   drop() {
-    for (const load of this._loads.values()) load.then(closeOwned, () => {});
+    for (const load of [...this._loads.values(), ...this._placeholders.values()]) load.then(closeOwned, () => {});
     this._loads.clear();
+    this._placeholders.clear();
+    this._landed.clear();
   }
 }

@@ -1,9 +1,12 @@
 // A book's pages as the controller keeps them, whichever surface draws them: which are loading,
 // loaded or failed (and why), the images kept for the pages near the open spread (a bounded cache, the
-// least recently wanted let go first), their sizes for the screen, and sharper images when zoomed in.
+// least recently wanted let go first), their sizes for the screen, and sharper images when zoomed in. A
+// page's `placeholder` is drawn while its own image loads (page-placeholders.js), replaced in the same texture.
+// Over 350 lines because a page's load is one flow (early load, placeholder, upload, keep, failure) read in one place.
 import { loadPage, pageFailure } from './page-loader.js';
 import { EarlyLoads, FirstView } from './early-loads.js';
 import { PageCache } from './page-residency.js';
+import { PagePlaceholders } from './page-placeholders.js';
 import { uploadSizeFor } from './texture-upload.js';
 import { directionFacts } from '../engine/direction.js';
 import { isZoomed, openPages, restingRect, splicePageMap } from '../engine/layout.js';
@@ -33,6 +36,15 @@ export class PageStore {
     this._cache = new PageCache(settings.loadWindow, entries.length);
     this._abort = new AbortController();  // fetches still running when the book is destroyed stop
     this._early = new EarlyLoads(this._abort.signal);  // the opening pages, asked for before the surface exists
+    this._placeholders = new PagePlaceholders({  // drawn while their pages load
+      surface: () => this._hooks.surface(), early: this._early, signal: this._abort.signal,
+      own: (image) => this._owned.add(image), close: (image) => this._closeIfOwned(image), cover: () => this.cover(),
+      loadingAt: (entry, index) => {
+        const at = this._closed ? -1 : this._indexOf(entry, index);
+        return at >= 0 && this._cache.stateOf(at) === 'loading' && !this._images.has(at) ? at : -1;
+      },
+      shown: () => this._releaseExcess(),
+    });
     this._reloads = new Map();  // page entry -> its reload running now (by entry: indices move as pages are spliced)
     this._firstView = new FirstView();  // its pages on screen load alone, their neighbours after
     this._closed = false;
@@ -166,6 +178,7 @@ export class PageStore {
    */
   splice(at, removed, inserted) {
     for (const [page, image] of this._images) if (page >= at && page < at + removed) this._closeIfOwned(image);
+    this._placeholders.splice(at, removed, inserted);
     this._images = splicePageMap(this._images, at, removed, inserted);
     this._naturals = splicePageMap(this._naturals, at, removed, inserted);
     this._cache.splice(at, removed, inserted);
@@ -181,6 +194,7 @@ export class PageStore {
       this._reload(index, this.cover(), this.entries[index].src, false, { force: true, replacing: true });
       return;
     }
+    this._placeholders.release(index);  // the old entry's, while it loaded
     this._cache.setState(index, 'idle');  // a load under way finds its entry gone and is dropped
     this.update();
   }
@@ -214,12 +228,14 @@ export class PageStore {
     for (const image of this._owned) image.close?.();
     this._owned.clear();
     this._images.clear();
+    this._placeholders.clear();
     this._cache.releaseWaiters();
   }
 
   _releaseExcess() {
-    for (const page of this._cache.release([...this._images.keys()])) {
+    for (const page of this._cache.release([...this._images.keys(), ...this._placeholders.pages()])) {
       this._hooks.surface().releasePageImage(page);
+      if (this._placeholders.drop(page)) continue;  // still loading: its image is kept or dropped when it lands
       this._closeIfOwned(this._images.get(page));
       this._images.delete(page);
       this._naturals.delete(page);
@@ -235,22 +251,30 @@ export class PageStore {
   async _load(index) {
     this._cache.startLoad(index);
     const entry = this.entries[index];
+    const swap = { landed: false };  // the page's own image is in hand: its placeholder is not drawn any more
     try {
       // A function makes its page only when the page is wanted (drawn, fetched or rendered on
       // demand), told the size in device pixels the page is drawn at. Asked for early (prefetch), taken up.
       const cover = this.cover();
+      const inHand = this._early.landed(entry);  // fetched and decoded while the surface was made
       const early = this._early.take(entry, cover);
+      if (entry.placeholder !== undefined && !inHand) this._placeholders.show(entry, index, swap);
       const { image, owned, natural } = (early && await early)
         ?? await loadPage(entry.src, { index, size: cover, signal: this._abort.signal });
+      swap.landed = true;
       if (owned) this._owned.add(image);
       index = this._closed ? -1 : this._indexOf(entry, index);
       if (index < 0 || this._cache.stateOf(index) !== 'loading'
           || (!this._cache.wanted.has(index) && this._images.size >= this._cache.capacity)) {
         // Destroyed, removed or replaced, or no longer wanted and no room: not worth keeping.
         this._closeIfOwned(image);
-        if (index >= 0 && this._cache.stateOf(index) === 'loading') this._cache.setState(index, 'idle');
+        if (index >= 0 && this._cache.stateOf(index) === 'loading') {
+          this._placeholders.release(index);
+          this._cache.setState(index, 'idle');
+        }
         return;
       }
+      // Over the placeholder's texture, if it has one: the placeholder stays drawn until this replaces it.
       await this._hooks.surface().queuePageImage(index, this.presented(index, image), { cover: this.cover() });  // mid-turn: in bands over frames
       if (this._closed) return;
       index = this._indexOf(entry, index);  // the surface renumbered its texture along with the page
@@ -258,16 +282,19 @@ export class PageStore {
         this._closeIfOwned(image);
         return;
       }
+      this._placeholders.drop(index);
       this._keep(index, image);
       this._keepNatural(index, natural);
       this._cache.setState(index, 'loaded');
       this._releaseExcess();
       this._hooks.onOpenPageLoaded(index);
     } catch (error) {
+      swap.landed = true;
       index = this._closed ? -1 : this._indexOf(entry, index);
       if (index < 0 || this._cache.stateOf(index) !== 'loading') return;
-      // The page keeps the plain paper placeholder; the book keeps working. `reason` says why:
-      // 'http', 'network', 'cors', 'decode' or 'source' (PageLoadError), or 'upload'.
+      // The page keeps (or goes back to) the plain paper placeholder; the book keeps working. `reason` says
+      // why: 'http', 'network', 'cors', 'decode' or 'source' (PageLoadError), or 'upload'.
+      this._placeholders.release(index);
       const failure = pageFailure(error);
       this._cache.setState(index, 'failed', failure);
       this._hooks.emit('pageerror', { index, ...failure });
