@@ -189,9 +189,9 @@ test('browser: the published site draws its first page at once from the placehol
   expect(images).toEqual(['pages/0001.webp']);  // held: the placeholder came with book.json
   release();
   await page.evaluate(async (url) => {
-    window.book = await (await import(url)).book;
+    window.book = await (await import(document.querySelector(url).src)).book;
     await window.book.whenIdle();
-  }, `${siteUrl(siteName())}conecurl/web/reader/reader.js`);
+  }, READER_ENTRY);
   const uploads = await page.evaluate(() => window.uploads);
   expect(uploads[0]).toBe(128);
   expect(uploads[1]).toBeGreaterThan(256);  // the reading image, over it
