@@ -7,9 +7,9 @@ import fs from 'node:fs';
 import path from 'node:path';
 import zlib from 'node:zlib';
 import { fileURLToPath } from 'node:url';
-import { build } from 'rolldown';
 
 const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
+let build;  // rolldown's, imported below: a checkout without its devDependencies gets one line, not a stack
 const quiet = process.argv.includes('--quiet');
 
 /** What `conecurl publish` reads to copy and preload the reader: written last, so its presence means a whole build. */
@@ -124,6 +124,11 @@ async function buildCdn() {
 }
 
 try {
+  try {
+    ({ build } = await import('rolldown'));
+  } catch {
+    throw new Error('rolldown is not installed: run npm install (or npm run build, which does)');
+  }
   const reader = await buildReader();
   const cdn = await buildCdn();
   if (!quiet) {
@@ -131,7 +136,7 @@ try {
       + `dist/cdn/conecurl.js (${(cdn.gzip / 1024).toFixed(1)} KB gzip)`);
   }
 } catch (error) {
-  console.error(`build-bundles: ${error.message ?? error} (run npm run build after npm install)`);
+  console.error(`build-bundles: ${error.message ?? error}`);
   if (process.env.DEBUG) console.error(error);
   process.exit(1);
 }
