@@ -3,6 +3,7 @@
 // (minified, content-hashed, the first spread's chunk apart from lazy ones), and dist/cdn/conecurl.js,
 // one ES module for a <script type="module"> that finds the engine's wasm beside it.
 // Usage: node scripts/build-bundles.mjs [--quiet]   (scripts/build-wasm.sh runs it after the engine)
+import { createHash } from 'node:crypto';
 import fs from 'node:fs';
 import path from 'node:path';
 import zlib from 'node:zlib';
@@ -95,7 +96,7 @@ async function buildReader() {
   for (const file of loaded) for (const imported of byName.get(file).imports) if (byName.has(imported) && !loaded.includes(imported)) loaded.push(imported);
   const wasm = output.find((file) => file.type === 'asset' && file.fileName.endsWith('.wasm'));
   if (!wasm) throw new Error('the engine\'s wasm was not emitted beside the reader: has dist/conecurl-engine.mjs changed how it finds it?');
-  const css = `reader-${(await import('node:crypto')).createHash('sha256').update(fs.readFileSync(path.join(root, 'web/reader/reader.css'))).digest('hex').slice(0, 8)}.css`;
+  const css = `reader-${createHash('sha256').update(fs.readFileSync(path.join(root, 'web/reader/reader.css'))).digest('hex').slice(0, 8)}.css`;
   fs.copyFileSync(path.join(root, 'web/reader/reader.css'), path.join(dir, css));
   const files = [...output.map((file) => file.fileName), css].sort();
   const firstGzip = loaded.reduce((sum, file) => sum + gzipSize(byName.get(file).code), 0);
