@@ -12,19 +12,20 @@ export const SERVICE_WORKER = 'sw.js';
 /** The icons made from the cover (render-page.mjs), in book/: their side in px, and their file names. */
 export const ICON_SIDES = [192, 512];
 export const iconFile = (side) => `icon-${side}.png`;
-/** The reader page's background, as web/reader/reader.css says it (its one place): the site's colour. */
+/** The reader page's background, as web/reader/reader.css says it (its one place), read at its first use. */
+let background = null;
 function readerBackground() {
+  if (background) return background;
   const css = fs.readFileSync(fileURLToPath(new URL('../../web/reader/reader.css', import.meta.url)), 'utf8');
-  const colour = /html, body \{[^}]*\bbackground: (#[0-9a-f]{3,8})\b/i.exec(css)?.[1];
-  if (!colour) throw new Error('web/reader/reader.css gives html, body no background colour: reinstall conecurl');
-  return colour;
+  background = /html, body \{[^}]*\bbackground: (#[0-9a-f]{3,8})\b/i.exec(css)?.[1] ?? null;
+  if (!background) throw new Error('web/reader/reader.css gives html, body no background colour: reinstall conecurl');
+  return background;
 }
 /**
  * The site's colours: the reader page's background behind the icons and on the splash screen, and the
  * browser's bar. book.json has no colours of its own: these are the reader's.
  */
-const BACKGROUND = readerBackground();
-export const COLORS = { background: BACKGROUND, theme: BACKGROUND };
+export const COLORS = { get background() { return readerBackground(); }, get theme() { return readerBackground(); } };
 /** The line of the service worker's source that publish replaces with the site's facts. */
 const SITE_LINE = 'const SITE = null;  // replaced by conecurl publish';
 /** The characters of the title a home screen shows under the icon at most (short_name). */
