@@ -156,11 +156,24 @@ async function launchWebKit(exe, env, { width, height, timeoutMs }) {
   await driver.manage().setTimeouts({ script: timeoutMs, pageLoad: timeoutMs });
   const size = { width, height };
   // The window's frame takes some of its height: size the window so that the viewport is what was asked.
+  // setRect answers before the page has seen the resize on a busy machine, so each size is read once the
+  // page's outer size is the window's (the resize landed), never straight after the call.
+  const landed = async () => {
+    const { width: w, height: h } = await driver.manage().window().getRect();
+    const started = Date.now();
+    for (;;) {
+      const [ow, oh, iw, ih] = await driver.executeScript('return [outerWidth, outerHeight, innerWidth, innerHeight]');
+      if (ow === w && oh === h) return { frameWidth: ow - iw, frameHeight: oh - ih, w: iw, h: ih };
+      if (Date.now() - started > timeoutMs) throw new Error(`webkit: the page never saw the window's ${w}x${h} (it has ${ow}x${oh})`);
+      await new Promise((resolve) => setTimeout(resolve, 50));  // a poll's spacing while the resize lands
+    }
+  };
   const fit = async () => {
     await driver.manage().window().setRect({ width: size.width, height: size.height });
-    const [w, h] = await driver.executeScript('return [innerWidth, innerHeight]');
-    if (w !== size.width || h !== size.height) {
-      await driver.manage().window().setRect({ width: size.width + (size.width - w), height: size.height + (size.height - h) });
+    const seen = await landed();
+    if (seen.w !== size.width || seen.h !== size.height) {
+      await driver.manage().window().setRect({ width: size.width + seen.frameWidth, height: size.height + seen.frameHeight });
+      await landed();
     }
   };
   await fit();
