@@ -16,6 +16,9 @@ async function openHtmlBook(page, options = {}) {
     window.htmlHome = document.createElement('div');
     window.htmlHome.append(html);
     document.body.append(window.htmlHome);
+    // Its image loaded before the book opens: one that lands later changes the page (drawn again after a
+    // pause), and a test comparing the live page with its texture would compare the two sides of that change.
+    await Promise.all([...html.querySelectorAll('img')].map((img) => img.decode()));
     const pages = Array.from({ length: 6 }, (_, i) => (i === 2 ? html : window.makeNumberedPage(i)));
     const Book = options.still ? window.StaticBook : window.Flipbook;
     window.book = await Book.create(window.container, { pages, display: 'double', startPage: 1, duration: 400, ...options.book });
@@ -294,9 +297,14 @@ test('browser: no visible jump when a live HTML page gives way to its texture: t
     return { x: c.left + p.x, y: c.top + p.y, width: p.width, height: p.height };
   });
   const clip = { x: Math.ceil(place.x) + 1, y: Math.ceil(place.y) + 1, width: Math.floor(place.width) - 2, height: Math.floor(place.height) - 2 };
-  const live = decodePng(await page.screenshot({ clip }));
+  const liveShot = await page.screenshot({ clip });
   await page.evaluate(() => { document.querySelector('.conecurl-html-page').style.visibility = 'hidden'; });
-  const texture = decodePng(await page.screenshot({ clip }));
+  const textureShot = await page.screenshot({ clip });
+  // Both pictures kept with the result (test-results/), so a failure can be looked at.
+  await test.info().attach('live', { body: liveShot, contentType: 'image/png' });
+  await test.info().attach('texture', { body: textureShot, contentType: 'image/png' });
+  const live = decodePng(liveShot);
+  const texture = decodePng(textureShot);
   let sum = 0;
   let off = 0;
   for (let i = 0; i < live.data.length; i += 4) {
