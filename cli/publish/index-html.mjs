@@ -3,7 +3,7 @@
 // pages (images and text) for readers and crawlers without JavaScript, and a description for search results
 // and link previews. Every value from the PDF is escaped.
 import { cutWords } from '../../web/src/document/format.js';
-import { COLORS, WEB_MANIFEST } from './web-app.mjs';
+import { COLORS, VERSION_SLOT, WEB_MANIFEST } from './web-app.mjs';
 
 /** Characters of a page's text in the noscript copy at most, and of all pages' together: the HTML stays small. */
 export const NOSCRIPT_CHARS = 400;
@@ -59,6 +59,7 @@ export function indexHtml({ title, lang, manifest, cover, url, runtime, prefix, 
     // Installable (web-app.mjs): the web app manifest beside this page, the bar's colour, the home screen icon.
     `<link rel="manifest" href="${href(WEB_MANIFEST)}">`,
     `<meta name="theme-color" content="${COLORS.theme}">`,
+    VERSION_SLOT,
     ...(touchIcon ? [`<link rel="apple-touch-icon" href="${href(touchIcon)}">`] : []),
     // What the first spread needs, asked for at once: the chunks the reader's entry imports (as the bundler's
     // output lists them: build-bundles.mjs), the manifest and the engine's binary, fetched as the book fetches them (CORS mode, credentials of the

@@ -28,6 +28,13 @@ function readerBackground() {
 export const COLORS = { get background() { return readerBackground(); }, get theme() { return readerBackground(); } };
 /** The line of the service worker's source that publish replaces with the site's facts. */
 const SITE_LINE = 'const SITE = null;  // replaced by conecurl publish';
+
+/**
+ * index.html's place for the site's version (web/reader/reader.js reads it and asks the worker for its
+ * own): written empty, hashed so, and filled once the version is known.
+ */
+export const VERSION_SLOT = '<meta name="conecurl-site-version" content="">';
+const INDEX = 'index.html';
 /** The characters of the title a home screen shows under the icon at most (short_name). */
 const SHORT_NAME = 12;
 
@@ -77,7 +84,7 @@ const TEMPLATE = fileURLToPath(new URL('../../web/reader/service-worker.js', imp
  * Writes manifest.webmanifest and sw.js into `out` once every other file is written, and records both
  * in `written` (relative path -> { bytes, kind }, main.mjs's). `shell`: whether a file is precached at
  * install; `skip`: files the site does not serve to readers (_headers). The version hashes every file
- * written but sw.js itself. Returns { version, files } (files: the sw's list, [path, bytes]).
+ * written but sw.js itself (index.html with its VERSION_SLOT empty), and is then written into index.html. Returns { version, files } (files: the sw's list, [path, bytes]).
  */
 export function writeWebApp({ out, title, lang, written, icons, shell, skip = [] }) {
   const manifest = webManifest({ title, lang, icons: icons.filter(({ src }) => written.has(src)) });
@@ -91,6 +98,14 @@ export function writeWebApp({ out, title, lang, written, icons, shell, skip = []
     throw Object.assign(inputError(`${TEMPLATE} is missing from conecurl: reinstall conecurl`), { cause: error });
   }
   const version = siteVersion(out, files.map(([file]) => file));
+  if (written.has(INDEX)) {
+    const page = fs.readFileSync(path.join(out, INDEX), 'utf8');
+    if (!page.includes(VERSION_SLOT)) throw new Error(`${INDEX} has no ${VERSION_SLOT}: the reader could not tell a new publish's worker`);
+    const filled = page.replace(VERSION_SLOT, `<meta name="conecurl-site-version" content="${version}">`);
+    fs.writeFileSync(path.join(out, INDEX), filled);
+    written.get(INDEX).bytes = Buffer.byteLength(filled);
+    files.find(([file]) => file === INDEX)[1] = Buffer.byteLength(filled);
+  }
   const worker = serviceWorker(template, { version, shell: files.map(([file]) => file).filter((file) => shell(file, written.get(file))), files });
   fs.writeFileSync(path.join(out, SERVICE_WORKER), worker);
   written.set(SERVICE_WORKER, { bytes: Buffer.byteLength(worker), kind: 'text' });

@@ -5,7 +5,7 @@
 // The sites are served under a sub-path (/build/test-sites/<name>/). Every wait is for an event or a state.
 import { test, expect } from '@playwright/test';
 import { execFileSync } from 'node:child_process';
-import { mkdirSync, rmSync, writeFileSync } from 'node:fs';
+import { mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { makeDocumentPdf } from './document-pdf.js';
@@ -30,7 +30,7 @@ test.beforeAll(async () => {
   mkdirSync(SITES, { recursive: true });
   pdf = path.join(SITES, `offline-${test.info().workerIndex}.pdf`);
   writeFileSync(pdf, Buffer.from((await makeDocumentPdf()).base64, 'base64'));
-  for (const kind of ['read', 'keep', 'install', 'update']) rmSync(path.join(SITES, siteName(kind)), { recursive: true, force: true });
+  for (const kind of ['read', 'keep', 'install', 'update', 'stale']) rmSync(path.join(SITES, siteName(kind)), { recursive: true, force: true });
   for (const kind of ['read', 'keep', 'install']) publish(siteName(kind), TITLE);
 });
 
@@ -184,4 +184,34 @@ test('browser: a re-publish replaces the site online: the new version\'s worker 
   expect(second[0]).not.toBe(first[0]);
   const cachedIndex = await page.evaluate(async (name) => (await (await caches.open(name)).match('index.html')).text(), second[0]);
   expect(cachedIndex).toContain('<title>Second edition</title>');
+});
+
+test('browser: a page of one version under another version\'s worker from its first moment (a new worker that took over before the reader ran: no controllerchange to hear) loads again once, and a server still sending it cannot make it loop (needs conecurl publish, service workers)', async ({ page }) => {
+  const name = siteName('stale');
+  const site = siteUrl(name);
+  publish(name, TITLE);
+  await page.goto(`${site}index.html`);
+  expect(await openBook(page, site)).toBe(true);
+  // A page the worker does not serve (no file of the site): the server's copy, with another version in it,
+  // controlled by this version's worker from its start.
+  const index = readFileSync(path.join(SITES, name, 'index.html'), 'utf8');
+  const stale = index.replace(/(<meta name="conecurl-site-version" content=")[0-9a-f]{16}/, `$1${'0'.repeat(16)}`);
+  expect(stale).not.toBe(index);
+  writeFileSync(path.join(SITES, name, 'stale.html'), stale);
+  let loads = 0;
+  page.on('load', () => { loads += 1; });
+  const reloaded = page.waitForEvent('load').then(() => page.waitForEvent('load'));
+  await page.goto(`${site}stale.html`);
+  await reloaded;
+  expect(await openBook(page, site)).toBe(true);
+  // The reader asked the worker its version when its module ran; a question asked now is answered after
+  // that one, and by then a reload it made would have begun.
+  const version = await page.evaluate(() => new Promise((resolve) => {
+    const channel = new MessageChannel();
+    channel.port1.onmessage = ({ data }) => setTimeout(() => resolve(data.version));
+    navigator.serviceWorker.controller.postMessage({ type: 'conecurl-version' }, [channel.port2]);
+  }));
+  expect(version).toBe(index.match(/<meta name="conecurl-site-version" content="([0-9a-f]{16})">/)[1]);
+  expect(loads).toBe(2);
+  expect(await page.evaluate(() => window.book.pageCount)).toBeGreaterThan(0);
 });

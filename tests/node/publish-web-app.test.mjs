@@ -31,7 +31,7 @@ test('node: a service worker source without its SITE line, or a shell naming a f
   assert.equal(serviceWorker(template, { version: 'v', shell: ['a'], files: [['a', 1]] }), 'const SITE = {"version":"v","shell":["a"],"files":[["a",1]]};\n');
 });
 
-test('node: conecurl publish writes manifest.webmanifest with square icons from page 1, and sw.js whose file list is what it wrote, with sizes, and whose version changes only with the files (needs pdfjs-dist, @napi-rs/canvas, dist/)', async (t) => {
+test('node: conecurl publish writes manifest.webmanifest with square icons from page 1, and sw.js whose file list is what it wrote, with sizes, and whose version changes only with the files and is written into index.html for the reader (needs pdfjs-dist, @napi-rs/canvas, dist/)', async (t) => {
   const dir = tempDir(t);
   const pdf = await writeTestPdf(dir);
   const out = path.join(dir, 'site');
@@ -62,6 +62,8 @@ test('node: conecurl publish writes manifest.webmanifest with square icons from 
   }
   for (const file of ['book/pages/0001.webp', 'book/thumbs/0001.webp', 'book/cover.jpg']) assert.ok(!site.shell.includes(file), `${file} is kept as read`);
   assert.match(site.version, /^[0-9a-f]{16}$/);
+  // The page's own version, which the reader compares with its worker's (a new publish's worker reloads it).
+  assert.match(fs.readFileSync(path.join(out, 'index.html'), 'utf8'), new RegExp(`<meta name="conecurl-site-version" content="${site.version}">`));
 
   assert.equal((await run('Animals and drinks')).code, 0);
   assert.equal(siteOf(out).version, site.version, 'the same input: the same version');

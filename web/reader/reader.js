@@ -77,18 +77,27 @@ async function registerServiceWorker() {
 }
 
 /**
- * A page shown by one version of the site loads again when a new publish's worker takes it over (the
- * first worker taking a page that had none changes nothing). Listened for from the start, before the book
- * opens: a new worker may take over while it does.
+ * A page shown by one version of the site loads again when a worker of another version controls it: its
+ * version (index.html's conecurl-site-version, written by conecurl publish) is asked of the controller
+ * at once and at each change of controller. A new publish's worker may have taken over before this module
+ * ran (no controllerchange left to hear), so the page never counts changes, it compares versions. One
+ * reload a version: a server still sending the old page cannot make it loop.
  */
 function reloadOnUpdate() {
   const container = navigator.serviceWorker;
-  if (!main.dataset.document || !container) return;
-  let updated = Boolean(container.controller);
-  container.addEventListener('controllerchange', () => {
-    if (updated) location.reload();
-    updated = true;
-  });
+  const mine = document.querySelector('meta[name="conecurl-site-version"]')?.content;
+  if (!main.dataset.document || !container || !mine) return;
+  const check = async () => {
+    const worker = container.controller;
+    if (!worker) return;
+    const { version } = await ask(worker, { type: 'conecurl-version' });
+    const key = `conecurl-reloaded ${mine} for ${version}`;
+    if (!version || version === mine || sessionStorage.getItem(key)) return;
+    sessionStorage.setItem(key, '1');
+    location.reload();
+  };
+  container.addEventListener('controllerchange', check);
+  check();
 }
 reloadOnUpdate();
 

@@ -5,7 +5,8 @@
 // reader says ("conecurl-keep-read"); the More menu's Keep offline asks it for SITE.files
 // ("conecurl-offline-plan") and fetches those it lacks through it. Its cache is named by the site's
 // folder and SITE.version (a hash of the files written): a new publish installs a new worker that
-// takes over at once and deletes the old version's cache. Every URL is relative to its scope, so the
+// takes over at once and deletes the old version's cache; a page of another version asks it its version
+// ("conecurl-version") and loads again. Every URL is relative to its scope, so the
 // site works under any sub-path. Requests for anything else pass by untouched.
 const SITE = null;  // replaced by conecurl publish
 
@@ -81,7 +82,11 @@ async function keepRead(urls) {
 // The page's questions, each answered on the port it sent.
 self.addEventListener('message', (event) => {
   const port = event.ports?.[0];
-  const answer = { 'conecurl-offline-plan': () => plan(), 'conecurl-keep-read': () => keepRead(event.data.urls ?? []) }[event.data?.type];
+  const answer = {
+    'conecurl-version': async () => ({ version: SITE.version }),
+    'conecurl-offline-plan': () => plan(),
+    'conecurl-keep-read': () => keepRead(event.data.urls ?? []),
+  }[event.data?.type];
   if (!port || !answer) return;
   event.waitUntil(answer().then((reply) => port.postMessage(reply)));
 });
