@@ -52,23 +52,23 @@ export function webManifest({ title, lang, icons }) {
   }, null, 1)}\n`;
 }
 
+/** A file's contents, hashed (sha-256, its first 16 hex digits): sw.js names each file's so. */
+const contentHash = (file) => createHash('sha256').update(fs.readFileSync(file)).digest('hex').slice(0, 16);
+
 /**
- * The version of a site: a hash of every file's path and contents (`files`: relative paths in `out`),
- * so a publish that changes any file gets a new one and one that changes none keeps it.
+ * The version of a site: a hash of every file's path and contents (`hashes`: relative path -> its
+ * contentHash), so a publish that changes any file gets a new one and one that changes none keeps it.
  */
-export function siteVersion(out, files) {
+export function siteVersion(hashes) {
   const hash = createHash('sha256');
-  for (const file of [...files].sort()) {
-    hash.update(`${file}\0`);
-    hash.update(createHash('sha256').update(fs.readFileSync(path.join(out, file))).digest());
-  }
+  for (const file of [...hashes.keys()].sort()) hash.update(`${file}\0${hashes.get(file)}\0`);
   return hash.digest('hex').slice(0, 16);
 }
 
 /**
  * sw.js: `template` (web/reader/service-worker.js's text) with its SITE line holding `version`,
- * `shell` (the files precached at install: relative paths) and `files` ([path, bytes] of every file
- * the site serves, which Keep offline fetches). An error if the template lost its SITE line.
+ * `shell` (the files precached at install: relative paths) and `files` ([path, bytes, contents' hash] of
+ * every file the site serves: Keep offline fetches them, a new version keeps the old one's unchanged). An error if the template lost its SITE line.
  */
 export function serviceWorker(template, { version, shell, files }) {
   if (!template.includes(SITE_LINE)) throw new Error(`the service worker's source has no line "${SITE_LINE}": reinstall conecurl`);
@@ -84,28 +84,31 @@ const TEMPLATE = fileURLToPath(new URL('../../web/reader/service-worker.js', imp
  * Writes manifest.webmanifest and sw.js into `out` once every other file is written, and records both
  * in `written` (relative path -> { bytes, kind }, main.mjs's). `shell`: whether a file is precached at
  * install; `skip`: files the site does not serve to readers (_headers). The version hashes every file
- * written but sw.js itself (index.html with its VERSION_SLOT empty), and is then written into index.html. Returns { version, files } (files: the sw's list, [path, bytes]).
+ * written but sw.js itself (index.html with its VERSION_SLOT empty), and is then written into index.html.
+ * Returns { version, files } (files: the sw's list, [path, bytes, hash]).
  */
 export function writeWebApp({ out, title, lang, written, icons, shell, skip = [] }) {
   const manifest = webManifest({ title, lang, icons: icons.filter(({ src }) => written.has(src)) });
   fs.writeFileSync(path.join(out, WEB_MANIFEST), manifest);
   written.set(WEB_MANIFEST, { bytes: Buffer.byteLength(manifest), kind: 'text' });
-  const files = [...written].filter(([file]) => !skip.includes(file)).map(([file, { bytes }]) => [file, bytes]).sort(([a], [b]) => (a < b ? -1 : 1));
   let template;
   try {
     template = fs.readFileSync(TEMPLATE, 'utf8');
   } catch (error) {
     throw Object.assign(inputError(`${TEMPLATE} is missing from conecurl: reinstall conecurl`), { cause: error });
   }
-  const version = siteVersion(out, files.map(([file]) => file));
+  const served = [...written.keys()].filter((file) => !skip.includes(file)).sort();
+  const hashes = new Map(served.map((file) => [file, contentHash(path.join(out, file))]));
+  const version = siteVersion(hashes);
   if (written.has(INDEX)) {
     const page = fs.readFileSync(path.join(out, INDEX), 'utf8');
     if (!page.includes(VERSION_SLOT)) throw new Error(`${INDEX} has no ${VERSION_SLOT}: the reader could not tell a new publish's worker`);
     const filled = page.replace(VERSION_SLOT, `<meta name="conecurl-site-version" content="${version}">`);
     fs.writeFileSync(path.join(out, INDEX), filled);
     written.get(INDEX).bytes = Buffer.byteLength(filled);
-    files.find(([file]) => file === INDEX)[1] = Buffer.byteLength(filled);
+    hashes.set(INDEX, contentHash(path.join(out, INDEX)));
   }
+  const files = served.map((file) => [file, written.get(file).bytes, hashes.get(file)]);
   const worker = serviceWorker(template, { version, shell: files.map(([file]) => file).filter((file) => shell(file, written.get(file))), files });
   fs.writeFileSync(path.join(out, SERVICE_WORKER), worker);
   written.set(SERVICE_WORKER, { bytes: Buffer.byteLength(worker), kind: 'text' });

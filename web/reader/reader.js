@@ -70,6 +70,10 @@ async function registerServiceWorker() {
   if (document.readyState !== 'complete') await new Promise((resolve) => addEventListener('load', resolve, { once: true }));
   const registration = await container.register(new URL('sw.js', location.href), { scope: './', updateViaCache: 'none' });
   registration.update().catch(() => {});  // offline: the worker kept serves on
+  // A page left open (a tab come back to, an installed app brought back) looks for a new publish too.
+  document.addEventListener('visibilitychange', () => {
+    if (document.visibilityState === 'visible') registration.update().catch(() => {});
+  });
   if (!container.controller) await new Promise((resolve) => container.addEventListener('controllerchange', resolve, { once: true }));
   await (await book)?.whenIdle();  // the pages asked for before the worker took over have arrived
   await ask(container.controller, { type: 'conecurl-keep-read', urls: performance.getEntriesByType('resource').map((entry) => entry.name) });

@@ -5,7 +5,8 @@
 // reader says ("conecurl-keep-read"); the More menu's Keep offline asks it for SITE.files
 // ("conecurl-offline-plan") and fetches those it lacks through it. Its cache is named by the site's
 // folder and SITE.version (a hash of the files written): a new publish installs a new worker that
-// takes over at once and deletes the old version's cache; a page of another version asks it its version
+// takes over at once, moves what the old version's cache kept and it serves unchanged (SITE.files names
+// each file's hash) into its own, and deletes the old cache; a page of another version asks it its version
 // ("conecurl-version") and loads again. Every URL is relative to its scope, so the
 // site works under any sub-path. Requests for anything else pass by untouched.
 const SITE = null;  // replaced by conecurl publish
@@ -16,7 +17,7 @@ const OWN = `${PREFIX}${scope} `;
 const CACHE = `${OWN}${SITE.version}`;
 /** A site file's absolute URL, its path encoded as index.html's links encode it. */
 const urlOf = (file) => new URL(file.split('/').map(encodeURIComponent).join('/'), scope).href;
-const FILES = new Map(SITE.files.map(([file, bytes]) => [urlOf(file), bytes]));
+const FILES = new Map(SITE.files.map(([file, bytes, hash]) => [urlOf(file), { bytes, hash }]));
 const INDEX = urlOf('index.html');
 
 self.addEventListener('install', (event) => {
@@ -28,9 +29,35 @@ self.addEventListener('install', (event) => {
   })());
 });
 
+/** A response's body hashed as publish hashes a file (sha-256, its first 16 hex digits). */
+async function contentHash(response) {
+  const digest = new Uint8Array(await crypto.subtle.digest('SHA-256', await response.arrayBuffer()));
+  return Array.from(digest.slice(0, 8), (byte) => byte.toString(16).padStart(2, '0')).join('');
+}
+
+/**
+ * What an older version's cache `name` kept (pages read, or the whole book by Keep offline) and this
+ * version's has not: each file this version still serves with the same contents moves over, so a reader
+ * who kept the book offline keeps it across a re-publish that left those files as they were.
+ */
+async function carryOver(name, cache) {
+  const old = await caches.open(name);
+  for (const request of await old.keys()) {
+    const file = FILES.get(request.url);
+    if (!file || await cache.match(request.url)) continue;
+    const response = await old.match(request);
+    if (response?.status === 200 && await contentHash(response.clone()) === file.hash) await cache.put(request.url, response);
+  }
+}
+
 self.addEventListener('activate', (event) => {
   event.waitUntil((async () => {
-    for (const name of await caches.keys()) if (name.startsWith(OWN) && name !== CACHE) await caches.delete(name);
+    const cache = await caches.open(CACHE);
+    for (const name of await caches.keys()) {
+      if (!name.startsWith(OWN) || name === CACHE) continue;
+      await carryOver(name, cache).catch(() => {});  // what cannot move is fetched again as it is read
+      await caches.delete(name);
+    }
     await self.clients.claim();
   })());
 });
@@ -66,7 +93,7 @@ self.addEventListener('fetch', (event) => {
 /** Keep offline's question: every file of the site, its size, and whether this version's cache holds it. */
 async function plan() {
   const kept = new Set((await (await caches.open(CACHE)).keys()).map((request) => request.url));
-  return { version: SITE.version, files: [...FILES].map(([url, bytes]) => ({ url, bytes, kept: kept.has(url) })) };
+  return { version: SITE.version, files: [...FILES].map(([url, { bytes }]) => ({ url, bytes, kept: kept.has(url) })) };
 }
 
 /**
