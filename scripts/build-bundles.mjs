@@ -1,6 +1,7 @@
 // Bundles the package's browser code with rolldown (the bundler vite runs on, already in our tree), so
 // that nothing at run time has to walk ninety source modules: dist/reader/, the published site's reader
-// (minified, content-hashed, the first spread's chunk apart from lazy ones), and dist/cdn/conecurl.js,
+// (minified, content-hashed, the first spread's chunk apart from lazy ones) with reader.html for a PDF at
+// run time, and dist/cdn/conecurl.js,
 // one ES module for a <script type="module"> that finds the engine's wasm beside it.
 // Usage: node scripts/build-bundles.mjs [--quiet]   (scripts/build-wasm.sh runs it after the engine)
 import { createHash } from 'node:crypto';
@@ -105,8 +106,27 @@ async function buildReader() {
     entry: entry.fileName, preload: loaded.slice(1).sort(), css, wasm: wasm.fileName, files,
     firstSpreadGzip: firstGzip,
   };
+  writeReaderPage(dir, manifest);
   fs.writeFileSync(path.join(root, READER_BUNDLE), `${JSON.stringify(manifest, null, 1)}\n`);
   return { chunks: chunks.length, first: loaded, firstGzip };
+}
+
+/**
+ * dist/reader/reader.html: web/reader/reader.html (reader.html#file=book.pdf, a PDF at run time) on the
+ * bundle: its stylesheet and entry by their hashed names, the first spread's chunks preloaded. Its import
+ * map finds pdf.js from dist/reader/ as from web/reader/ (the same depth in the package).
+ */
+function writeReaderPage(dir, { entry, preload, css }) {
+  const source = path.join(root, 'web/reader/reader.html');
+  let page = fs.readFileSync(source, 'utf8');
+  const swap = (from, to) => {
+    if (!page.includes(from)) throw new Error(`${path.relative(root, source)} no longer has ${from}: say in build-bundles.mjs how its bundled copy is made`);
+    page = page.replace(from, to);
+  };
+  swap('<link rel="stylesheet" href="reader.css">', `<link rel="stylesheet" href="${css}">`);
+  swap('<script type="module" src="reader.js"></script>',
+    [...preload.map((file) => `<link rel="modulepreload" href="${file}">`), `<script type="module" src="${entry}"></script>`].join('\n'));
+  fs.writeFileSync(path.join(dir, 'reader.html'), page);
 }
 
 /** dist/cdn/conecurl.js: Flipbook and <cone-flipbook> in one module; the wasm beside it keeps its name. */

@@ -197,7 +197,8 @@ for (const pdf of pdfs) {
   const base = `http://127.0.0.1:${server.address().port}`;
   const roads = {
     published: (options) => measure(`${base}/sites/${name}/index.html`, options),
-    pdfjs: (options) => measure(`${base}/web/reader/reader.html#file=/pdf/${encodeURIComponent(path.basename(pdf))}`, options),
+    // The package's bundled reader.html (dist/reader/, what its docs name), pdf.js found by its import map.
+    pdfjs: (options) => measure(`${base}/dist/reader/reader.html#file=/pdf/${encodeURIComponent(path.basename(pdf))}`, options),
   };
   const runs = { published: [], pdfjs: [] };
   try {

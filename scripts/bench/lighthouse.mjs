@@ -197,7 +197,9 @@ for (const pdf of pdfs) {
       if (!fs.existsSync(path.join(tree, pdfDir, path.basename(pdf)))) throw new Error(`lighthouse: ${tree} has no ${path.join(pdfDir, path.basename(pdf))}`);
       const { server, url } = await serveDirectory(tree, { port: at, compress: true });
       servers.push(server);
-      return `${url}web/reader/reader.html#file=/${pdfPath}`;
+      // The bundled reader.html where the tree has one (dist/reader/, from build-bundles.mjs), else its source page.
+      const reader = fs.existsSync(path.join(tree, 'dist/reader/reader.html')) ? 'dist/reader/reader.html' : 'web/reader/reader.html';
+      return `${url}${reader}#file=/${pdfPath}`;
     };
     if (roads.includes('reader')) urls.reader = await readerOf(root, port + 1);
     if (roads.includes('published') && baselineSites) {

@@ -251,3 +251,20 @@ test('browser: reader.html#file= opens a PDF at run time with the toolbar', asyn
   await page.goto('/web/reader/reader.html');
   await expect(page.getByRole('alert')).toContainText('reader.html#file=');
 });
+
+test('browser: the bundled reader.html#file= (dist/reader/, made by build-bundles.mjs) opens a PDF at run time with the toolbar, its code from the bundle and pdf.js through its import map (needs dist/)', async ({ page }) => {
+  const name = `${siteName()}.pdf`;
+  const scripts = [];
+  page.on('request', (request) => { if (request.resourceType() === 'script') scripts.push(new URL(request.url()).pathname); });
+  await page.goto(`/dist/reader/reader.html#file=/build/test-sites/${name}`);
+  const state = await page.evaluate(async () => {
+    const book = await (await import(document.querySelector('script[type="module"][src]').src)).book;
+    await book.whenIdle();
+    return { count: book.pageCount, title: document.title, toolbar: Boolean(document.querySelector('[role="toolbar"]')), shown: book.openPages.map((i) => book.pageState(i).state) };
+  });
+  expect(state).toEqual({ count: 8, title: name, toolbar: true, shown: ['loaded'] });
+  // The book's code came from dist/reader/ (none of web/src's modules), pdf.js from node_modules.
+  expect(scripts.filter((file) => file.startsWith('/web/'))).toEqual([]);
+  expect(scripts.some((file) => /^\/dist\/reader\/pdf-[\w-]+\.js$/.test(file))).toBe(true);
+  expect(scripts.some((file) => file.startsWith('/node_modules/pdfjs-dist/'))).toBe(true);
+});
