@@ -30,7 +30,7 @@ test.beforeAll(async () => {
   mkdirSync(SITES, { recursive: true });
   pdf = path.join(SITES, `offline-${test.info().workerIndex}.pdf`);
   writeFileSync(pdf, Buffer.from((await makeDocumentPdf()).base64, 'base64'));
-  for (const kind of ['read', 'keep', 'install', 'update', 'stale']) rmSync(path.join(SITES, siteName(kind)), { recursive: true, force: true });
+  for (const kind of ['read', 'keep', 'install', 'update', 'stale', 'reload']) rmSync(path.join(SITES, siteName(kind)), { recursive: true, force: true });
   for (const kind of ['read', 'keep', 'install']) publish(siteName(kind), TITLE);
 });
 
@@ -231,4 +231,20 @@ test('browser: a page of one version under another version\'s worker from its fi
   expect(version).toBe(index.match(/<meta name="conecurl-site-version" content="([0-9a-f]{16})">/)[1]);
   expect(loads).toBe(2);
   expect(await page.evaluate(() => window.book.pageCount)).toBeGreaterThan(0);
+});
+
+test('browser: a reload pressed as a re-publish is found shows the new edition, even while Chromium holds the new worker back (the old one steps aside while a new one waits) (needs conecurl publish twice, service workers)', async ({ page }) => {
+  const name = siteName('reload');
+  const site = siteUrl(name);
+  publish(name, 'First edition');
+  await page.goto(`${site}index.html`);
+  expect(await openBook(page, site)).toBe(true);
+  publish(name, 'Second edition');
+  // The reload is answered by the first version's worker; the new one installs while the page loads
+  // through the old one, and the page, told a worker of another version is there, loads again.
+  await page.reload();
+  await expect(page).toHaveTitle('Second edition', { timeout: 60_000 });
+  await page.evaluate(async (entry) => { await (await import(document.querySelector(entry).src)).book; }, READER_ENTRY);
+  expect(await page.evaluate(() => document.querySelector('meta[name="conecurl-site-version"]').content))
+    .toBe(readFileSync(path.join(SITES, name, 'index.html'), 'utf8').match(/<meta name="conecurl-site-version" content="([0-9a-f]{16})">/)[1]);
 });

@@ -69,6 +69,7 @@ async function registerServiceWorker() {
   await book;
   if (document.readyState !== 'complete') await new Promise((resolve) => addEventListener('load', resolve, { once: true }));
   const registration = await container.register(new URL('sw.js', location.href), { scope: './', updateViaCache: 'none' });
+  takeOverWhenInstalled(registration);
   registration.update().catch(() => {});  // offline: the worker kept serves on
   // A page left open (a tab come back to, an installed app brought back) looks for a new publish too.
   document.addEventListener('visibilitychange', () => {
@@ -80,30 +81,62 @@ async function registerServiceWorker() {
   return registration;
 }
 
+/** How often, and how many times, a waiting worker is asked to take over (takeOverWhenInstalled). */
+const TAKE_OVER = { everyMs: 1000, times: 60 };
+
 /**
- * A page shown by one version of the site loads again when a worker of another version controls it: its
- * version (index.html's conecurl-site-version, written by conecurl publish) is asked of the controller
- * at once and at each change of controller. A new publish's worker may have taken over before this module
- * ran (no controllerchange left to hear), so the page never counts changes, it compares versions. One
- * reload a version: a server still sending the old page cannot make it loop.
+ * A new publish's worker, once installed, is asked to take over, and asked again each second while it
+ * still waits. It asks for itself at install (skipWaiting), but Chromium abandons an activation when a
+ * fetch reaches the outgoing worker at that moment (this page loading, its idle reads of the text files)
+ * and then leaves the new worker waiting until every tab of the site is closed.
  */
-function reloadOnUpdate() {
+function takeOverWhenInstalled(registration) {
+  let asked = 0;
+  let timer = 0;
+  const ask = () => {
+    clearTimeout(timer);
+    const waiting = registration.waiting;
+    if (!waiting || asked >= TAKE_OVER.times) return;
+    asked += 1;
+    waiting.postMessage({ type: 'conecurl-skip-waiting' });
+    timer = setTimeout(ask, TAKE_OVER.everyMs);  // a retry's spacing: each ask is one more chance at a quiet moment
+  };
+  const installed = () => {
+    ask();
+    reloadIfStale();  // the page may be of the old version: it loads again now, whether or not the worker takes over
+  };
+  const follow = (worker) => {
+    if (worker?.state === 'installing') worker.addEventListener('statechange', () => { if (worker.state === 'installed') installed(); });
+  };
+  if (registration.waiting) installed();
+  follow(registration.installing);
+  registration.addEventListener('updatefound', () => follow(registration.installing));
+}
+
+/**
+ * A page shown by one version of the site loads again when the site's newest worker (one installed and
+ * waiting, else the controller) is of another: its version (index.html's conecurl-site-version, written
+ * by conecurl publish) is asked of that worker at once, at each change of controller, and when a new
+ * worker has installed. A worker that took over before this module ran leaves no controllerchange to
+ * hear, so the page never counts changes, it compares versions. An old worker steps aside while a new
+ * one waits (service-worker.js), so the reload gets the new version even while Chromium holds the new
+ * worker back. One reload a version: a server still sending the old page cannot make it loop.
+ */
+async function reloadIfStale() {
   const container = navigator.serviceWorker;
   const mine = document.querySelector('meta[name="conecurl-site-version"]')?.content;
   if (!main.dataset.document || !container || !mine) return;
-  const check = async () => {
-    const worker = container.controller;
-    if (!worker) return;
-    const { version } = await ask(worker, { type: 'conecurl-version' });
-    const key = `conecurl-reloaded ${mine} for ${version}`;
-    if (!version || version === mine || sessionStorage.getItem(key)) return;
-    sessionStorage.setItem(key, '1');
-    location.reload();
-  };
-  container.addEventListener('controllerchange', check);
-  check();
+  const registration = await container.getRegistration().catch(() => null);
+  const worker = registration?.waiting ?? container.controller;
+  if (!worker) return;
+  const { version } = await ask(worker, { type: 'conecurl-version' });
+  const key = `conecurl-reloaded ${mine} for ${version}`;
+  if (!version || version === mine || sessionStorage.getItem(key)) return;
+  sessionStorage.setItem(key, '1');
+  location.reload();
 }
-reloadOnUpdate();
+navigator.serviceWorker?.addEventListener('controllerchange', reloadIfStale);
+reloadIfStale();
 
 /**
  * The service worker's registration once it controls the page and keeps what it read; null where there

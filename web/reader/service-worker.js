@@ -84,10 +84,25 @@ async function cacheFirst(file, request = null) {
   return response;
 }
 
+/**
+ * While a newer publish's worker is installed and waiting, this one answers from the server (from its own
+ * cache offline): Chromium can hold the new worker back for as long as a tab is open (an activation it
+ * abandons when a fetch reaches this worker at that moment), and a page reloaded meanwhile must get the
+ * new version, not this one's.
+ */
+async function fromServer(file, request) {
+  try {
+    return await (request.headers.has('range') ? fetch(request) : fetch(file, { cache: 'no-cache', credentials: 'same-origin' }));
+  } catch {
+    return cacheFirst(file, request);
+  }
+}
+
 self.addEventListener('fetch', (event) => {
   if (event.request.method !== 'GET') return;
   const file = siteFile(event.request);
-  if (file) event.respondWith(cacheFirst(file, event.request));
+  if (!file) return;
+  event.respondWith(self.registration.waiting ? fromServer(file, event.request) : cacheFirst(file, event.request));
 });
 
 /** Keep offline's question: every file of the site, its size, and whether this version's cache holds it. */
@@ -101,6 +116,7 @@ async function plan() {
  * those of the site kept as if read through this worker. Answers how many of the site's it holds.
  */
 async function keepRead(urls) {
+  if (self.registration.waiting) return { kept: 0 };  // stepping aside: the newer worker keeps what is read
   const files = [...new Set(urls.map((url) => siteFile({ url, mode: 'cors' })).filter(Boolean))];
   const kept = await Promise.all(files.map((file) => cacheFirst(file).then((response) => response.ok, () => false)));
   return { kept: kept.filter(Boolean).length };
@@ -108,6 +124,11 @@ async function keepRead(urls) {
 
 // The page's questions, each answered on the port it sent.
 self.addEventListener('message', (event) => {
+  // The reader's, while this worker waits and an older one still controls its page (reader.js).
+  if (event.data?.type === 'conecurl-skip-waiting') {
+    event.waitUntil(self.skipWaiting());
+    return;
+  }
   const port = event.ports?.[0];
   const answer = {
     'conecurl-version': async () => ({ version: SITE.version }),
