@@ -297,9 +297,11 @@ test('browser: no visible jump when a live HTML page gives way to its texture: t
     return { x: c.left + p.x, y: c.top + p.y, width: p.width, height: p.height };
   });
   const clip = { x: Math.ceil(place.x) + 1, y: Math.ceil(place.y) + 1, width: Math.floor(place.width) - 2, height: Math.floor(place.height) - 2 };
-  const liveShot = await page.screenshot({ clip });
+  // caret 'initial': by default a screenshot styles every <input> (caret-color) for its moment, a change
+  // the page draws its texture again for; one drawn while its sheet is hidden here would be blank paper.
+  const liveShot = await page.screenshot({ clip, caret: 'initial' });
   await page.evaluate(() => { document.querySelector('.conecurl-html-page').style.visibility = 'hidden'; });
-  const textureShot = await page.screenshot({ clip });
+  const textureShot = await page.screenshot({ clip, caret: 'initial' });
   // Both pictures kept with the result (test-results/), so a failure can be looked at.
   await test.info().attach('live', { body: liveShot, contentType: 'image/png' });
   await test.info().attach('texture', { body: textureShot, contentType: 'image/png' });
