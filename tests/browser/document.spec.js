@@ -84,13 +84,20 @@ test('browser: pageThumbnail() of image pages decodes them small, draws at most 
   expect(new Set(result.sizes)).toEqual(new Set(['40x50']));
 });
 
-test('browser: toggleFullscreen() enters and leaves fullscreen on the book\'s container, with fullscreenchange, and the book laid out sharp at the new size', async ({ page }) => {
+test('browser: toggleFullscreen() enters and leaves fullscreen on the book\'s container, asking the browser within the press, with fullscreenchange, and the book laid out sharp at the new size', async ({ page }) => {
   await openPdfBook(page);
   await page.evaluate(() => {
     const button = document.createElement('button');
     button.id = 'fullscreen';
     button.textContent = 'Fullscreen';
-    button.addEventListener('click', () => { window.entering = window.book.toggleFullscreen(); });
+    // Counted: the browser grants the request only within the press, so it is made before the call returns.
+    window.requests = 0;
+    const request = window.container.requestFullscreen;
+    window.container.requestFullscreen = function (...args) { window.requests += 1; return request.apply(this, args); };
+    button.addEventListener('click', () => {
+      window.entering = window.book.toggleFullscreen();
+      window.requestedInPress = window.requests;
+    });
     document.body.append(button);
     window.events = [];
     window.book.addEventListener('fullscreenchange', (e) => window.events.push(e.detail.fullscreen));
@@ -102,11 +109,12 @@ test('browser: toggleFullscreen() enters and leaves fullscreen on the book\'s co
     const size = await window.resized;
     await new Promise((resolve) => requestAnimationFrame(resolve));
     const canvas = window.book.element.querySelector('canvas');
-    return { answer, fullscreen: window.book.fullscreen, element: document.fullscreenElement === window.container, events: window.events.slice(),
+    return { answer, requestedInPress: window.requestedInPress, fullscreen: window.book.fullscreen, element: document.fullscreenElement === window.container, events: window.events.slice(),
       size, buffer: [canvas.width, canvas.height], css: [canvas.clientWidth * devicePixelRatio, canvas.clientHeight * devicePixelRatio],
       screen: [innerWidth, innerHeight] };
   });
   expect(entered.answer).toBe(true);
+  expect(entered.requestedInPress).toBe(1);
   expect(entered.fullscreen).toBe(true);
   expect(entered.element).toBe(true);
   expect(entered.events).toEqual([true]);

@@ -1,48 +1,6 @@
-// What a reader does with the whole document: fullscreen (the Fullscreen API on the book's container,
-// so a toolbar in it goes along), download (the `download` option's URL, else the document's PDF) and print (the
-// pages rendered to images in a hidden frame). download and print first fire a cancelable event, so a
-// host can do it its own way. Loaded by the first call of any of them.
-
-/** Whether `container` is the fullscreen element of its document (or shadow root). */
-export function isFullscreen(container) {
-  return (container.getRootNode().fullscreenElement ?? null) === container;
-}
-
-/**
- * Follows `container` in and out of fullscreen (by toggleFullscreen() or the browser: Escape), and
- * tells `changed(fullscreen)` each time it finds the container's state changed. It looks at the browser's
- * fullscreenchange events and when `look()` is called: Chrome changes the state at once (requestFullscreen()
- * resolves) but sends its event frames later, so a container that left before the event of its entry
- * came would be neither entered nor left by the events alone. Returns { look(), stop() }.
- */
-export function followFullscreen(container, changed) {
-  const doc = container.ownerDocument;
-  let was = isFullscreen(container);
-  const look = () => {
-    const now = isFullscreen(container);
-    if (now !== was) {
-      was = now;
-      changed(now);
-    }
-  };
-  doc.addEventListener('fullscreenchange', look);
-  return { look, stop: () => doc.removeEventListener('fullscreenchange', look) };
-}
-
-/** Enters (force true), leaves (false) or toggles fullscreen; resolves with whether the container is fullscreen. */
-export async function toggleFullscreen(container, force) {
-  if (force !== undefined && typeof force !== 'boolean') {
-    throw new TypeError(`conecurl: toggleFullscreen() takes true, false or nothing; got ${String(force)}`);
-  }
-  const want = force ?? !isFullscreen(container);
-  if (want && !isFullscreen(container)) {
-    if (typeof container.requestFullscreen !== 'function') throw new Error('conecurl: this browser has no Fullscreen API');
-    await container.requestFullscreen();
-  } else if (!want && isFullscreen(container)) {
-    await container.ownerDocument.exitFullscreen();
-  }
-  return isFullscreen(container);
-}
+// What a reader does with the whole document: download (the `download` option's URL, else the document's
+// PDF) and print (the pages rendered to images in a hidden frame). Each first fires a cancelable event, so a
+// host can do it its own way. Loaded by the first call of either (fullscreen is fullscreen.js: it cannot wait).
 
 /**
  * The URL download() fetches: the `download` option, else the document's (a PDF's URL or bytes as a

@@ -1,11 +1,12 @@
 // How the document API (outline, search and its marks, thumbnails, fullscreen, download, print) and
-// the viewer (`controls`) are wired to a book from its port, each module imported on first use.
+// the viewer (`controls`) are wired to a book from its port, each module imported on first use (but fullscreen's).
 import { markedPageImage } from '../pages/marked-page.js';
+import { followFullscreen, toggleFullscreen } from './fullscreen.js';
 
 /**
  * The document API (issue 23): outline(), search() and its marks, pageThumbnail(), fullscreen,
- * download() and print(), each module imported on first use; a PDF's text is indexed in the background
- * once the book is open (indexInBackground). `controller` is the book, for its events.
+ * download() and print(), each module imported on first use (fullscreen's is here already); a PDF's
+ * text is indexed in the background once the book is open (indexInBackground). `controller` is the book, for its events.
  * @param {import('../book/book-wiring.js').BookPort} book
  */
 export function makeDocumentApi(controller, book) {
@@ -13,7 +14,7 @@ export function makeDocumentApi(controller, book) {
   let searchLoading = null;
   let textIndex = null;
   let thumbnails = null;
-  let fullscreen = null;  // book-document.js followFullscreen(), from the first toggleFullscreen()
+  let fullscreen = null;  // fullscreen.js followFullscreen(), from the first toggleFullscreen()
   let stopped = false;
   const documentModule = () => import('./book-document.js');
   const documentIndex = async () => {
@@ -47,8 +48,8 @@ export function makeDocumentApi(controller, book) {
       return marks.length > 0 ? markedPageImage(image, marks) : image;
     },
     thumbnail: async (index, size) => (await drawer()).draw(index, size),
+    // The request is made before anything is awaited: the browser grants it only within the press.
     toggleFullscreen: async (force) => {
-      const { followFullscreen, toggleFullscreen } = await documentModule();
       book.alive();
       fullscreen ??= followFullscreen(book.container, (now) => {
         book.emit('fullscreenchange', { fullscreen: now });
