@@ -103,7 +103,7 @@ export function writeWebApp({ out, title, lang, written, icons, shell, skip = []
   if (written.has(INDEX)) {
     const page = fs.readFileSync(path.join(out, INDEX), 'utf8');
     if (!page.includes(VERSION_SLOT)) throw new Error(`${INDEX} has no ${VERSION_SLOT}: the reader could not tell a new publish's worker`);
-    const filled = page.replace(VERSION_SLOT, `<meta name="conecurl-site-version" content="${version}">`);
+    const filled = page.replace(VERSION_SLOT, VERSION_SLOT.replace('content=""', `content="${version}"`));
     fs.writeFileSync(path.join(out, INDEX), filled);
     written.get(INDEX).bytes = Buffer.byteLength(filled);
     hashes.set(INDEX, contentHash(path.join(out, INDEX)));
