@@ -135,8 +135,10 @@ async function reloadIfStale() {
   sessionStorage.setItem(key, '1');
   location.reload();
 }
-navigator.serviceWorker?.addEventListener('controllerchange', reloadIfStale);
-reloadIfStale();
+if (main.dataset.document) {  // a published site's page: only those have a worker of the site's
+  navigator.serviceWorker?.addEventListener('controllerchange', reloadIfStale);
+  reloadIfStale();
+}
 
 /**
  * The service worker's registration once it controls the page and keeps what it read; null where there
