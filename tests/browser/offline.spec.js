@@ -48,6 +48,20 @@ async function openBook(page, site) {
   }, READER_ENTRY);
 }
 
+/** Opens the site of `kind` (published first as `title`, when given) and its book; returns its name and URL. */
+async function openSite(page, kind, title) {
+  const name = siteName(kind);
+  const site = siteUrl(name);
+  if (title) publish(name, title);
+  await page.goto(`${site}index.html`);
+  expect(await openBook(page, site)).toBe(true);
+  return { name, site };
+}
+
+const VERSION_META = /<meta name="conecurl-site-version" content="([0-9a-f]{16})">/;
+/** The version conecurl publish wrote into the site's index.html. */
+const versionOf = (name) => readFileSync(path.join(SITES, name, 'index.html'), 'utf8').match(VERSION_META)[1];
+
 /** Turns to the next spread; resolves to the open pages' states once their images are in. */
 const turnNext = (page) => page.evaluate(async () => {
   const turned = new Promise((resolve) => window.book.addEventListener('turned', resolve, { once: true }));
@@ -68,9 +82,7 @@ test('browser: once loaded online, the published site reads offline: a reload of
   await page.setViewportSize({ width: 390, height: 844 });  // a phone's screen, for the picture below
   const problems = [];
   page.on('pageerror', (error) => problems.push(error.message));
-  const site = siteUrl(siteName('read'));
-  await page.goto(`${site}index.html`);
-  expect(await openBook(page, site)).toBe(true);
+  const { site } = await openSite(page, 'read');
 
   await context.setOffline(true);
   await page.reload();
@@ -92,9 +104,7 @@ test('browser: once loaded online, the published site reads offline: a reload of
 });
 
 test('browser: Keep offline in the More menu says the size it will fetch, fetches the whole book with progress, and then the site opens offline from its start_url at a page never read (needs conecurl publish, service workers)', async ({ page, context }) => {
-  const site = siteUrl(siteName('keep'));
-  await page.goto(`${site}index.html`);
-  expect(await openBook(page, site)).toBe(true);
+  const { site } = await openSite(page, 'keep');
   const before = await plan(page);
   const left = before.files.filter((file) => !file.kept);
   const lastPage = new URL(`${site}book/pages/0008.webp`, page.url()).href;
@@ -133,9 +143,7 @@ test('browser: Keep offline in the More menu says the size it will fetch, fetche
 });
 
 test('browser: the published site meets Chromium\'s install criteria: the manifest\'s name, start_url, scope, display and icons, the icons\' sizes, a service worker (needs conecurl publish, service workers)', async ({ page, context }) => {
-  const site = siteUrl(siteName('install'));
-  await page.goto(`${site}index.html`);
-  expect(await openBook(page, site)).toBe(true);
+  const { site } = await openSite(page, 'install');
   const manifestUrl = await page.evaluate(() => document.querySelector('link[rel="manifest"]').href);
   expect(new URL(manifestUrl).pathname).toBe(`${site}manifest.webmanifest`);
   const manifest = await (await page.request.get(manifestUrl)).json();
@@ -160,11 +168,7 @@ test('browser: the published site meets Chromium\'s install criteria: the manife
 });
 
 test('browser: a re-publish replaces the site online: the new version\'s worker takes over, the page loads again with the new book, the pages read move to the new cache where unchanged, and the old version\'s cache is deleted (needs conecurl publish twice, service workers)', async ({ page }) => {
-  const name = siteName('update');
-  const site = siteUrl(name);
-  publish(name, 'First edition');
-  await page.goto(`${site}index.html`);
-  expect(await openBook(page, site)).toBe(true);
+  const { name, site } = await openSite(page, 'update', 'First edition');
   const caches = () => page.evaluate((prefix) => caches.keys().then((names) => names.filter((n) => n.startsWith(prefix))), CACHE_PREFIX);
   const first = await caches();
   expect(first).toHaveLength(1);
@@ -204,11 +208,7 @@ test('browser: a re-publish replaces the site online: the new version\'s worker 
 });
 
 test('browser: a page of one version under another version\'s worker from its first moment (a new worker that took over before the reader ran: no controllerchange to hear) loads again once, and a server still sending it cannot make it loop (needs conecurl publish, service workers)', async ({ page }) => {
-  const name = siteName('stale');
-  const site = siteUrl(name);
-  publish(name, TITLE);
-  await page.goto(`${site}index.html`);
-  expect(await openBook(page, site)).toBe(true);
+  const { name, site } = await openSite(page, 'stale', TITLE);
   // A page the worker does not serve (no file of the site): the server's copy, with another version in it,
   // controlled by this version's worker from its start.
   const index = readFileSync(path.join(SITES, name, 'index.html'), 'utf8');
@@ -228,17 +228,13 @@ test('browser: a page of one version under another version\'s worker from its fi
     channel.port1.onmessage = ({ data }) => setTimeout(() => resolve(data.version));
     navigator.serviceWorker.controller.postMessage({ type: 'conecurl-version' }, [channel.port2]);
   }));
-  expect(version).toBe(index.match(/<meta name="conecurl-site-version" content="([0-9a-f]{16})">/)[1]);
+  expect(version).toBe(versionOf(name));
   expect(loads).toBe(2);
   expect(await page.evaluate(() => window.book.pageCount)).toBeGreaterThan(0);
 });
 
 test('browser: a reload pressed as a re-publish is found shows the new edition, even while Chromium holds the new worker back (the old one steps aside while a new one waits) (needs conecurl publish twice, service workers)', async ({ page }) => {
-  const name = siteName('reload');
-  const site = siteUrl(name);
-  publish(name, 'First edition');
-  await page.goto(`${site}index.html`);
-  expect(await openBook(page, site)).toBe(true);
+  const { name } = await openSite(page, 'reload', 'First edition');
   publish(name, 'Second edition');
   // The reload is answered by the first version's worker; the new one installs while the page loads
   // through the old one, and the page, told a worker of another version is there, loads again.
@@ -246,5 +242,5 @@ test('browser: a reload pressed as a re-publish is found shows the new edition, 
   await expect(page).toHaveTitle('Second edition', { timeout: 60_000 });
   await page.evaluate(async (entry) => { await (await import(document.querySelector(entry).src)).book; }, READER_ENTRY);
   expect(await page.evaluate(() => document.querySelector('meta[name="conecurl-site-version"]').content))
-    .toBe(readFileSync(path.join(SITES, name, 'index.html'), 'utf8').match(/<meta name="conecurl-site-version" content="([0-9a-f]{16})">/)[1]);
+    .toBe(versionOf(name));
 });
