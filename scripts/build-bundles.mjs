@@ -34,11 +34,20 @@ const LAZY = [
   { name: 'search', test: /[\\/]web[\\/]src[\\/](document[\\/](book-search|text-index)|layers[\\/]search-hits)\.js$/ },
   { name: 'html-pages', test: /([\\/]web[\\/]src[\\/]layers[\\/]html-pages\.js|[\\/]node_modules[\\/]modern-screenshot[\\/])/ },
   { name: 'static-book', test: /[\\/]web[\\/]src[\\/]book[\\/]static-book\.js$/ },
+  // What the book builds once its first spread is drawn (book-controller.js _buildAfterFirstDraw): input, the
+  // toolbar, a document's text layer, the edge marks. Not what comes before: the viewer's options and the
+  // toolbar's room, the keys the book's element names (input-keys.js), the turn area the options check.
+  { name: 'after-first-spread', test: /[\\/]web[\\/]src[\\/](viewer[\\/](?!viewer-options|viewer-labels|toolbar-room|keep-offline)[\w-]+|input[\\/](book-input|input-taps|pointer-drag|tap-swipe|zoom-input)|layers[\\/](text-layer|edge-tabs)|document[\\/]edge-marks)\.js$/ },
   // What a book does only when asked: live pages, autoplay, the page sound, a passage's link, download and
   // print, Keep offline (loaded once a service worker controls the page).
   { name: 'features', test: /[\\/]web[\\/]src[\\/](book[\\/](live-pages|autoplay|page-sound)|document[\\/](passage-link|book-document)|viewer[\\/]keep-offline)\.js$/ },
 ];
 const isLazy = (id) => LAZY.some((group) => group.test.test(id));
+
+// A module imported by import() only when an option asks for it (so that a page of source modules fetches it
+// only then) that another module imports statically (the viewer's options, the toolbar's room) stays in
+// whichever chunk that puts it in: as meant, so rolldown's note on it is not passed on.
+const onLog = (level, log, pass) => { if (log.code !== 'INEFFECTIVE_DYNAMIC_IMPORT') pass(level, log); };
 
 /**
  * The modules the entry reaches without passing through a lazy group's module (static and dynamic
@@ -79,6 +88,7 @@ async function buildReader() {
     external: EXTERNAL,
     preserveEntrySignatures: 'allow-extension',  // the reader's `book` stays exported; its chunk may take shared code too
     logLevel: 'warn',
+    onLog,
     // The engine's glue finds its wasm by new URL('conecurl-engine.wasm', import.meta.url): emitted as a
     // hashed asset beside the chunks, its name written into the glue.
     experimental: { resolveNewUrlToAsset: true },
@@ -138,6 +148,7 @@ async function buildCdn() {
     input: path.join(root, 'web/src/cdn.js'),
     external: EXTERNAL,
     logLevel: 'warn',
+    onLog,
     output: { file: path.join(dir, 'conecurl.js'), format: 'es', minify: true, codeSplitting: false },
   });
   fs.copyFileSync(path.join(root, 'dist/conecurl-engine.wasm'), path.join(dir, 'conecurl-engine.wasm'));

@@ -87,6 +87,36 @@ test('browser: edgeMarks: true loads the edge marks and their buttons, and only 
   expect(problems).toEqual([]);
 });
 
+test('browser: with controls, the first spread is drawn before the toolbar, the input modules and the edge marks are asked for; the book keeps the toolbar\'s room from the start (request times, heights)', async ({ page }) => {
+  const problems = await openReady(page, FIXTURE);
+  const seen = await page.evaluate(async () => {
+    // The first drawNow() (loadFirstView's: the first spread on screen) and the book's height then.
+    const { BookView } = await import('/web/src/surfaces/book-view.js');
+    const drawNow = BookView.prototype.drawNow;
+    let first = null;
+    BookView.prototype.drawNow = function () {
+      first ??= { at: performance.now(), height: this.canvas.getBoundingClientRect().height };
+      return drawNow.call(this);
+    };
+    try {
+      await window.openBook({ pages: 6, display: 'double', controls: true });
+    } finally {
+      BookView.prototype.drawNow = drawNow;
+    }
+    const started = Object.fromEntries(performance.getEntriesByType('resource')
+      .map((entry) => [new URL(entry.name).pathname, entry.startTime]));
+    return { first, started, height: window.book.element.querySelector('canvas').getBoundingClientRect().height };
+  });
+  const late = ['/web/src/viewer/attach-controls.js', '/web/src/viewer/toolbar.js', '/web/src/input/book-input.js',
+    '/web/src/input/pointer-drag.js', '/web/src/document/edge-marks.js'];
+  for (const path of late) {
+    expect(seen.started[path], `${path} was fetched`).toBeGreaterThan(seen.first.at);
+  }
+  expect(seen.started['/web/src/viewer/toolbar-room.js']).toBeLessThan(seen.first.at);  // the room, before
+  expect(seen.height).toBe(seen.first.height);  // the toolbar came into the room kept for it: nothing moved
+  expect(problems).toEqual([]);
+});
+
 test('browser: hash: the first view opens at #page=N with page memory loaded only for it (module count)', async ({ page }) => {
   const modules = recordModules(page);
   const problems = await openReady(page, `${FIXTURE}#page=5`);

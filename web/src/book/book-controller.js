@@ -8,11 +8,11 @@ import { BookEvents } from './book-events.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { BookTurns } from './book-turns.js';
 import {
-  attachBookInput, followSurface, loadFirstView, loadOptionalParts, makeHtmlPages, makeLinkLayer, makeLivePages,
+  followSurface, loadCompanions, loadFirstView, loadLateParts, makeHtmlPages, makeLinkLayer, makeLivePages,
   makePageStore, makeZoom, openingPageOf, prefetchOpening, startCompanions, watchBookSize,
 } from './book-wiring.js';
 import { makeReadAloud } from './book-read-aloud.js';
-import { attachViewer, makeDocumentApi } from '../document/document-wiring.js';
+import { makeDocumentApi, planViewer } from '../document/document-wiring.js';
 import { MAX_ZOOM, displayFor, openPages } from '../engine/layout.js';
 
 const REFIT_DELAY_MS = 150;  // images are fitted to a new size or zoom once it has come to rest
@@ -236,10 +236,9 @@ export class BookController extends EventTarget {
     this._stopIfDestroyed();
     // HTML pages live over the canvas while they lie open (html-pages.js, loaded only for books that have them).
     const htmlPages = this._pages.some((entry) => entry.html) ? import('../layers/html-pages.js') : null;
-    const parts = loadOptionalParts(this._port, this._links.element);  // imported while the toolbar is
-    this._controls = await attachViewer(this, this._port);  // the toolbar first: the book fits the rest of its box
-    if (this._destroyed) this._controls?.remove();  // made as destroy() ran: it found none to remove
-    const [companionModules, EdgeMarks] = await Promise.all([parts.companions, parts.edgeMarks]);
+    // The toolbar's options checked and its room kept now (the toolbar itself comes after the first spread);
+    // page memory says where the book opens.
+    const [viewer, companionModules] = await Promise.all([planViewer(this, this._port), loadCompanions(this._settings)]);
     this._stopIfDestroyed();
     const { width, height } = this._shell.root.getBoundingClientRect();
     this._layoutSize = { width, height };
@@ -250,28 +249,42 @@ export class BookController extends EventTarget {
     const HtmlPages = htmlPages && (await htmlPages).HtmlPages;
     this._stopIfDestroyed();
     if (HtmlPages) this._mountHtml(HtmlPages);
-    this._text = await parts.text;  // a document's selectable text, under the links
-    if (this._destroyed) this._text?.remove();
-    this._stopIfDestroyed();
-    if (this._text) this._layers.splice(this._layers.indexOf(this._links), 0, this._text);
     const surface = await this._makeSurface(display);  // Flipbook's waits for the engine, and makes none once destroyed
     if (this._destroyed) surface.destroy({ releaseContext: true });  // made as destroy() ran
     this._stopIfDestroyed();
     this._surface = surface;
     followSurface(this._port);  // the pages a moving leaf shows, images lost with a context
-    if (EdgeMarks) this._layers.push(new EdgeMarks(this, this._port));  // tabs and ticks on the fore-edge
     this._surface.jumpTo(this._surface.positionOfPage(opening));
-    this._input = attachBookInput(this._port);
     this._stopWatchingSize = watchBookSize(this._port, this._layoutSize);
     this._showOpenPages();
     this._store.update();
     const companions = startCompanions(this, this._port, companionModules);  // page memory, autoplay, the page sound
     this._sound = companions.sound;
     this._stopCompanions = companions.stop;
-    await loadFirstView(this._port);  // its pages on screen, drawn, then their neighbours
+    // Its pages on screen, drawn; then their neighbours, and what the first spread did not need.
+    await loadFirstView(this._port, () => this._buildAfterFirstDraw(viewer));
     this._stopIfDestroyed();
     this._emit('ready', { page: this.page });
     this._doc.indexInBackground();  // a PDF's text, for search, in idle time from now on
+  }
+
+  // Once the first spread is drawn: input, the toolbar (in the room kept for it), a document's selectable
+  // text under the links, and the edge marks, imported only now; then laid over the open pages.
+  async _buildAfterFirstDraw(viewer) {
+    const parts = loadLateParts(this._port, this._links.element);
+    const [input, controls, text, EdgeMarks] = await Promise.all([parts.input, viewer.attach(), parts.text, parts.edgeMarks]);
+    if (this._destroyed) {  // made as destroy() ran: it found none to remove
+      input?.stop();
+      controls?.remove();
+      text?.remove();
+    }
+    this._stopIfDestroyed();
+    this._input = input;
+    this._controls = controls;
+    this._text = text;
+    if (text) this._layers.splice(this._layers.indexOf(this._links), 0, text);
+    if (EdgeMarks) this._layers.push(new EdgeMarks(this, this._port));  // tabs and ticks on the fore-edge
+    this._showOpenPages();
   }
 
   // The book draws on a fresh canvas in place of its own (Flipbook: the context its canvas was given is not the one wanted).

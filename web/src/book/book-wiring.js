@@ -8,7 +8,6 @@ import { watchSize } from './size-watch.js';
 import { PageStore } from '../pages/page-store.js';
 import { createLinkLayer } from '../layers/link-layer.js';
 import { turnsAt } from '../input/turn-area.js';
-import { attachInput } from '../input/book-input.js';
 import { positionOfPage } from '../engine/layout.js';
 
 /**
@@ -160,8 +159,13 @@ export function followSurface(book) {
   };
 }
 
-/** The input modules (book-input.js), told what they may do; input after destroy() is dropped. @param {BookPort} book */
-export function attachBookInput(book) {
+/**
+ * The input modules (book-input.js, imported now: the book attaches them once its first spread is drawn),
+ * told what they may do; input after destroy() is dropped. Null once destroyed. @param {BookPort} book
+ */
+export async function attachBookInput(book) {
+  const { attachInput } = await import('../input/book-input.js');
+  if (book.destroyed()) return null;
   const zoom = book.zoom();
   const { settings } = book;
   return attachInput({
@@ -252,28 +256,30 @@ export function prefetchOpening(book, display, opening) {
 /**
  * The first view: its pages on screen load alone and are drawn, then their neighbours load (the store
  * held them back: on a slow network the first spread shares its bandwidth with no page it does not
- * show). Resolves once all have loaded or failed.
+ * show), while `afterDraw()` (a promise: what the book builds once its first spread is on screen) runs.
+ * Resolves once all have loaded or failed, and afterDraw's promise has.
  * @param {BookPort} book
  */
-export async function loadFirstView(book) {
+export async function loadFirstView(book, afterDraw = async () => {}) {
   await book.store().whenIdle();
   try {
     book.surface().drawNow?.();  // the first spread on screen now, before anything else is fetched
   } catch {
     // A context lost meanwhile draws once it is back; the neighbours load all the same.
   }
+  const after = afterDraw();
   book.store().releaseFirstView();
-  await book.store().whenIdle();
+  await Promise.all([book.store().whenIdle(), after]);
 }
 
 /**
- * The optional parts the options ask for, all imported at once: page memory, autoplay and the page sound
- * (`companions`), the edge marks (`edgeMarks`) and a document's text layer (`text`, under `before`).
- * Each a promise; a failure is thrown where it is awaited.
+ * What the book builds once its first spread is drawn, imported at once (none of it is needed to show the
+ * first spread, so none of it is fetched before): its input (`input`, attached), the edge marks
+ * (`edgeMarks`) and a document's text layer (`text`, under `before`). Each a promise; a failure is thrown where it is awaited.
  * @param {BookPort} book
  */
-export function loadOptionalParts(book, before) {
-  const parts = { companions: loadCompanions(book.settings), edgeMarks: loadEdgeMarks(book.settings), text: loadTextLayer(book, before) };
+export function loadLateParts(book, before) {
+  const parts = { input: attachBookInput(book), edgeMarks: loadEdgeMarks(book.settings), text: loadTextLayer(book, before) };
   for (const loading of Object.values(parts)) Promise.resolve(loading).catch(() => {});
   return parts;
 }

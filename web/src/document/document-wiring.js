@@ -81,14 +81,26 @@ export function makeDocumentApi(controller, book) {
 }
 
 /**
- * The viewer (the `controls` option): its module loaded only now, attached to `controller` through its
- * public API as conecurl/viewer's attachControls is; null without `controls` or once destroyed.
+ * The viewer (the `controls` option), in two steps: planViewer() checks its options and keeps the toolbar's
+ * room before the first spread is laid out; its attach() imports the viewer (after the first spread is
+ * drawn: none of it is needed to show it) and attaches it to `controller` through its public API, as
+ * conecurl/viewer's attachControls is; null without `controls` or once destroyed. A bad `controls` or
+ * `labels` rejects planViewer(), before anything is drawn.
  * @param {import('../book/book-wiring.js').BookPort} book
  */
-export async function attachViewer(controller, book) {
+export async function planViewer(controller, book) {
   const { controls, labels } = book.settings;
-  if (!controls) return null;
-  const { attachControls } = await import('../viewer/attach-controls.js');
-  if (book.destroyed()) return null;
-  return attachControls(controller, { controls, labels, pdf: book.isDocument() });
+  if (!controls) return { attach: async () => null };
+  // Small, and in the first spread's chunk when bundled; only a book with controls asks for them.
+  const [{ checkViewerOptions }, { keepToolbarRoom }] = await Promise.all([import('../viewer/viewer-options.js'), import('../viewer/toolbar-room.js')]);
+  checkViewerOptions(controls, labels ?? {});
+  const giveBack = keepToolbarRoom(book.root);
+  return {
+    attach: async () => {
+      const { attachControls } = await import('../viewer/attach-controls.js');
+      if (book.destroyed()) return null;
+      giveBack();  // in the same task: attachControls keeps the book's own height and sets the toolbar's room again
+      return attachControls(controller, { controls, labels, pdf: book.isDocument() });
+    },
+  };
 }

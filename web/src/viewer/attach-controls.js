@@ -6,11 +6,12 @@
 import { MAX_ZOOM } from '../engine/layout.js';
 import { languageOf } from '../engine/language.js';
 import { viewerLabels } from './viewer-labels.js';
-import { checkControls, checkLabels, shownParts } from './viewer-options.js';
+import { checkViewerOptions, shownParts } from './viewer-options.js';
 import { installViewerStyle } from './viewer-style.js';
 import { createToolbar } from './toolbar.js';
 import { createPanel } from './panel.js';
 import { canFullscreen, readingMode } from './reading-mode.js';
+import { BOOK_HEIGHT } from './toolbar-room.js';
 
 const ZOOM_STEP = 0.5;
 const NARROW = 600;         // CSS px: below, icons only and panels as sheets from the bottom
@@ -31,10 +32,7 @@ const PANEL_KINDS = {
  * (Download and Print are shown). Returns { element, toolbar, panels, remove() }.
  */
 export function attachControls(book, { controls = true, labels = {}, pdf = false } = {}) {
-  for (const [name, value, check] of [['controls', controls, checkControls], ['labels', labels, checkLabels]]) {
-    const verdict = check(value);
-    if (verdict !== true) throw new TypeError(`conecurl: attachControls option '${name}' must be ${verdict}`);
-  }
+  checkViewerOptions(controls, labels);
   const container = book.element.parentElement;
   const text = viewerLabels(labels);
   const parts = shownParts(controls, { pdf, downloadUrl: typeof book.options.download === 'string' });
@@ -127,7 +125,6 @@ export function attachControls(book, { controls = true, labels = {}, pdf = false
   // side sheet, and in reading mode to either. The book fits itself to its new box (its size watch).
   const given = book.element.style;
   const bookStyle = { height: given.height, width: given.width, marginLeft: given.marginLeft, marginBottom: given.marginBottom };
-  const BOOK_HEIGHT = 'calc(100% - var(--conecurl-toolbar-height, 44px))';
   function layout() {
     const width = viewer.clientWidth;
     const narrow = width < NARROW;

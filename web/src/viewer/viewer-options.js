@@ -25,6 +25,14 @@ export function checkLabels(value) {
     || `an object of texts by key (${LABEL_KEYS.join(', ')}), each a non-empty string`;
 }
 
+/** Throws a TypeError naming the option, where `controls` or `labels` is not what it allows. */
+export function checkViewerOptions(controls, labels) {
+  for (const [name, value, check] of [['controls', controls, checkControls], ['labels', labels, checkLabels]]) {
+    const verdict = check(value);
+    if (verdict !== true) throw new TypeError(`conecurl: attachControls option '${name}' must be ${verdict}`);
+  }
+}
+
 /**
  * The parts shown for a `controls` value: every part is on unless set false, except Download (on
  * for a PDF or a `download` URL) and Print (on for a PDF), which `{ download: true }` or `{ print: true }` shows anyway,
