@@ -501,15 +501,21 @@ test('browser: a <cone-flipbook> removed from the document while the engine stil
   expect(result).toEqual({ contexts: 0, book: null, box: 0, canvases: 0 });
 });
 
-/** Loses the book's WebGL context (WEBGL_lose_context) and resolves once it is lost. */
-function loseContext(page) {
-  return page.evaluate(async () => {
+/**
+ * Loses the book's WebGL context (WEBGL_lose_context) and resolves once it is lost. With `rhoPast`, it
+ * loses it in the animation frame where the leaf in flight has turned past that rotation, so the turn is
+ * still in flight when it is lost however long the machine stalls between two steps of the test.
+ */
+function loseContext(page, { rhoPast = null } = {}) {
+  return page.evaluate(async (rhoPast) => {
     const canvas = window.book.surface.canvas;
     window.loseExtension = canvas.getContext('webgl2').getExtension('WEBGL_lose_context');  // the book's own context
     const lost = new Promise((resolve) => canvas.addEventListener('webglcontextlost', resolve, { once: true }));
+    const flying = () => window.book.surface.book.frame().find((leaf) => !leaf.resting)?.curl.rho ?? 0;
+    if (rhoPast !== null) await new Promise((resolve) => requestAnimationFrame(function look() { return flying() > rhoPast ? resolve() : requestAnimationFrame(look); }));
     window.loseExtension.loseContext();
     await lost;
-  });
+  }, rhoPast);
 }
 
 /** Restores it, in a later task (Chrome ignores a restore in the task that lost it), and waits a frame. */
@@ -545,9 +551,9 @@ test('browser: a WebGL context lost mid-turn pauses the turn; on restore every t
     window.turning = window.book.next();
     window.queued = window.book.next();  // asked during the turn: it waits its turn
   });
-  await page.waitForFunction(() => (window.book.surface.book.frame().find((leaf) => !leaf.resting)?.curl.rho ?? 0) > 0.3);
-  await loseContext(page);
+  await loseContext(page, { rhoPast: 0.3 });
   const pausedAt = await flyingRho(page);
+  expect(pausedAt, 'lost with the first turn in flight').toBeGreaterThan(0.3);
   // The container is resized meanwhile: the book lays out and asks for a frame, which must not run the clock.
   await page.evaluate(() => { document.getElementById('container').style.width = '620px'; });
   await page.waitForFunction(() => window.events.some((e) => e.type === 'resize' && e.detail.width === 620));
