@@ -34,7 +34,7 @@ const LAZY = [
   { name: 'search', test: /[\\/]web[\\/]src[\\/](document[\\/](book-search|text-index)|layers[\\/]search-hits)\.js$/ },
   { name: 'html-pages', test: /([\\/]web[\\/]src[\\/]layers[\\/]html-pages\.js|[\\/]node_modules[\\/]modern-screenshot[\\/])/ },
   { name: 'static-book', test: /[\\/]web[\\/]src[\\/]book[\\/]static-book\.js$/ },
-  // What the book builds once its first spread is drawn (book-controller.js _buildAfterFirstDraw): input, the
+  // What the book builds once its first spread shows (book-controller.js _buildAfterFirstSpread): input, the
   // toolbar, a document's text layer, the edge marks. Not what comes before: the viewer's options and the
   // toolbar's room, the keys the book's element names (input-keys.js), the turn area the options check.
   { name: 'after-first-spread', test: /[\\/]web[\\/]src[\\/](viewer[\\/](?!viewer-options|viewer-labels|toolbar-room|keep-offline)[\w-]+|input[\\/](book-input|input-taps|pointer-drag|tap-swipe|zoom-input)|layers[\\/](text-layer|edge-tabs)|document[\\/]edge-marks)\.js$/ },

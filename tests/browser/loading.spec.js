@@ -87,33 +87,58 @@ test('browser: edgeMarks: true loads the edge marks and their buttons, and only 
   expect(problems).toEqual([]);
 });
 
-test('browser: with controls, the first spread is drawn before the toolbar, the input modules and the edge marks are asked for; the book keeps the toolbar\'s room from the start (request times, heights)', async ({ page }) => {
+test('browser: with controls, the first spread shows before the toolbar, the input modules and the edge marks are asked for; the book keeps the toolbar\'s room from the start (request times, heights)', async ({ page }) => {
   const problems = await openReady(page, FIXTURE);
   const seen = await page.evaluate(async () => {
-    // The first drawNow() (loadFirstView's: the first spread on screen) and the book's height then.
+    // When each page's picture first went to the surface, and the book's height at the first.
     const { BookView } = await import('/web/src/surfaces/book-view.js');
-    const drawNow = BookView.prototype.drawNow;
-    let first = null;
-    BookView.prototype.drawNow = function () {
-      first ??= { at: performance.now(), height: this.canvas.getBoundingClientRect().height };
-      return drawNow.call(this);
+    const setPageImage = BookView.prototype.setPageImage;
+    const uploaded = {};
+    let height = null;
+    BookView.prototype.setPageImage = function (index, ...rest) {
+      uploaded[index] ??= performance.now();
+      height ??= this.canvas.getBoundingClientRect().height;
+      return setPageImage.call(this, index, ...rest);
     };
     try {
       await window.openBook({ pages: 6, display: 'double', controls: true });
     } finally {
-      BookView.prototype.drawNow = drawNow;
+      BookView.prototype.setPageImage = setPageImage;
     }
     const started = Object.fromEntries(performance.getEntriesByType('resource')
       .map((entry) => [new URL(entry.name).pathname, entry.startTime]));
-    return { first, started, height: window.book.element.querySelector('canvas').getBoundingClientRect().height };
+    const shownAt = Math.max(...window.book.openPages.map((index) => uploaded[index]));
+    return { shownAt, height, started, after: window.book.element.querySelector('canvas').getBoundingClientRect().height };
   });
   const late = ['/web/src/viewer/attach-controls.js', '/web/src/viewer/toolbar.js', '/web/src/input/book-input.js',
     '/web/src/input/pointer-drag.js', '/web/src/document/edge-marks.js'];
   for (const path of late) {
-    expect(seen.started[path], `${path} was fetched`).toBeGreaterThan(seen.first.at);
+    expect(seen.started[path], `${path} was fetched`).toBeGreaterThan(seen.shownAt);
   }
-  expect(seen.started['/web/src/viewer/toolbar-room.js']).toBeLessThan(seen.first.at);  // the room, before
-  expect(seen.height).toBe(seen.first.height);  // the toolbar came into the room kept for it: nothing moved
+  expect(seen.started['/web/src/viewer/toolbar-room.js']).toBeLessThan(seen.shownAt);  // the room, before
+  expect(seen.after).toBe(seen.height);  // the toolbar came into the room kept for it: nothing moved
+  expect(problems).toEqual([]);
+});
+
+test('browser: a first page showing its placeholder while its image loads gets the toolbar and input then, not once the image lands (an image held back)', async ({ page }) => {
+  const problems = await openReady(page, FIXTURE);
+  await page.evaluate(() => {
+    let release;
+    const held = new Promise((resolve) => { release = resolve; });
+    window.release = release;
+    const pages = Array.from({ length: 6 }, (_, i) => window.makeNumberedPage(i));
+    pages[0] = { src: () => held.then(() => window.makeNumberedPage(0)), placeholder: window.makeNumberedPage(0, 32, 40) };
+    window.opening = window.openBook({ pages, display: 'single', controls: true });
+  });
+  // Without them until its image lands, this waits until the test's time runs out.
+  await page.waitForFunction(() => document.querySelector('[role="toolbar"]') !== null);
+  expect(await page.evaluate(() => performance.getEntriesByType('resource').some((entry) => entry.name.endsWith('/web/src/input/book-input.js')))).toBe(true);
+  const state = await page.evaluate(async () => {
+    window.release();
+    await window.opening;
+    return window.book.pageState(0).state;
+  });
+  expect(state).toBe('loaded');
   expect(problems).toEqual([]);
 });
 

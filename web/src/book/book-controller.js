@@ -261,16 +261,17 @@ export class BookController extends EventTarget {
     const companions = startCompanions(this, this._port, companionModules);  // page memory, autoplay, the page sound
     this._sound = companions.sound;
     this._stopCompanions = companions.stop;
-    // Its pages on screen, drawn; then their neighbours, and what the first spread did not need.
-    await loadFirstView(this._port, () => this._buildAfterFirstDraw(viewer));
+    // Its pages on screen, drawn; then their neighbours, and (once those on screen show) what they did not need.
+    await loadFirstView(this._port, () => this._buildAfterFirstSpread(viewer));
     this._stopIfDestroyed();
     this._emit('ready', { page: this.page });
     this._doc.indexInBackground();  // a PDF's text, for search, in idle time from now on
   }
 
-  // Once the first spread is drawn: input, the toolbar (in the room kept for it), a document's selectable
-  // text under the links, and the edge marks, imported only now; then laid over the open pages.
-  async _buildAfterFirstDraw(viewer) {
+  // Once the first spread shows (each page on screen its placeholder or image): input, the toolbar (in the
+  // room kept for it), a document's selectable text under the links, and the edge marks, imported only now;
+  // then laid over the open pages.
+  async _buildAfterFirstSpread(viewer) {
     const parts = loadLateParts(this._port, this._links.element);
     const [input, controls, text, EdgeMarks] = await Promise.all([parts.input, viewer.attach(), parts.text, parts.edgeMarks]);
     if (this._destroyed) {  // made as destroy() ran: it found none to remove

@@ -160,7 +160,7 @@ export function followSurface(book) {
 }
 
 /**
- * The input modules (book-input.js, imported now: the book attaches them once its first spread is drawn),
+ * The input modules (book-input.js, imported now: the book attaches them once its first spread shows),
  * told what they may do; input after destroy() is dropped. Null once destroyed. @param {BookPort} book
  */
 export async function attachBookInput(book) {
@@ -256,24 +256,26 @@ export function prefetchOpening(book, display, opening) {
 /**
  * The first view: its pages on screen load alone and are drawn, then their neighbours load (the store
  * held them back: on a slow network the first spread shares its bandwidth with no page it does not
- * show), while `afterDraw()` (a promise: what the book builds once its first spread is on screen) runs.
- * Resolves once all have loaded or failed, and afterDraw's promise has.
+ * show). `afterShown()` (a promise: what the book builds once its first spread is on screen) runs as soon
+ * as each page on screen shows a picture, its placeholder or its image. Resolves once all have loaded or
+ * failed, and afterShown's promise has.
  * @param {BookPort} book
  */
-export async function loadFirstView(book, afterDraw = async () => {}) {
+export async function loadFirstView(book, afterShown = async () => {}) {
+  const after = book.store().whenShown(book.surface().pagesOnScreen()).then(afterShown);
+  after.catch(() => {});  // a failure is thrown below, where it is awaited
   await book.store().whenIdle();
   try {
     book.surface().drawNow?.();  // the first spread on screen now, before anything else is fetched
   } catch {
     // A context lost meanwhile draws once it is back; the neighbours load all the same.
   }
-  const after = afterDraw();
   book.store().releaseFirstView();
   await Promise.all([book.store().whenIdle(), after]);
 }
 
 /**
- * What the book builds once its first spread is drawn, imported at once (none of it is needed to show the
+ * What the book builds once its first spread shows, imported at once (none of it is needed to show the
  * first spread, so none of it is fetched before): its input (`input`, attached), the edge marks
  * (`edgeMarks`) and a document's text layer (`text`, under `before`). Each a promise; a failure is thrown where it is awaited.
  * @param {BookPort} book

@@ -43,8 +43,12 @@ export class PageStore {
         const at = this._closed ? -1 : this._indexOf(entry, index);
         return at >= 0 && this._cache.stateOf(at) === 'loading' && !this._images.has(at) ? at : -1;
       },
-      shown: () => this._releaseExcess(),
+      shown: () => {
+        this._releaseExcess();
+        this._tellShown();
+      },
     });
+    this._shownWaiters = [];  // whenShown()'s: { shown(), resolve }
     this._reloads = new Map();  // page entry -> its reload running now (by entry: indices move as pages are spliced)
     this._firstView = new FirstView();  // its pages on screen load alone, their neighbours after
     this._closed = false;
@@ -60,6 +64,22 @@ export class PageStore {
   get progress() { return this._cache.progress; }
   /** Resolves once no page is loading. */
   whenIdle() { return this._cache.whenIdle(); }
+  /**
+   * Resolves once each of `pages` has a picture on the surface: its image, or its placeholder while the
+   * image loads; or once it failed (paper and a pageerror). What a first spread shows before it is sharp.
+   */
+  whenShown(pages) {
+    const shown = () => this._closed || pages.every((page) => ['loaded', 'failed'].includes(this._cache.stateOf(page))
+      || this._placeholders.pages().includes(page));
+    if (shown()) return Promise.resolve();
+    return new Promise((resolve) => this._shownWaiters.push({ shown, resolve }));
+  }
+
+  // A page took a picture or its load ended: whenShown()'s waiters that now hold are resolved.
+  _tellShown() {
+    this._shownWaiters = this._shownWaiters.filter(({ shown, resolve }) => (shown() ? (resolve(), false) : true));
+  }
+
   /** The first view is drawn: the pages near it load from now on (until now only its pages on screen did). */
   releaseFirstView() { this._firstView.release(); this.update(); }
 
@@ -230,6 +250,7 @@ export class PageStore {
     this._images.clear();
     this._placeholders.clear();
     this._cache.releaseWaiters();
+    this._tellShown();
   }
 
   _releaseExcess() {
@@ -300,6 +321,7 @@ export class PageStore {
       this._hooks.emit('pageerror', { index, ...failure });
     } finally {
       const progress = this._cache.endLoad();
+      this._tellShown();
       if (!this._closed) this._hooks.emit('progress', progress);
     }
   }
