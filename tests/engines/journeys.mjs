@@ -13,6 +13,7 @@ import pixelmatch from 'pixelmatch';
 import { cropPng, launchEngine, startDisplay, engineExecutables } from '../../scripts/engines.mjs';
 import { serveDirectory } from '../../scripts/serve.mjs';
 import { shownAtInPage as shownAt } from '../browser/shown-at.js';
+import { VELOCITY_WINDOW_MS } from '../../web/src/input/pointer-drag.js';
 import { documentJourneys } from './documents.mjs';
 import { readAloudJourneys, speechEnvironment } from './read-aloud.mjs';
 
@@ -205,9 +206,9 @@ export function engineSuite(engine) {
           turned: window.events.some((e) => e.type === 'turned'),
           gaps: window.strokeTimes.slice(1).map((t, i) => Math.round(t - window.strokeTimes[i])),
         }));
-        // Came as a fling: let go within the release's velocity window (100 ms, pointer-drag.js) of the last
+        // Came as a fling: let go within the release's velocity window (VELOCITY_WINDOW_MS) of the last
         // move, and no move further than 120 ms from the one before (WebKit's driver: up to about 107 ms).
-        if (turned || (gaps.at(-1) < 100 && Math.max(...gaps) <= 120)) break;
+        if (turned || (gaps.at(-1) < VELOCITY_WINDOW_MS && Math.max(...gaps) <= 120)) break;
         assert.ok(tries < 3, `the stroke came ${tries} times with its events too far apart for a fling (ms: ${gaps.join(', ')})`);
       }
       assert.deepEqual(await evaluate(() => [window.book.page, window.events.filter((e) => e.type === 'turncancel').length]), [5, 0], 'the fling turned the page');

@@ -93,7 +93,7 @@ export async function planViewer(controller, book) {
   if (!controls) return { attach: async () => null };
   // Small, and in the first spread's chunk when bundled; only a book with controls asks for them.
   const [{ checkViewerOptions }, { keepToolbarRoom }] = await Promise.all([import('../viewer/viewer-options.js'), import('../viewer/toolbar-room.js')]);
-  checkViewerOptions(controls, labels ?? {});
+  checkViewerOptions(controls, labels);
   const giveBack = keepToolbarRoom(book.root);
   return {
     attach: async () => {

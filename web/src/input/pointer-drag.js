@@ -3,7 +3,7 @@
 // file only turns DOM events into canvas pixels, tracks velocity, and eases the hover hint in.
 
 const DRAG_THRESHOLD_CSS_PX = 4;   // below this a press is a click, not a drag
-const VELOCITY_WINDOW_MS = 100;     // pointer samples this recent set the release velocity
+export const VELOCITY_WINDOW_MS = 100;    // pointer samples this recent set the release velocity
 
 const HINT_MS = 160;                // the hover hint eases in over this long
 

@@ -25,8 +25,8 @@ export function checkLabels(value) {
     || `an object of texts by key (${LABEL_KEYS.join(', ')}), each a non-empty string`;
 }
 
-/** Throws a TypeError naming the option, where `controls` or `labels` is not what it allows. */
-export function checkViewerOptions(controls, labels) {
+/** Throws a TypeError naming the option, where `controls` or `labels` (unset: their defaults) is not what it allows. */
+export function checkViewerOptions(controls = true, labels = {}) {
   for (const [name, value, check] of [['controls', controls, checkControls], ['labels', labels, checkLabels]]) {
     const verdict = check(value);
     if (verdict !== true) throw new TypeError(`conecurl: attachControls option '${name}' must be ${verdict}`);
