@@ -116,3 +116,38 @@ test('browser: in software, antialias \'auto\' leaves the book\'s canvas without
   // The probe's context, on the canvas the first book gave up, is lost when the page is next idle.
   await page.waitForFunction(() => window.__contexts[0].isContextLost());
 });
+
+test('browser: create() and ready come once the first view is drawn, not after its neighbours: a neighbour held back, create() resolves, and the neighbour loads once let go (whenIdle waits for it)', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    let letGo;
+    const held = new Promise((resolve) => { letGo = resolve; });
+    const fetch = window.fetch;
+    window.fetch = async function holdingFetch(input, ...rest) {
+      if (String(input?.url ?? input).includes('?page=5')) await held;  // the next page, a neighbour of 3 and 4
+      return fetch.call(this, input, ...rest);
+    };
+    const pages = Array.from({ length: 12 }, (_, i) => `/tests/browser/references/curl-t0-00.png?page=${i}`);
+    const container = document.getElementById('container');
+    const events = [];
+    const book = await window.Flipbook.create(container, { pages, display: 'double', startPage: 4, on: { ready: () => events.push('ready') } });
+    const atCreate = { open: book.openPages, states: [3, 4, 5].map((index) => book.pageState(index).state), frames: book.surface.framesDrawn };
+    await new Promise((resolve) => setTimeout(resolve, 0));  // events are heard just after create() resolves
+    let idle = false;
+    const idling = book.whenIdle().then(() => { idle = true; });
+    await new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve)));
+    const idleWhileHeld = idle;
+    letGo();
+    await idling;
+    const after = [3, 4, 5].map((index) => book.pageState(index).state);
+    book.destroy();
+    return { atCreate, events, idleWhileHeld, after };
+  });
+  expect(result.atCreate.open).toEqual([3, 4]);
+  expect(result.atCreate.states.slice(0, 2)).toEqual(['loaded', 'loaded']);
+  expect(['idle', 'loading']).toContain(result.atCreate.states[2]);  // page 5 still on its way (asked for after the first frame)
+  expect(result.atCreate.frames).toBeGreaterThan(0);  // the first view drawn
+  expect(result.events).toEqual(['ready']);
+  expect(result.idleWhileHeld).toBe(false);
+  expect(result.after).toEqual(['loaded', 'loaded', 'loaded']);
+});

@@ -79,3 +79,20 @@ test('node: PageCache counts loads in flight and pages settled for progress, and
   cache.setState(2, 'loaded');
   assert.deepEqual(cache.endLoad(), { loaded: 2, total: 5, pending: 0 });
 });
+
+test('node: FirstView admits only the pages on screen until released, those a turn brings on screen before the release too, then every page', async () => {
+  const { FirstView } = await import('../../web/src/pages/early-loads.js');
+  const first = new FirstView();
+  assert.equal(first.admits(7), true, 'before the first update nothing is held back');
+  first.update([3, 4]);
+  assert.deepEqual([2, 3, 4, 5].map((page) => first.admits(page)), [false, true, true, false]);
+  first.update([3, 4, 5, 6]);  // a leaf turning in the frames before the release shows 5 and 6
+  assert.deepEqual([4, 5, 6, 7].map((page) => first.admits(page)), [true, true, true, false]);
+  let released = false;
+  first.whenReleased.then(() => { released = true; });
+  first.release();
+  await first.whenReleased;
+  assert.equal(released, true);
+  first.update([9]);
+  assert.deepEqual([1, 7, 9].map((page) => first.admits(page)), [true, true, true]);
+});

@@ -3,6 +3,7 @@
 // the callbacks it needs, one a line, from the controller's port (book-controller.js `_makePort`).
 // Parts only some books use (page memory, autoplay, the page sound, live pages) are imported here only
 // when an option or a call asks for them: a plain book never downloads them.
+import { afterFirstFrame } from './after-first-frame.js';
 import { BookZoom } from './book-zoom.js';
 import { watchSize } from './size-watch.js';
 import { PageStore } from '../pages/page-store.js';
@@ -254,24 +255,24 @@ export function prefetchOpening(book, display, opening) {
 }
 
 /**
- * The first view: its pages on screen load alone and are drawn, then their neighbours load (the store
- * held them back: on a slow network the first spread shares its bandwidth with no page it does not
- * show). `afterShown()` (a promise: what the book builds once its first spread is on screen) runs as soon
- * as each page on screen shows a picture, its placeholder or its image. Resolves once all have loaded or
- * failed, and afterShown's promise has.
- * @param {BookPort} book
+ * The first view: its pages on screen load alone and are drawn; their neighbours once that frame is on screen
+ * (on a slow network the first spread shares its bandwidth with no page it does not show, and nothing started
+ * in the drawing task delays its frame). `afterShown()` (a promise: what the book builds once its first spread
+ * is on screen) runs as soon as each page on screen shows a picture, its placeholder or its image. Resolves once
+ * those pages have loaded or failed and are drawn, and afterShown's has; not after the neighbours (whenIdle()). @param {BookPort} book
  */
 export async function loadFirstView(book, afterShown = async () => {}) {
-  const after = book.store().whenShown(book.surface().pagesOnScreen()).then(afterShown);
+  const store = book.store();
+  const after = store.whenShown(book.surface().pagesOnScreen()).then(afterShown);
   after.catch(() => {});  // a failure is thrown below, where it is awaited
-  await book.store().whenIdle();
+  await store.whenLoadsSettle();
   try {
     book.surface().drawNow?.();  // the first spread on screen now, before anything else is fetched
   } catch {
     // A context lost meanwhile draws once it is back; the neighbours load all the same.
   }
-  book.store().releaseFirstView();
-  await Promise.all([book.store().whenIdle(), after]);
+  afterFirstFrame(() => store.releaseFirstView());
+  await after;
 }
 
 /**

@@ -467,6 +467,7 @@ export interface PagesChangeDetail {
 }
 
 export interface FlipbookEventMap {
+  /** The first view is on screen (its pages on screen loaded or failed, and drawn); its neighbours load after. */
   ready: CustomEvent<{ page: number }>;
   /** After each page load settles: pages ready now (loaded or failed), the page count, loads still running. */
   progress: CustomEvent<{ loaded: number; total: number; pending: number }>;
@@ -604,7 +605,7 @@ export class BookController extends EventTarget {
    * a CanvasSurface (still pages); null after destroy(). Drive the book through its own members.
    */
   readonly surface: BookView | CanvasSurface | null;
-  /** Resolves once no page is loading (and no click waits to tell a double-click). */
+  /** Resolves once no page is loading, the first view's neighbours included (and no click waits to tell a double-click). */
   whenIdle(): Promise<void>;
   /** First visible page at the settled position; after destroy(), the page the book was left at. */
   readonly page: number;
@@ -727,8 +728,8 @@ export class BookController extends EventTarget {
 
 export class Flipbook extends BookController {
   /**
-   * Resolves once the first view's pages (those on screen and their neighbours within loadWindow) have
-   * loaded or failed. Rejects with a TypeError naming a bad option (nothing is left in the container), or with a
+   * Resolves once the first view is on screen: its pages on screen loaded or failed, and drawn. Their
+   * neighbours within loadWindow load after it (await whenIdle() for them). Rejects with a TypeError naming a bad option (nothing is left in the container), or with a
    * FlipbookCreateError when WebGL2 or the engine is unavailable (its `fallback` shows the pages), or with
    * an AbortError (a DOMException) when the book was destroyed before it finished (nothing is left either).
    */

@@ -1,6 +1,7 @@
 // The public entry point: a flipbook in a container element. Flipbook is the book controller
 // (book-controller.js) over the WebGL surface, BookView on the wasm engine, sharing the page's WebGL
 // contexts with other books; without WebGL2 or the engine, create() leaves a StaticBook in its place.
+import { afterFirstFrame } from './after-first-frame.js';
 import { loadEngine } from '../engine/load-engine.js';
 import { BookView } from '../surfaces/book-view.js';
 import { BookController } from './book-controller.js';
@@ -70,7 +71,7 @@ export class Flipbook extends BookController {
   }
 
   // Loads the engine and builds the first view (BookController's _build and _events, reached through
-  // `this`, as a subclass does); resolves with the book once its pages have loaded or failed. The engine
+  // `this`, as a subclass does); resolves with the book once its first view is drawn. The engine
   // loads while the first view's pages are asked for and its context is made: _makeSurface waits for it.
   async _open() {
     try {
@@ -83,10 +84,13 @@ export class Flipbook extends BookController {
     }
     this._events.releaseSoon();  // what happened while loading the first view is heard from now on
     // The first view is shown with the programs it draws (BookRenderer links each on first use): the
-    // ones a turn draws are linked when the page is next idle, so neither the first page nor the first turn waits.
+    // ones a turn draws are linked when the page is next idle once the first frame is on screen, so neither
+    // the first page nor the first turn waits. A probe's context (_prepareCanvas) is given up then too.
     const prepare = () => { if (!this._destroyed && this._surface?.prepareTurn?.() === false) whenIdle(prepare); };
-    whenIdle(prepare);
-    whenIdle(() => contextBudget().releaseDiscarded());  // a probe's context given up (_prepareCanvas)
+    afterFirstFrame(() => {
+      whenIdle(prepare);
+      whenIdle(() => contextBudget().releaseDiscarded());
+    });
     return this;
   }
 

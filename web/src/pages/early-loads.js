@@ -14,21 +14,27 @@ const closeOwned = ({ image, owned }) => { if (owned) image.close?.(); };
 
 /**
  * The first view's pages on screen load alone; their neighbours once the book has drawn them and lets
- * go (release()), so that on a slow network the first spread shares its bandwidth with no page it does not show.
+ * go (release()), so that on a slow network the first spread shares its bandwidth with no page it does not
+ * show. Until then every page on screen is admitted: one a turn brings in before the release too.
  */
 export class FirstView {
   constructor() {
-    this._pages = null;  // the first view's pages on screen, from the store's first update
+    this._onScreen = null;  // the pages on screen at the store's latest update
     this._released = false;
+    this.whenReleased = new Promise((resolve) => { this._resolve = resolve; });
   }
 
   /** The store's update: `onScreen` its pages on screen. */
-  update(onScreen) { if (!this._released) this._pages ??= new Set(onScreen); }
+  update(onScreen) { if (!this._released) this._onScreen = new Set(onScreen); }
 
   /** Whether `page` may load now. */
-  admits(page) { return this._released || !this._pages || this._pages.has(page); }
+  admits(page) { return this._released || !this._onScreen || this._onScreen.has(page); }
 
-  release() { this._released = true; }
+  /** The neighbours may load from now on (the first view is drawn, or the book is destroyed). */
+  release() {
+    this._released = true;
+    this._resolve();
+  }
 }
 
 export class EarlyLoads {

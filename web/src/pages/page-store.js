@@ -62,8 +62,10 @@ export class PageStore {
   get residentPages() { return [...this._images.keys()].sort((a, b) => a - b); }
   /** { loaded, total, pending }: pages loaded or failed, the page count, loads running now. */
   get progress() { return this._cache.progress; }
-  /** Resolves once no page is loading. */
-  whenIdle() { return this._cache.whenIdle(); }
+  /** Resolves once no page is loading, the first view's neighbours included (they load once it is drawn). */
+  whenIdle() { return this._firstView.whenReleased.then(() => this._cache.whenIdle()); }
+  /** Resolves once no page is loading now (before the first view is drawn: its pages on screen). */
+  whenLoadsSettle() { return this._cache.whenIdle(); }
   /**
    * Resolves once each of `pages` has a picture on the surface: its image, or its placeholder while the
    * image loads; or once it failed (paper and a pageerror). What a first spread shows before it is sharp.
@@ -250,6 +252,7 @@ export class PageStore {
     this._images.clear();
     this._placeholders.clear();
     this._cache.releaseWaiters();
+    this._firstView.release();
     this._tellShown();
   }
 
