@@ -67,3 +67,16 @@ export function summarize(values) {
   const median = sorted.length % 2 ? sorted[Math.floor(mid)] : (sorted[mid - 1] + sorted[mid]) / 2;
   return { n: sorted.length, median, p95: rank(0.95), max: sorted[sorted.length - 1], min: sorted[0] };
 }
+
+/**
+ * The frame intervals of each turn apart (`result` as measureOnce returns it: `intervals` between the
+ * sampled animation frames, `turns` with start and end ms from the first sample): the first turn after load
+ * against the later ones, whose frames a warm browser draws. { first, later }, each summarize()'s.
+ */
+export function firstTurnAgainstLater(result) {
+  const stamps = [0];
+  for (const interval of result.intervals) stamps.push(stamps.at(-1) + interval);
+  const within = ({ start, end }) => result.intervals.filter((_, i) => stamps[i + 1] > start && stamps[i] < end);
+  const [first, ...later] = result.turns;
+  return { first: summarize(first ? within(first) : []), later: summarize(later.flatMap(within)) };
+}

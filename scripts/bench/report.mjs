@@ -2,7 +2,7 @@
 // other contender from the same repetition, the targets against the floor and the peers, before and after
 // when a baseline checkout was measured too, the drawing buffers, conecurl against the WebGL floor in each engine),
 // a Markdown table and an SVG chart of frame intervals.
-import { summarize } from './metrics.mjs';
+import { firstTurnAgainstLater, summarize } from './metrics.mjs';
 
 export const LIBRARY_NAMES = {
   conecurl: 'conecurl', 'page-flip': 'page-flip 2.0.7', turnjs: 'turn.js 1.0.5 + jQuery 1.12.0',
@@ -31,6 +31,8 @@ export const METRICS = [
   ['frameMaxMs', 'frame interval, max', 'ms', 1, (r) => summarize(r.intervals).max],
   ['maxOverMedian', 'max / median frame interval', 'x', 2, (r) => summarize(r.intervals).max / summarize(r.intervals).median],
   ['framesOver20', 'frames over 20 ms', '', 0, (r) => r.intervals.filter((i) => i > 20).length],
+  ['firstTurnMaxMs', 'frame interval, max, of the first turn after load', 'ms', 1, (r) => firstTurnAgainstLater(r).first.max],
+  ['laterTurnsMaxMs', 'frame interval, max, of the later turns', 'ms', 1, (r) => firstTurnAgainstLater(r).later.max],
   ['frames', 'frames during the turns', '', 0, (r) => r.frames],
   ['turnOverAsked', 'turn duration in the page / asked duration, mean over the turns', 'x', 3,
     (r) => r.turns.reduce((sum, t) => sum + t.end - t.start, 0) / r.turns.length / r.askedTurnMs],

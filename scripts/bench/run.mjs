@@ -21,7 +21,7 @@ import { BASELINE, bundleBaseline, bundleLibraries, checkoutCommit, LIBRARIES } 
 import { firstFrame, measureInEngine, measureOnce } from './measure.mjs';
 import { ENGINES, engineExecutables, launchEngine, startDisplay } from '../engines.mjs';
 import { chromiumLaunchOptions } from '../chromium.mjs';
-import { summarize } from './metrics.mjs';
+import { firstTurnAgainstLater, summarize } from './metrics.mjs';
 import { writePageImages } from './page-images.mjs';
 import { ENGINE_LIBS, frameChart, screenOf, markdown, readmeTables, summarizeEngines, summarizeRuns } from './report.mjs';
 import { PHONES, phoneUse } from '../../tests/browser/phone.js';
@@ -199,6 +199,7 @@ async function measureEngines({ engines, config, reps, turns, duration, harnessU
               const wrong = check(run.result, lib);
               if (wrong) throw new Error(wrong);
               const f = summarize(run.result.intervals);
+        const turnsApart = firstTurnAgainstLater(run.result);
               console.log(`[${engine} ${rep}/${reps}] ${config.id} ${lib}: first frame ${run.result.firstFrameMs.toFixed(0)} ms, `
                 + `${run.result.frames} frames, median ${f.median.toFixed(1)} ms, p95 ${f.p95.toFixed(1)} ms, WebGL ${run.result.renderer} `
                 + `(${((Date.now() - t0) / 1000).toFixed(0)} s)`);
@@ -280,9 +281,11 @@ async function main() {
         if (wrong) throw new Error(wrong);
         run.result = result;
         const f = summarize(run.result.intervals);
+        const turnsApart = firstTurnAgainstLater(run.result);
         console.log(`[${index + 1}/${plan.length}] rep ${rep} ${config.id} ${lib}: first frame ${run.result.firstFrameMs.toFixed(0)} ms, `
           + `frame median ${f.median.toFixed(0)} ms, max ${f.max.toFixed(0)} ms, main ${run.result.perFrame.mainThreadMs.toFixed(1)} ms/frame, `
-          + `GPU ${run.result.perFrame.gpuCpuMs.toFixed(0)} ms/frame, idle ${run.result.idle.totalCpuPercent.toFixed(1)}%`
+          + `GPU ${run.result.perFrame.gpuCpuMs.toFixed(0)} ms/frame, idle ${run.result.idle.totalCpuPercent.toFixed(1)}%, `
+          + `first turn max ${turnsApart.first.max.toFixed(0)} ms (median ${turnsApart.first.median.toFixed(0)}), later turns max ${turnsApart.later.max.toFixed(0)} ms (median ${turnsApart.later.median.toFixed(0)})`
           + `${run.result.wasm.length ? `, wasm ${run.result.wasm.map((w) => `${w.url.slice(base.length)} ${w.bytes} B`).join(', ')}` : ''}`
           + ` (${((Date.now() - t0) / 1000).toFixed(0)} s)`);
       } catch (error) {

@@ -2,13 +2,15 @@
 // phase (bundle, wasm fetch and instantiate, WebGL context, shader programs, first page fetched, decoded
 // and uploaded, first draw), from timestamps an init script takes around the browser calls that do each,
 // and any performance.mark()s the page made. docs/benchmark.md "Where the first page's time goes".
-// Usage: node scripts/bench/startup.mjs [--lib conecurl] [--configs double-20,phone-20] [--reps 5] [--port 8097]
+// Usage: node scripts/bench/startup.mjs [--libs conecurl,floor-webgl] [--configs double-20,single-20,phone-20] [--reps 5]
+//        [--port 8097] [--baseline <dir>] (another checkout, measured as conecurl-baseline: name it in --libs)
 //        [--no-bundle] (reuse bench-results/startup/bundles) [--rows] (also each run's figures, one JSON line a config)
+// The libraries take turns within each rep (one browser each), so a slow spell of the machine falls on all of them.
 import { spawn } from 'node:child_process';
 import path from 'node:path';
 import { chromium } from '@playwright/test';
 import { chromiumLaunchOptions } from '../chromium.mjs';
-import { bundleLibraries } from './bundle.mjs';
+import { BASELINE, bundleBaseline, bundleLibraries } from './bundle.mjs';
 import { writePageImages } from './page-images.mjs';
 import { PHONES, phoneUse } from '../../tests/browser/phone.js';
 
@@ -17,12 +19,15 @@ const arg = (name, fallback) => {
   const i = process.argv.indexOf(name);
   return i > 0 ? process.argv[i + 1] : fallback;
 };
-const lib = arg('--lib', 'conecurl');
+const libs = arg('--libs', arg('--lib', 'conecurl')).split(',');
+const baselineDir = arg('--baseline', null);
+if (libs.includes(BASELINE) && !baselineDir) throw new Error(`startup: ${BASELINE} needs --baseline <dir> (another conecurl checkout with its dist/ built)`);
 const configIds = arg('--configs', 'double-20,phone-20').split(',');
 const reps = Number(arg('--reps', '5'));
 const port = Number(arg('--port', process.env.CONECURL_BENCH_PORT || '8097'));
 const CONFIGS = {  // as scripts/bench/run.mjs measures them
   'double-20': { display: 'double', pages: 20, use: { viewport: { width: 1600, height: 1100 }, deviceScaleFactor: 1 } },
+  'single-20': { display: 'single', pages: 20, use: { viewport: { width: 1600, height: 1100 }, deviceScaleFactor: 1 } },
   'phone-20': { display: 'single', pages: 20, use: phoneUse(PHONES['phone-portrait']) },
 };
 for (const id of configIds) if (!CONFIGS[id]) throw new Error(`startup: unknown config ${id} (${Object.keys(CONFIGS).join(', ')})`);
@@ -30,13 +35,16 @@ for (const id of configIds) if (!CONFIGS[id]) throw new Error(`startup: unknown 
 // Runs in the page before anything else: wraps the calls each phase makes and notes when each ran and
 // how long it blocked the main thread (GL calls that wait for the GPU process block here).
 function instrument() {
-  const t = { calls: {}, events: [] };
+  const t = { calls: {}, events: [], long: [], frames: [] };
+  const frame = (now) => { t.frames.push(now); if (t.frames.length < 600) requestAnimationFrame(frame); };
+  requestAnimationFrame(frame);  // when each animation frame ran, to see the frames between ready and the first frame
   window.__startup = t;
   const note = (name, start, end) => {
     const c = (t.calls[name] ??= { count: 0, ms: 0, first: start, last: end });
     c.count++;
     c.ms += end - start;
     c.last = end;
+    if (end - start >= 1) t.long.push({ name, start, ms: end - start });  // to split the time after create() resolved
   };
   const wrap = (proto, name, label = name) => {
     const f = proto[name];
@@ -66,82 +74,110 @@ function instrument() {
   wrapAsync(window, 'fetch');
 }
 
+// One navigation of `lib` in `config`: the phases' timestamps, as the init script and the resource timings saw them.
+async function measureOnce(lib, config, bundles, images) {
+  const browser = await chromium.launch(chromiumLaunchOptions());
+  try {
+    const context = await browser.newContext(config.use);
+    await context.addInitScript(instrument);
+    const page = await context.newPage();
+    const query = new URLSearchParams({ lib, pages: String(config.pages), display: config.display, duration: '600', bundles, images });
+    await page.goto(`http://127.0.0.1:${port}/scripts/bench/harness.html?${query}`, { waitUntil: 'commit' });
+    const { readyMs, firstFrameMs } = await page.evaluate(async () => {
+      while (!window.bench) await new Promise((resolve) => setTimeout(resolve, 5));
+      return window.bench.ready();
+    });
+    return await page.evaluate(([ready, first]) => {
+      const { calls, events, long, frames } = window.__startup;
+      const resources = performance.getEntriesByType('resource');
+      const res = (test) => resources.filter((r) => test(new URL(r.name).pathname));
+      const span = (list) => (list.length ? [Math.min(...list.map((r) => r.startTime)), Math.max(...list.map((r) => r.responseEnd))] : [NaN, NaN]);
+      const [, bundleEnd] = span(res((p) => p.endsWith('.js') && p.includes('/bundles/')));
+      const [wasmStart, wasmEnd] = span(res((p) => p.endsWith('.wasm')));
+      const inst = events.filter((e) => e.name.startsWith('instantiate'));
+      const pngs = res((p) => p.endsWith('.png'));
+      const firstPng = pngs.length ? Math.min(...pngs.map((r) => r.startTime)) : NaN;
+      const bitmaps = events.filter((e) => e.name === 'createImageBitmap').sort((a, b) => a.end - b.end);
+      const c = (name) => calls[name] ?? { count: 0, ms: 0, first: NaN, last: NaN };
+      const draws = [c('drawArrays').first, c('drawElements').first].filter(Number.isFinite);
+      const shaderMs = ['compileShader', 'linkProgram', 'getShaderParameter', 'getProgramParameter', 'getUniformLocation', 'getActiveUniform']
+        .reduce((sum, n) => sum + c(n).ms, 0);
+      // Between create() resolving and the first frame: the main thread blocked in GL calls, pages fetched, frames run.
+      const between = (start) => start >= ready && start <= first;
+      return {
+        bundleEnd,
+        wasmFetch: [wasmStart, wasmEnd],
+        instantiated: inst.length ? Math.max(...inst.map((e) => e.end)) : NaN,
+        context: [c('getContext').first, c('getContext').ms],
+        programs: c('linkProgram').count,
+        shaders: [c('compileShader').first, c('getProgramParameter').last, shaderMs],
+        pagesRequested: firstPng,
+        pagesDecoded: bitmaps.length ? bitmaps[Math.min(bitmaps.length, 2) - 1].end : NaN,
+        upload: [c('texImage2D').first, c('texImage2D').ms + c('texSubImage2D').ms],
+        firstDraw: Math.min(...draws),
+        ready,
+        first,
+        afterReady: {
+          glBlockedMs: long.filter((call) => between(call.start)).reduce((sum, call) => sum + call.ms, 0),
+          pngsRequested: pngs.filter((r) => between(r.startTime)).length,
+          frames: frames.filter(between).length,
+          longestFrameGapMs: frames.filter((now) => now >= ready).slice(0, 4).reduce((gap, now, i, list) => (i ? Math.max(gap, now - list[i - 1]) : gap), 0),
+        },
+        marks: performance.getEntriesByType('mark').map((m) => [m.name, m.startTime]),
+      };
+    }, [readyMs, firstFrameMs]);
+  } finally {
+    await browser.close();
+  }
+}
+
+const med = (rows, f) => {
+  const values = rows.map(f).filter(Number.isFinite).sort((a, b) => a - b);
+  return values.length ? values[Math.floor(values.length / 2)].toFixed(0).padStart(5) : '    -';
+};
+
+function report(lib, id, rows) {
+  const m = (f) => med(rows, f);
+  console.log(`\n${lib} ${id}: medians of ${rows.length} runs, ms after navigation start (block = main thread blocked in those calls)`);
+  console.log(`  bundle loaded            ${m((r) => r.bundleEnd)}`);
+  console.log(`  wasm fetch               ${m((r) => r.wasmFetch[0])} .. ${m((r) => r.wasmFetch[1])}`);
+  console.log(`  wasm instantiated        ${m((r) => r.instantiated)}`);
+  console.log(`  WebGL context            ${m((r) => r.context[0])}   block ${m((r) => r.context[1])}`);
+  console.log(`  programs (${rows[0].programs} linked)      ${m((r) => r.shaders[0])} .. ${m((r) => r.shaders[1])}   block ${m((r) => r.shaders[2])}`);
+  console.log(`  first page requested     ${m((r) => r.pagesRequested)}`);
+  console.log(`  shown pages decoded      ${m((r) => r.pagesDecoded)}`);
+  console.log(`  first upload             ${m((r) => r.upload[0])}   block ${m((r) => r.upload[1])}`);
+  console.log(`  first draw call          ${m((r) => r.firstDraw)}`);
+  console.log(`  create() resolved        ${m((r) => r.ready)}`);
+  console.log(`  first frame (bench)      ${m((r) => r.first)}`);
+  console.log(`  create() -> first frame  ${m((r) => r.first - r.ready)}   of it: GL block ${m((r) => r.afterReady.glBlockedMs)}, `
+    + `${m((r) => r.afterReady.frames)} frames, longest gap ${m((r) => r.afterReady.longestFrameGapMs)}, ${m((r) => r.afterReady.pngsRequested)} pages asked`);
+  for (const [i, [name]] of (rows[0].marks || []).entries()) console.log(`  ${name.padEnd(24)} ${m((r) => r.marks[i]?.[1])}`);
+}
+
 const server = spawn(process.execPath, [path.join(root, 'scripts/serve.mjs'), '--port', String(port)], { stdio: 'ignore' });
 const out = path.join(root, 'bench-results/startup');
 try {
   writePageImages(path.join(out, 'pages'), 20);
-  if (!process.argv.includes('--no-bundle')) await bundleLibraries(path.join(out, 'bundles'));
+  const bundlesDir = path.join(out, 'bundles');
+  if (!process.argv.includes('--no-bundle')) await bundleLibraries(bundlesDir);
+  const dirs = Object.fromEntries(libs.map((lib) => [lib, bundlesDir]));
+  if (baselineDir) {
+    const built = await bundleBaseline(path.resolve(baselineDir), bundlesDir);
+    dirs[BASELINE] = built.bundles;
+    console.log(`startup: ${BASELINE} is ${built.dir} at ${built.commit}`);
+  }
   const rel = (p) => `/${path.relative(root, p)}`;
   for (const id of configIds) {
-    const config = CONFIGS[id];
-    const rows = [];
+    const rows = Object.fromEntries(libs.map((lib) => [lib, []]));
     for (let rep = 0; rep < reps; rep++) {
-      const browser = await chromium.launch(chromiumLaunchOptions());
-      try {
-        const context = await browser.newContext(config.use);
-        await context.addInitScript(instrument);
-        const page = await context.newPage();
-        const query = new URLSearchParams({ lib, pages: String(config.pages), display: config.display, duration: '600',
-          bundles: rel(path.join(out, 'bundles')), images: rel(path.join(out, 'pages')) });
-        await page.goto(`http://127.0.0.1:${port}/scripts/bench/harness.html?${query}`, { waitUntil: 'commit' });
-        const { readyMs, firstFrameMs } = await page.evaluate(async () => {
-          while (!window.bench) await new Promise((resolve) => setTimeout(resolve, 5));
-          return window.bench.ready();
-        });
-        rows.push(await page.evaluate(([ready, first]) => {
-          const { calls, events } = window.__startup;
-          const resources = performance.getEntriesByType('resource');
-          const res = (test) => resources.filter((r) => test(new URL(r.name).pathname));
-          const span = (list) => (list.length ? [Math.min(...list.map((r) => r.startTime)), Math.max(...list.map((r) => r.responseEnd))] : [NaN, NaN]);
-          const [bundleStart, bundleEnd] = span(res((p) => p.endsWith('.js') && p.includes('/bundles/')));
-          const [wasmStart, wasmEnd] = span(res((p) => p.endsWith('.wasm')));
-          const inst = events.filter((e) => e.name.startsWith('instantiate'));
-          const pngs = res((p) => p.endsWith('.png'));
-          const firstPng = pngs.length ? Math.min(...pngs.map((r) => r.startTime)) : NaN;
-          const bitmaps = events.filter((e) => e.name === 'createImageBitmap').sort((a, b) => a.end - b.end);
-          const c = (name) => calls[name] ?? { count: 0, ms: 0, first: NaN, last: NaN };
-          const draws = [c('drawArrays').first, c('drawElements').first].filter(Number.isFinite);
-          const shaderMs = ['compileShader', 'linkProgram', 'getShaderParameter', 'getProgramParameter', 'getUniformLocation', 'getActiveUniform']
-            .reduce((sum, n) => sum + c(n).ms, 0);
-          return {
-            bundleEnd,
-            wasmFetch: [wasmStart, wasmEnd],
-            instantiated: inst.length ? Math.max(...inst.map((e) => e.end)) : NaN,
-            context: [c('getContext').first, c('getContext').ms],
-            programs: c('linkProgram').count,
-            shaders: [c('compileShader').first, c('getProgramParameter').last, shaderMs],
-            pagesRequested: firstPng,
-            pagesDecoded: bitmaps.length ? bitmaps[Math.min(bitmaps.length, 2) - 1].end : NaN,
-            upload: [c('texImage2D').first, c('texImage2D').ms + c('texSubImage2D').ms],
-            firstDraw: Math.min(...draws),
-            ready,
-            first,
-            marks: performance.getEntriesByType('mark').map((m) => [m.name, m.startTime]),
-          };
-        }, [readyMs, firstFrameMs]));
-      } finally {
-        await browser.close();
-      }
+      for (const lib of libs) rows[lib].push(await measureOnce(lib, CONFIGS[id], rel(dirs[lib]), rel(path.join(out, 'pages'))));
     }
-    // --rows: each run's figures as one JSON line, to pool runs of several invocations (before and after alternated).
-    if (process.argv.includes('--rows')) console.log(`rows ${lib} ${id} ${JSON.stringify(rows)}`);
-    const med = (f) => {
-      const values = rows.map(f).filter(Number.isFinite).sort((a, b) => a - b);
-      return values.length ? values[Math.floor(values.length / 2)].toFixed(0).padStart(5) : '    -';
-    };
-    console.log(`\n${lib} ${id}: medians of ${reps} runs, ms after navigation start (block = main thread blocked in those calls)`);
-    console.log(`  bundle loaded            ${med((r) => r.bundleEnd)}`);
-    console.log(`  wasm fetch               ${med((r) => r.wasmFetch[0])} .. ${med((r) => r.wasmFetch[1])}`);
-    console.log(`  wasm instantiated        ${med((r) => r.instantiated)}`);
-    console.log(`  WebGL context            ${med((r) => r.context[0])}   block ${med((r) => r.context[1])}`);
-    console.log(`  programs (${rows[0].programs} linked)      ${med((r) => r.shaders[0])} .. ${med((r) => r.shaders[1])}   block ${med((r) => r.shaders[2])}`);
-    console.log(`  first page requested     ${med((r) => r.pagesRequested)}`);
-    console.log(`  shown pages decoded      ${med((r) => r.pagesDecoded)}`);
-    console.log(`  first upload             ${med((r) => r.upload[0])}   block ${med((r) => r.upload[1])}`);
-    console.log(`  first draw call          ${med((r) => r.firstDraw)}`);
-    console.log(`  create() resolved        ${med((r) => r.ready)}`);
-    console.log(`  first frame (bench)      ${med((r) => r.first)}`);
-    for (const [i, [name]] of (rows[0].marks || []).entries()) console.log(`  ${name.padEnd(24)} ${med((r) => r.marks[i]?.[1])}`);
+    for (const lib of libs) {
+      // --rows: each run's figures as one JSON line, to pool runs of several invocations.
+      if (process.argv.includes('--rows')) console.log(`rows ${lib} ${id} ${JSON.stringify(rows[lib])}`);
+      report(lib, id, rows[lib]);
+    }
   }
 } finally {
   server.kill();

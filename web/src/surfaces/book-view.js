@@ -13,6 +13,7 @@ import { PageTextures } from './page-textures.js';
 import { ContextKeeper } from './context-keeper.js';
 import { CanvasSize } from './canvas-size.js';
 import { MovingResolution } from './moving-resolution.js';
+import { warmTurn } from './warm-turn.js';
 
 export { uploadSizeFor };
 
@@ -43,6 +44,7 @@ export class BookView {
     /** The book's share of the page's WebGL contexts (context-budget.js), told when the view wants to draw. */
     this.contextLease = null;
     this._poseFrom = null;  // the settled position showTurn() poses from
+    this._warmDraws = 0;  // frames drawn by prepareTurn() that never reached the screen
     this._resolution = new MovingResolution(options.resolution ?? 'auto');
     this._frames = new FrameScheduler({
       runs: () => Boolean(this.renderer) && this._context.clockRuns,
@@ -91,17 +93,15 @@ export class BookView {
   get zoom() { return this.book.zoom().scale; }  // view magnification, 1 to MAX_ZOOM
   get maxTextureSize() { return this.renderer.maxTextureSize(); }
   get animating() { return this.book.animating(); }
-  get framesDrawn() { return this.renderer.framesDrawn(); }  // so far: the book draws only while something moves
+  get framesDrawn() { return this.renderer.framesDrawn() - this._warmDraws; }  // so far: the book draws only while something moves
   get movingScale() { return this._resolution.scale; }  // of the buffer's size, frames with moving leaves are drawn at
   /** Turns asked for that wait for a leaf still in flight. */
   get queuedTurns() { return this._loop.queuedTurns(); }
   /** The WebGL context is lost and not yet restored: turns in flight are paused. */
   get contextLost() { return this._context.lost; }
 
-  /**
-   * Uploads a page's image. It is scaled down (never up) to fit MAX_TEXTURE_SIZE and, given
-   * `cover: { width, height }` in pixels, to the smallest size that still covers that box.
-   */
+  /** Uploads a page's image, scaled down (never up) to fit MAX_TEXTURE_SIZE and, given `cover: { width, height }`
+   * in pixels, to the smallest size that still covers that box. */
   setPageImage(page, source, options) { this._textures.set(page, source, options); }
 
   /**
@@ -116,10 +116,8 @@ export class BookView {
   /** Pixel size of page `page`'s texture as uploaded, or null without one. */
   pageImageSize(page) { return this._textures.sizeOf(page); }
 
-  /**
-   * Where the resting pages lie on the canvas, in CSS pixels from its top-left: both page places of
-   * a spread (double) or the one page (single). The same framing as the renderer's camera.
-   */
+  /** Where the resting pages lie on the canvas, in CSS pixels from its top-left: both page places of a spread
+   * (double) or the one page (single). The same framing as the renderer's camera. */
   restingRect() {
     const { width, height } = this.fitCanvas();
     return this._size.toCss(this.book.restingRect(width, height), width);  // from the engine's camera
@@ -159,10 +157,7 @@ export class BookView {
     return this.book.edgeMarkPlaces(this._edgeMarks, width, height).map((place) => this._size.toCss(place, width));
   }
 
-  /**
-   * The drawing-buffer pixel under a viewport point, and the buffer's size: the engine's camera (drag
-   * solve, zoom) works in these, the DOM in CSS pixels.
-   */
+  /** The drawing-buffer pixel under a viewport point, and the buffer's size: the engine's camera (drag solve, zoom) works in these. */
   bufferPixel(clientX, clientY) { return this._size.bufferPixel(clientX, clientY); }
 
   /** Magnifies the view to `scale` keeping the table point under the viewport point where it is. */
@@ -255,10 +250,14 @@ export class BookView {
   }
 
   readPixels() { return this.renderer.readPixels(); }
-  /** Links a turn's programs now (true), or says false while a frame is coming; a turn under way links its own. */
+  /** Links a turn's programs and draws a posed turning frame under the resting one (warm-turn.js) now (true),
+   * or says false while a frame is coming; a turn under way links its own. */
   prepareTurn() {
     if (this._frames.moving || this._context.lost || !this.renderer) return true;
-    return this._frames.pending ? false : (this.renderer.prepareTurn(), true);
+    if (this._frames.pending) return false;
+    this.renderer.prepareTurn();
+    if (this._poseFrom === null) this._warmDraws += warmTurn(this.book, this.renderer, () => this.fitCanvas());
+    return true;
   }
 
   /** Asks for a frame (none while the context is lost, unless parked: context-keeper.js). */
