@@ -1,25 +1,39 @@
 // What a book does once its first frame has reached the screen, not before: the browser presents a frame
 // only after the task that drew it, so work started in that task (fetches, decodes, links) would hold it back.
+// Each call returns its cancel: a book destroyed meanwhile is let go at once, not held until its tasks run.
 const FRAMES = 2;         // the frame drawn is presented by the next animation frame; the second runs after it
 const LATEST_MS = 250;    // a hidden tab runs no animation frames: the task runs after this at the latest
+const IDLE_LATEST_MS = 1000;
 
-/** Calls `task` once, after the next FRAMES animation frames (or LATEST_MS, whichever comes first). */
+/** Calls `task` once, after the next FRAMES animation frames (or LATEST_MS, whichever comes first). Returns its cancel. */
 export function afterFirstFrame(task) {
-  let done = false;
+  let frame = 0;
   const run = () => {
-    if (done) return;
-    done = true;
+    cancel();
     task();
   };
   const timer = setTimeout(run, LATEST_MS);
-  if (typeof requestAnimationFrame !== 'function') return;
-  let frames = 0;
-  const frame = () => {
-    if (++frames < FRAMES) requestAnimationFrame(frame);
-    else {
-      clearTimeout(timer);
-      run();
-    }
+  const cancel = () => {
+    clearTimeout(timer);
+    if (frame) cancelAnimationFrame(frame);
   };
-  requestAnimationFrame(frame);
+  if (typeof requestAnimationFrame !== 'function') return cancel;
+  let frames = 0;
+  const step = () => {
+    frame = 0;
+    if (++frames < FRAMES) frame = requestAnimationFrame(step);
+    else run();
+  };
+  frame = requestAnimationFrame(step);
+  return cancel;
+}
+
+/** Calls `task` when the page is next idle (within IDLE_LATEST_MS), or soon where there is no requestIdleCallback. Returns its cancel. */
+export function whenIdle(task) {
+  if (typeof requestIdleCallback !== 'function') {
+    const timer = setTimeout(task, 50);
+    return () => clearTimeout(timer);
+  }
+  const id = requestIdleCallback(task, { timeout: IDLE_LATEST_MS });
+  return () => cancelIdleCallback(id);
 }

@@ -5,6 +5,7 @@
 // Over 350 lines because it is the whole public API of a book: each member a line or two here, its work in its parts.
 import { createShell } from './book-shell.js';
 import { BookEvents } from './book-events.js';
+import { afterFirstFrame } from './after-first-frame.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { BookTurns } from './book-turns.js';
 import {
@@ -32,6 +33,7 @@ export class BookController extends EventTarget {
     this._pages = pageEntries(settings.pages, { copy: !doc });
     this._events = new BookEvents(this, settings.on);  // `on` listeners first; events of create() held
     this._destroyed = false;
+    this._deferred = new Set();  // the cancels of tasks deferred (_defer), called by destroy()
     this._surface = null;
     this._shell = createShell(container, { label: settings.label, direction: settings.direction });
     this._canvas = this._shell.canvas;
@@ -205,6 +207,8 @@ export class BookController extends EventTarget {
     this._controls?.remove();  // before the book goes: closing a panel may end a search
     this._controls = null;
     this._destroyed = true;
+    for (const cancel of this._deferred) cancel();
+    this._deferred.clear();
     this._events.drop();
     this._store.close();
     this._doc.stop();
@@ -288,6 +292,15 @@ export class BookController extends EventTarget {
     this._showOpenPages();
   }
 
+  // `task` run by `schedule` (after-first-frame.js: afterFirstFrame or whenIdle); cancelled if the book is destroyed first.
+  _defer(schedule, task) {
+    const cancel = schedule(() => {
+      this._deferred.delete(cancel);
+      task();
+    });
+    this._deferred.add(cancel);
+  }
+
   // The book draws on a fresh canvas in place of its own (Flipbook: the context its canvas was given is not the one wanted).
   _replaceCanvas() {
     this._port.canvas = this._canvas = this._shell.replaceCanvas();
@@ -320,6 +333,7 @@ export class BookController extends EventTarget {
       pageCount: () => this.pageCount,
       openPages: () => this.openPages,
       emit: (type, detail) => this._emit(type, detail),
+      afterFirstFrame: (task) => this._defer(afterFirstFrame, task),
       flip: (index) => this.flip(index),
       showOpenPages: () => this._showOpenPages(),
       layoutLayers: () => this._layoutLayers(),

@@ -3,7 +3,6 @@
 // the callbacks it needs, one a line, from the controller's port (book-controller.js `_makePort`).
 // Parts only some books use (page memory, autoplay, the page sound, live pages) are imported here only
 // when an option or a call asks for them: a plain book never downloads them.
-import { afterFirstFrame } from './after-first-frame.js';
 import { BookZoom } from './book-zoom.js';
 import { watchSize } from './size-watch.js';
 import { PageStore } from '../pages/page-store.js';
@@ -30,6 +29,7 @@ import { positionOfPage } from '../engine/layout.js';
  * @property {() => number} pageCount
  * @property {() => number[]} openPages
  * @property {(type: string, detail: object) => void} emit
+ * @property {(task: () => void) => void} afterFirstFrame  `task` once the frame drawn now is on screen (not if destroyed first)
  * @property {(index: number) => Promise<void>} flip  the public flip()
  * @property {() => void} showOpenPages  layers laid over the open pages, live region, alt text
  * @property {() => void} layoutLayers
@@ -271,7 +271,7 @@ export async function loadFirstView(book, afterShown = async () => {}) {
   } catch {
     // A context lost meanwhile draws once it is back; the neighbours load all the same.
   }
-  afterFirstFrame(() => store.releaseFirstView());
+  book.afterFirstFrame(() => store.releaseFirstView());
   await after;
 }
 

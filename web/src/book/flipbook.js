@@ -1,7 +1,7 @@
 // The public entry point: a flipbook in a container element. Flipbook is the book controller
 // (book-controller.js) over the WebGL surface, BookView on the wasm engine, sharing the page's WebGL
 // contexts with other books; without WebGL2 or the engine, create() leaves a StaticBook in its place.
-import { afterFirstFrame } from './after-first-frame.js';
+import { afterFirstFrame, whenIdle } from './after-first-frame.js';
 import { loadEngine } from '../engine/load-engine.js';
 import { BookView } from '../surfaces/book-view.js';
 import { BookController } from './book-controller.js';
@@ -39,9 +39,6 @@ async function openDocumentOption(options) {
   const { openPdf } = await import('../document/pdf-pages.js');
   return openPdf(pdf, { workerSrc: pdfWorkerSrc });
 }
-
-// Calls `task` when the page is next idle (within a second at the latest), or soon where there is no requestIdleCallback.
-const whenIdle = (task) => (globalThis.requestIdleCallback ? requestIdleCallback(task, { timeout: 1000 }) : setTimeout(task, 50));
 
 // The options of a book over a document: its pages in place of the option that named it; its title is
 // the book's label unless one was given.
@@ -86,11 +83,9 @@ export class Flipbook extends BookController {
     // The first view is shown with the programs it draws (BookRenderer links each on first use): the
     // ones a turn draws are linked when the page is next idle once the first frame is on screen, so neither
     // the first page nor the first turn waits. A probe's context (_prepareCanvas) is given up then too.
-    const prepare = () => { if (!this._destroyed && this._surface?.prepareTurn?.() === false) whenIdle(prepare); };
-    afterFirstFrame(() => {
-      whenIdle(prepare);
-      whenIdle(() => contextBudget().releaseDiscarded());
-    });
+    const prepare = () => { if (this._surface?.prepareTurn?.() === false) this._defer(whenIdle, prepare); };
+    this._defer(afterFirstFrame, () => this._defer(whenIdle, prepare));
+    afterFirstFrame(() => whenIdle(() => contextBudget().releaseDiscarded()));  // the page's, whether or not this book stays
     return this;
   }
 
