@@ -101,33 +101,35 @@ function takeOverWhenInstalled(registration) {
     waiting.postMessage({ type: 'conecurl-skip-waiting' });
     timer = setTimeout(ask, TAKE_OVER.everyMs);  // a retry's spacing: each ask is one more chance at a quiet moment
   };
-  const installed = () => {
+  const installed = (worker) => {
     ask();
-    reloadIfStale();  // the page may be of the old version: it loads again now, whether or not the worker takes over
+    // The page may be of the old version: it loads again now, whether or not the worker takes over. The worker
+    // that installed is asked its version itself: by then it may have left `waiting` (its skipWaiting at install).
+    reloadIfStale(worker);
   };
   const follow = (worker) => {
-    if (worker?.state === 'installing') worker.addEventListener('statechange', () => { if (worker.state === 'installed') installed(); });
+    if (worker?.state === 'installing') worker.addEventListener('statechange', () => { if (worker.state === 'installed') installed(worker); });
   };
-  if (registration.waiting) installed();
+  if (registration.waiting) installed(registration.waiting);
   follow(registration.installing);
   registration.addEventListener('updatefound', () => follow(registration.installing));
 }
 
 /**
- * A page shown by one version of the site loads again when the site's newest worker (one installed and
- * waiting, else the controller) is of another: its version (index.html's conecurl-site-version, written
+ * A page shown by one version of the site loads again when the site's newest worker (`newest`, one just
+ * installed; else one installed and waiting, else the controller) is of another: its version (index.html's conecurl-site-version, written
  * by conecurl publish) is asked of that worker at once, at each change of controller, and when a new
  * worker has installed. A worker that took over before this module ran leaves no controllerchange to
  * hear, so the page never counts changes, it compares versions. An old worker steps aside while a new
  * one waits (service-worker.js), so the reload gets the new version even while Chromium holds the new
  * worker back. One reload a version: a server still sending the old page cannot make it loop.
  */
-async function reloadIfStale() {
+async function reloadIfStale(newest = null) {
   const container = navigator.serviceWorker;
   const mine = document.querySelector('meta[name="conecurl-site-version"]')?.content;
   if (!main.dataset.document || !container || !mine) return;
-  const registration = await container.getRegistration().catch(() => null);
-  const worker = registration?.waiting ?? container.controller;
+  const registration = newest ? null : await container.getRegistration().catch(() => null);
+  const worker = newest ?? registration?.waiting ?? container.controller;
   if (!worker) return;
   const { version } = await ask(worker, { type: 'conecurl-version' });
   const key = `conecurl-reloaded ${mine} for ${version}`;
@@ -136,7 +138,7 @@ async function reloadIfStale() {
   location.reload();
 }
 if (main.dataset.document) {  // a published site's page: only those have a worker of the site's
-  navigator.serviceWorker?.addEventListener('controllerchange', reloadIfStale);
+  navigator.serviceWorker?.addEventListener('controllerchange', () => reloadIfStale());
   reloadIfStale();
 }
 
