@@ -128,8 +128,7 @@ async function reloadIfStale(newest = null) {
   const container = navigator.serviceWorker;
   const mine = document.querySelector('meta[name="conecurl-site-version"]')?.content;
   if (!main.dataset.document || !container || !mine) return;
-  const registration = newest ? null : await container.getRegistration().catch(() => null);
-  const worker = newest ?? registration?.waiting ?? container.controller;
+  const worker = newest ?? (await container.getRegistration().catch(() => null))?.waiting ?? container.controller;
   if (!worker) return;
   const { version } = await ask(worker, { type: 'conecurl-version' });
   const key = `conecurl-reloaded ${mine} for ${version}`;
