@@ -202,20 +202,3 @@ test('node: a book parked while in view takes a context back once another book r
   assert.equal(x.lease.state, 'restoring');
   assert.equal(full.liveCount, 1);
 });
-
-test('node: a context given up (a probe\'s) is kept until its place is wanted: lost before a context beyond the budget is made, or by releaseDiscarded()', () => {
-  const budget = new ContextBudget({ maxLive: 2 });
-  const probe = new FakeCanvas();
-  budget.discard(probe.gl);
-  const a = book(budget);  // 1 live + 1 given up: room for a
-  assert.equal(probe.gl.lost, false);
-  const b = book(budget);  // the second: the given-up context goes first, no book is parked
-  assert.equal(probe.gl.lost, true);
-  assert.deepEqual([a.lease.state, b.lease.state], ['live', 'live']);
-  const idle = new FakeCanvas();
-  budget.discard(idle.gl);
-  budget.releaseDiscarded();  // the page is idle
-  assert.deepEqual(idle.calls, ['lose']);
-  budget.releaseDiscarded();
-  assert.deepEqual(idle.calls, ['lose'], 'once');
-});

@@ -82,10 +82,9 @@ export class Flipbook extends BookController {
     this._events.releaseSoon();  // what happened while loading the first view is heard from now on
     // The first view is shown with the programs it draws (BookRenderer links each on first use): the
     // ones a turn draws are linked when the page is next idle once the first frame is on screen, so neither
-    // the first page nor the first turn waits. A probe's context (_prepareCanvas) is given up then too.
+    // the first page nor the first turn waits.
     const prepare = () => { if (this._surface?.prepareTurn?.() === false) this._defer(whenIdle, prepare); };
     this._defer(afterFirstFrame, () => this._defer(whenIdle, prepare));
-    afterFirstFrame(() => whenIdle(() => contextBudget().releaseDiscarded()));  // the page's, whether or not this book stays
     return this;
   }
 
@@ -126,15 +125,16 @@ export class Flipbook extends BookController {
   // Room in the page's context budget, then the canvas's context. antialias 'auto' (smooth edges unless WebGL
   // runs in software, where multisampling costs ~30% a frame) is found out by the page's first book, on its own
   // canvas with the context it keeps on a GPU (software-gl.js); in software that context is multisampled, so
-  // the book takes a fresh canvas, whose context the renderer makes, and gives the probe's to the budget to lose
-  // when its place is wanted or the page is idle (losing one can block for tens of ms). A known verdict (or
-  // true, false) needs no probe.
+  // the book takes a fresh canvas, whose context the renderer makes, and loses the probe's first. At once:
+  // nothing is queued on it yet, so that takes a few ms, where losing it later waits on all the GPU process
+  // has queued by then (100 ms to over a second in software, docs/benchmark.md). A known verdict (or true,
+  // false) needs no probe.
   _prepareCanvas() {
     this._contextLease.admit();
     if (this._settings.antialias !== 'auto' || knownSoftwareWebGL() !== null) return;
     this._probed = probeWebGL(this._canvas);  // on a GPU, the renderer's context to be
     if (!knownSoftwareWebGL()) return;
-    contextBudget().discard(this._probed);
+    this._probed.getExtension('WEBGL_lose_context')?.loseContext();
     this._probed = null;
     this._contextLease.dispose();
     this._replaceCanvas();

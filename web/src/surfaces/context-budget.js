@@ -31,7 +31,6 @@ export class ContextBudget {
     this.maxLive = maxLive;
     this._leases = new Set();
     this._clock = 0;  // orders uses and departures from view; a counter, not wall time
-    this._discarded = [];  // contexts given up and not yet lost (discard())
   }
 
   /** Contexts held or being restored now. */
@@ -42,17 +41,6 @@ export class ContextBudget {
     const lease = new ContextLease(this, canvas);
     this._leases.add(lease);
     return lease;
-  }
-
-  /**
-   * A context made and given up (a probe's: software-gl.js) is lost once its place is wanted, before a context
-   * beyond maxLive is made, or by releaseDiscarded(): losing one can block the main thread for tens of ms.
-   */
-  discard(gl) { this._discarded.push(gl); }
-
-  /** Loses the contexts given up (when the page is idle). */
-  releaseDiscarded() {
-    for (const gl of this._discarded.splice(0)) gl.getExtension('WEBGL_lose_context')?.loseContext();
   }
 
   _tick() { return ++this._clock; }
@@ -77,7 +65,6 @@ export class ContextBudget {
   // Parks live books (the policy's choice first) until `newcomer` fits within maxLive.
   _makeRoom(newcomer) {
     const others = [...this._leases].filter((lease) => lease !== newcomer && lease.live);
-    if (others.length + this._discarded.length >= this.maxLive) this.releaseDiscarded();
     while (others.length >= this.maxLive) {
       const index = chooseContextToRelease(others.map((lease) => lease._ranking()));
       const [victim] = others.splice(index, 1);
