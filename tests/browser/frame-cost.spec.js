@@ -484,16 +484,26 @@ test('browser: every turning frame lays the cached resting spread down: the rest
       };
       book.surface.drawNow();
       const resting = pixel();
-      // Read in the same animation frame as the book drew it (this callback runs after the book's).
-      // The engine's clock advances at most 0.25 s a frame: four frames of a 3 s turn keep the leaf
-      // and its shadow (cast right and down) off the left page.
-      const turning = book.next();
+      // Read in the task that drew each frame (the view's onMotion runs right after the frame's step; the
+      // page sound, its only other user, is off): once a frame is presented, the canvas reads clear. (A
+      // callback of the test's own next to the book's read a presented frame whenever the turn's first
+      // frame was asked for after it.) The engine's clock advances at most 0.25 s a frame: four frames of
+      // a 3 s turn keep the leaf and its shadow (cast right and down) off the left page.
       const frames = [];
-      while (frames.length < 4) {
-        const drawn = book.surface.framesDrawn;
-        await new Promise((resolve) => requestAnimationFrame(resolve));
-        if (book.surface.framesDrawn !== drawn) frames.push(pixel());
-      }
+      const view = book.surface;
+      let drawn = view.framesDrawn;
+      const four = new Promise((resolve) => {
+        view.onMotion = () => {
+          if (view.framesDrawn === drawn) return;
+          drawn = view.framesDrawn;
+          frames.push(pixel());
+          if (frames.length < 4) return;
+          view.onMotion = null;
+          resolve();
+        };
+      });
+      const turning = book.next();
+      await four;
       await turning;
       return { resting, frames };
     }, shadows);
