@@ -5,6 +5,7 @@
 import { test, expect } from '@playwright/test';
 import { openReady } from './helpers.js';
 import { touchscreen } from './phone.js';
+import { CLICK_SERIES_MS } from '../../web/src/input/input-taps.js';
 
 const FIXTURE = '/tests/browser/fixtures/phone-book-fixture.html';
 const open = (page, options) => page.evaluate((o) => window.openBook(o), { pages: 12, duration: 150, startPage: 4, ...options });
@@ -15,12 +16,38 @@ const state = (page) => page.evaluate(() => ({
 }));
 const pointAt = (page, fx, fy) => page.evaluate(([fx, fy]) => window.halfPoint(fx, fy), [fx, fy]);
 
-/** A double tap: both taps sent at once, so however slow the machine the page sees them 150 ms apart (their stamps). */
+/** A double tap: both taps sent at once, stamped 150 ms apart. */
 async function doubleTap(touch, p) {
   await Promise.all([
     touch.send('touchStart', [p], 1000), touch.send('touchEnd', [], 60),
     touch.send('touchStart', [p], 150), touch.send('touchEnd', [], 60),
   ]);
+}
+
+/**
+ * A double tap the page is given as one, then `done()` (a page function: true once it did what the test
+ * waits for). A busy machine's Chromium can hand the page the second tap after the book's series has closed
+ * on its clock (CDP delivers the four events one after another), so that at 1x the first tap acts alone;
+ * that was no double tap. Then the page's clock says so (its two lifts further apart than the series' time),
+ * `restore()` puts the book back and it taps again, 3 tries at most.
+ */
+async function doubleTapSeen(page, touch, p, done, restore) {
+  for (let attempt = 1; ; attempt++) {
+    await page.evaluate(() => {
+      window.lifts = [];
+      window.addEventListener('pointerup', () => window.lifts.push(performance.now()), { capture: true });
+    });
+    await doubleTap(touch, p);
+    await page.waitForFunction(() => window.lifts.length >= 2);
+    const gap = await page.evaluate(() => window.lifts[1] - window.lifts[0]);
+    if (gap <= CLICK_SERIES_MS || attempt === 3) {
+      await page.waitForFunction(done);
+      return;
+    }
+    await settle(page);
+    if (await page.evaluate(done)) return;
+    await restore();
+  }
 }
 
 test.beforeEach(async ({ page }) => {
@@ -85,11 +112,15 @@ test('browser (phone): in rtl the left third turns forward, in vertical the bott
 test('browser (phone): a double tap zooms in about the finger without turning (nor middletap), and another zooms back out', async ({ page }) => {
   await open(page, {});
   const touch = await touchscreen(page);
-  await doubleTap(touch, await pointAt(page, 0.85, 0.5));  // on the outer third: its first tap must not turn
-  await page.waitForFunction(() => window.book.zoom > 1);
+  const outer = await pointAt(page, 0.85, 0.5);  // on the outer third: its first tap must not turn
+  await doubleTapSeen(page, touch, outer, () => window.book.zoom > 1, async () => {
+    await page.evaluate(async () => { await window.book.flip(4); window.events.length = 0; });
+    await settle(page);
+  });
   await settle(page);
   expect(await state(page)).toMatchObject({ page: 4, zoom: 2, turnstarts: 0, middletaps: [] });
   expect(await page.evaluate(() => window.book.surface.canvas.style.touchAction)).toBe('none');
+  // Zoomed in a tap does nothing, so the book judges this one by the taps' own stamps however late the second comes.
   await doubleTap(touch, await pointAt(page, 0.5, 0.5));
   await page.waitForFunction(() => window.book.zoom === 1);
   await settle(page);

@@ -23,8 +23,8 @@ export function swipeDirection(dx, dy, direction) {
 }
 
 /**
- * Calls `tap(clientX, clientY, kind)` for a primary mouse click (kind 'click') or a touch/pen tap
- * ('touch', pen included) on `element`, and
+ * Calls `tap(clientX, clientY, kind, time)` for a primary mouse click (kind 'click') or a touch/pen tap
+ * ('touch', pen included) on `element` (`time`: the click's or the lift's own event stamp, ms), and
  * `swipe(dx, dy, x, y)` (CSS px, end minus start; where it started) for a touch/pen stroke of SWIPE_MIN or more. A second
  * finger cancels the stroke (pinch-zoom is not a swipe). Returns a function that stops listening.
  */
@@ -49,7 +49,7 @@ export function listenForTapsAndSwipes(element, { tap, swipe }) {
     const dx = event.clientX - x;
     const dy = event.clientY - y;
     const elapsed = event.timeStamp - time;
-    if (Math.hypot(dx, dy) <= TAP_SLOP && elapsed <= TAP_MAX_MS) tap(x, y, 'touch');
+    if (Math.hypot(dx, dy) <= TAP_SLOP && elapsed <= TAP_MAX_MS) tap(x, y, 'touch', event.timeStamp);
     else if (Math.max(Math.abs(dx), Math.abs(dy)) >= SWIPE_MIN) swipe(dx, dy, x, y);
   };
   const onPointerCancel = (event) => {
@@ -60,7 +60,7 @@ export function listenForTapsAndSwipes(element, { tap, swipe }) {
     // Touch and pen taps were handled at pointerup; their click follows (Safari's without a pointerType).
     if (event.pointerType === 'touch' || event.pointerType === 'pen') return;
     if (event.timeStamp - lastTouchUp < CLICK_AFTER_TOUCH_MS) return;
-    tap(event.clientX, event.clientY, 'click');
+    tap(event.clientX, event.clientY, 'click', event.timeStamp);
   };
 
   element.addEventListener('pointerdown', onPointerDown);
