@@ -25,6 +25,11 @@ inline constexpr double kDefaultPageWidth = 0.8;  // world units from the spine 
 inline constexpr double kDefaultPageHeight = 1.0;  // world units along the spine
 inline constexpr double kDefaultLeafThickness = 0.004;  // a leaf, of the page width: stacks' depth (thickness: true)
 inline constexpr double kMaxLeafThickness = 0.02;  // the largest the thickness option takes
+inline constexpr double kBoardThicknessOfWidth = 0.012;  // a board (a hard cover), of the page width, whatever the paper
+// The paper of a stack never gets deeper than this fraction of the page width: it approaches it
+// smoothly (raw / sqrt(1 + (raw / cap)^2): about raw for a thin stack), so a 1000-page book stays a
+// book, not a brick, and every added leaf still adds depth (book_stacks.hpp).
+inline constexpr double kMaxPaperDepthOfWidth = 0.1;
 inline constexpr int kPaperRed = 250;  // placeholder paper, shown before a page's image arrives
 inline constexpr int kPaperGreen = 247;
 inline constexpr int kPaperBlue = 240;

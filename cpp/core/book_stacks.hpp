@@ -38,12 +38,8 @@ struct StackDepth {
     double total() const { return topBoard + paper + bottomBoard; }
 };
 
-// Boards are this thick, as a fraction of the page width, whatever the paper.
-inline constexpr double kBoardThicknessOfWidth = 0.012;
-// The paper of a stack never gets deeper than this fraction of the page width: it approaches it
-// smoothly (raw / sqrt(1 + (raw / cap)^2): about raw for a thin stack), so a 1000-page book stays a
-// book, not a brick, and every added leaf still adds depth.
-inline constexpr double kMaxPaperDepthOfWidth = 0.1;
+// Boards are kBoardThicknessOfWidth thick and the paper of a stack never gets deeper than
+// kMaxPaperDepthOfWidth (book_constants.hpp, shared with layout.js, which centres a closed book by them).
 
 // `leaves` leaves with paper `leafThicknessOfWidth` (a fraction of `pageWidth` a leaf; 0: no stack).
 // A hard leaf at the top or the bottom (a cover) is a board layer of its own; hard leaves in between

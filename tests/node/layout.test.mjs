@@ -223,3 +223,34 @@ test('node: one direction module answers what depends on direction, and the engi
   assert.throws(() => directionFacts('sideways'), /direction must be 'ltr', 'rtl' or 'vertical', got sideways/);
   assert.throws(() => directionFacts('constructor'), TypeError);
 });
+
+test('node: layout.js centres a closed book on its page and its stack\'s edge band as the engine does, for thin, default and thickest paper, soft and hard covers, 0 to 2001 pages (needs the wasm built)', () => {
+  const size = { width: 800, height: 600 };
+  let cases = 0;
+  for (const direction of Object.keys(BINDING)) {
+    for (const thickness of [true, 0.001, layout.MAX_LEAF_THICKNESS]) {
+      for (const pageCount of [0, 1, 2, 3, 9, 40, 301, 2001]) {
+        for (const hard of [[], [0, pageCount - 1], [1]]) {
+          const hardPages = hard.filter((p) => p >= 0 && p < pageCount);  // no covers, both covers hard, the first leaf's back hard
+          withBook({ pageCount, display: 'double', binding: BINDING[direction], thickness, hardPages }, (book) => {
+            const shape = { pageCount, display: 'double', direction, leafThickness: layout.leafThicknessOf(thickness), hardPages };
+            for (const position of [0, 1, book.lastPosition()]) {
+              if (position > book.lastPosition()) continue;
+              book.jumpTo(position);
+              const at = `${pageCount} pages, ${direction}, thickness ${thickness}, hard ${hardPages}, position ${position}`;
+              assertRectClose(layout.restingRect(size, shape, position), book.restingRect(size.width, size.height), size, `${at}: restingRect`);
+              assertPlacesClose(layout.openPagePlaces(position, shape, size), book.openPagePlaces(size.width, size.height), size, at);
+              cases++;
+            }
+          });
+        }
+      }
+    }
+  }
+  assert.ok(cases > 150, `${cases} cases`);
+  // The band is there to see: a 301-page book's front cover alone sits further left (towards the middle, its
+  // band on its right) than where a book without stacks puts it.
+  const plain = layout.openPagePlaces(0, { pageCount: 301 }, size)[0].x;
+  const stacked = layout.openPagePlaces(0, { pageCount: 301, leafThickness: layout.leafThicknessOf(true) }, size)[0].x;
+  assert.ok(stacked < plain - 5, `${stacked} vs ${plain}`);
+});

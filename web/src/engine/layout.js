@@ -1,7 +1,7 @@
 // The engine's layout in plain JS (positions, page places, zoom) for the 2D fallback, which has no wasm,
 // and the engine's constants for every JS module; tests/node/layout.test.mjs holds both to the engine.
 import {
-  DEFAULT_PAGE_HEIGHT, DEFAULT_PAGE_WIDTH, DEFAULT_SHOW_THROUGH, FRAME_MARGIN, MAX_LEAF_THICKNESS, MAX_PAGES, MAX_TURNS_IN_FLIGHT, MAX_ZOOM, PAPER_BLUE,
+  BOARD_THICKNESS_OF_WIDTH, DEFAULT_LEAF_THICKNESS, MAX_PAPER_DEPTH_OF_WIDTH, DEFAULT_PAGE_HEIGHT, DEFAULT_PAGE_WIDTH, DEFAULT_SHOW_THROUGH, FRAME_MARGIN, MAX_LEAF_THICKNESS, MAX_PAGES, MAX_TURNS_IN_FLIGHT, MAX_ZOOM, PAPER_BLUE,
   PAPER_GREEN, PAPER_RED, SINGLE_FRAME_MARGIN, TURN_QUEUED, TURN_REFUSED, TURN_STARTED,
 } from '../../../dist/engine-constants.js';
 import { directionFacts } from './direction.js';
@@ -68,13 +68,37 @@ export function openPages(position, pageCount, display) {
 // ---- where the pages lie: the camera's picture at the page plane, as cpp/core/book_camera.cpp ----------
 
 /**
- * How far a book at rest at `position` sits from the middle, in page widths towards its unturned side:
- * 1/2 with the front cover alone on that side, -1/2 with the back cover alone on the other, else 0 (and
- * 0 in single display or with `center` false). As Book::settledCenterShift.
+ * How deep a stack of `leaves` leaves lies, in page widths: a board for a hard top or bottom leaf (a
+ * cover), the paper's `leafThickness` a leaf, approaching its cap smoothly. As stackDepth in book_stacks.cpp.
  */
-export function centerShift(position, { pageCount = 0, display = 'double', center = true } = {}) {
-  if (!center || display !== 'double') return 0;
-  return 0.5 * ((position < Math.ceil(pageCount / 2) ? 1 : 0) - (position > 0 ? 1 : 0));
+export function stackDepthOfWidth(leaves, topHard, bottomHard, leafThickness) {
+  if (leaves <= 0 || !(leafThickness > 0)) return 0;
+  const top = topHard ? BOARD_THICKNESS_OF_WIDTH : 0;
+  const bottom = bottomHard && leaves > (topHard ? 1 : 0) ? BOARD_THICKNESS_OF_WIDTH : 0;  // one leaf: its board counts once
+  const paperLeaves = leaves - (top > 0 ? 1 : 0) - (bottom > 0 ? 1 : 0);
+  const raw = paperLeaves * leafThickness;
+  const paper = paperLeaves > 0 ? raw / Math.sqrt(1 + (raw / MAX_PAPER_DEPTH_OF_WIDTH) ** 2) : 0;
+  return top + paper + bottom;
+}
+
+/** A `thickness` option (true, false or a leaf's thickness of the page width) as the leaf's thickness. As leafThicknessOf in book_bindings.cpp. */
+export const leafThicknessOf = (thickness) => (thickness === true ? DEFAULT_LEAF_THICKNESS : thickness || 0);
+
+/**
+ * How far a book at rest at `position` sits from the middle, in page widths towards its unturned side:
+ * half of a page and the edge band of its stack (as deep as the stack) with the front cover alone on that
+ * side, as much the other way with the back cover alone, else 0 (and 0 in single display or with `center`
+ * false). `book.leafThickness` (of the page width; default 0, no stacks) and `book.hardPages` (page
+ * indices) give the stack. As Book::settledCenterShift.
+ */
+export function centerShift(position, { pageCount = 0, display = 'double', center = true, leafThickness = 0, hardPages = [] } = {}) {
+  const leaves = Math.ceil(pageCount / 2);
+  const side = (position < leaves ? 1 : 0) - (position > 0 ? 1 : 0);
+  if (!center || display !== 'double' || side === 0) return 0;
+  // One stack holds every leaf (leaf l holds pages 2l and 2l + 1); its top is the last leaf on the turned side.
+  const hard = (leaf) => hardPages.includes(2 * leaf) || hardPages.includes(2 * leaf + 1);
+  const [top, bottom] = side > 0 ? [0, leaves - 1] : [leaves - 1, 0];
+  return 0.5 * (1 + stackDepthOfWidth(leaves, hard(top), hard(bottom), leafThickness)) * side;
 }
 
 /**
