@@ -112,3 +112,101 @@ test('browser: an image that fails after its placeholder was drawn leaves paper 
   expect(await page.evaluate(() => window.errors)).toEqual([[4, 'source']]);
   expect(problems).toEqual([]);
 });
+
+test('browser: the opening pages\' placeholders named by URL show as images under the canvas where the surface then draws those pages, from before the book is ready until that frame is on screen and they have painted, then go; a page without one gets none (WebGL)', async ({ page }) => {
+  const problems = await openReady(page, FIXTURE);
+  const seen = await page.evaluate(async () => {
+    const container = document.getElementById('container');
+    const log = [];  // the posters added (their images' places in the container) and removed, and `ready`, in order
+    let gone = () => {};
+    new MutationObserver((records) => {
+      const origin = container.getBoundingClientRect();
+      for (const record of records) {
+        for (const node of record.addedNodes) {
+          if (!node.classList?.contains('conecurl-poster')) continue;
+          const images = [...node.querySelectorAll('img')].map((img) => {
+            const r = img.getBoundingClientRect();
+            return { page: Number(img.dataset.page), x: r.x - origin.x, y: r.y - origin.y, width: r.width, height: r.height, src: img.src.slice(0, 15) };
+          });
+          // Both positioned, neither with a z-index: the canvas, later in the document, paints over the poster.
+          const next = node.nextElementSibling;
+          const order = { before: next?.tagName, canvasPosition: getComputedStyle(next).position, zIndex: getComputedStyle(node).zIndex, position: getComputedStyle(node).position };
+          log.push({ at: 'added', images, order });
+        }
+        for (const node of record.removedNodes) {
+          if (node.classList?.contains('conecurl-poster')) {
+            log.push({ at: 'removed', decoded: [...node.querySelectorAll('img')].every((img) => img.complete && img.naturalWidth > 0) });
+            gone();
+          }
+        }
+      }
+    }).observe(container, { childList: true, subtree: true });
+    const placeholder = (i) => window.makeNumberedPage(i, 32, 40).toDataURL('image/png');
+    // Every page names a placeholder by URL but page 2.
+    const pages = Array.from({ length: 8 }, (_, i) => ({ src: window.makeNumberedPage(i), ...(i === 2 ? {} : { placeholder: placeholder(i) }) }));
+    const places = () => window.book.surface.openPagePlaces().map(({ page: p, x, y, width, height }) => ({ page: p, x, y, width, height }));
+    // `ready` goes out in the task after create() resolved (book-events.js); each book is waited for until it
+    // is told and its poster has gone by itself (not by the next book's destroy()).
+    const open = async (options) => {
+      let told;
+      const ready = new Promise((resolve) => { told = resolve; });
+      const removed = new Promise((resolve) => { gone = resolve; });
+      await window.openBook({ pages, display: 'double', ...options, on: { ready: () => { log.push({ at: 'ready' }); told(); } } });
+      await Promise.all([ready, removed]);
+      return places();
+    };
+    const spread = await open({ startPage: 1 });  // pages 1 and 2
+    const cover = await open({});  // the front cover alone, centred
+    return { log, spread, cover, left: container.querySelectorAll('.conecurl-poster').length };
+  });
+  // Each poster is laid before its book is ready (create() resolves at the first frame, ready is told in the
+  // next task; the poster goes two frames after that frame and its images' decoding, before or after ready).
+  const order = seen.log.map((e) => e.at);
+  expect([order[0], order[3], [order[1], order[2]].sort(), [order[4], order[5]].sort()])
+    .toEqual(['added', 'added', ['ready', 'removed'], ['ready', 'removed']]);
+  expect(seen.log.filter((e) => e.at === 'removed').map((e) => e.decoded)).toEqual([true, true]);
+  const [spreadPoster, coverPoster] = seen.log.filter((e) => e.at === 'added');
+  for (const poster of [spreadPoster, coverPoster]) {
+    expect(poster.order).toEqual({ before: 'CANVAS', canvasPosition: 'relative', zIndex: 'auto', position: 'absolute' });
+  }
+  expect(seen.spread.map((p) => p.page)).toEqual([1, 2]);
+  expect(spreadPoster.images.map((p) => p.page)).toEqual([1]);  // page 2 names no placeholder
+  expect(coverPoster.images.map((p) => p.page)).toEqual([0]);
+  const near = (a, b) => Math.abs(a - b) < 0.75;
+  for (const [poster, drawn] of [[spreadPoster, seen.spread], [coverPoster, seen.cover]]) {
+    for (const image of poster.images) {
+      const place = drawn.find((p) => p.page === image.page);
+      expect(['x', 'y', 'width', 'height'].every((k) => near(image[k], place[k])), JSON.stringify({ image, place })).toBe(true);
+      expect(image.src).toBe('data:image/png;');
+    }
+  }
+  expect(seen.left).toBe(0);
+  expect(problems).toEqual([]);
+});
+
+test('browser: a poster whose placeholder never arrives waits under the canvas, and goes as soon as the surface shows other pages or another zoom, and on destroy (WebGL)', async ({ page }) => {
+  // The placeholders' server never answers: their images never load, so nothing but the book's changes removes the poster.
+  await page.route('**/never/*.png', () => {});
+  const problems = await openReady(page, FIXTURE);
+  const counts = await page.evaluate(async () => {
+    const container = document.getElementById('container');
+    const posters = () => container.querySelectorAll('.conecurl-poster').length;
+    const pages = Array.from({ length: 8 }, (_, i) => ({ src: window.makeNumberedPage(i), placeholder: `/never/${i}.png` }));
+    const seen = {};
+    await window.openBook({ pages, display: 'double', startPage: 1 });  // resolves once its neighbours loaded too
+    seen.idle = posters();
+    await window.book.flip(3, { animate: false });  // pages 3 and 4: no leaf moves
+    seen.flipped = posters();
+    await window.openBook({ pages, display: 'double', startPage: 1 });
+    seen.again = posters();
+    window.book.zoom = 2;  // about the middle
+    await window.book.whenIdle();
+    seen.zoomed = posters();
+    await window.openBook({ pages, display: 'double', startPage: 1 });
+    window.book.destroy();
+    seen.destroyed = posters();
+    return seen;
+  });
+  expect(counts).toEqual({ idle: 1, flipped: 0, again: 1, zoomed: 0, destroyed: 0 });
+  expect(problems).toEqual([]);
+});

@@ -14,7 +14,8 @@ import {
 } from './book-wiring.js';
 import { makeReadAloud } from './book-read-aloud.js';
 import { makeDocumentApi, planViewer } from '../document/document-wiring.js';
-import { MAX_ZOOM, displayFor, openPages } from '../engine/layout.js';
+import { DEFAULT_PAGE_ASPECT, MAX_ZOOM, displayFor, openPages } from '../engine/layout.js';
+import { posterStillFits, showFirstViewPoster } from '../layers/first-view-poster.js';
 
 const REFIT_DELAY_MS = 150;  // images are fitted to a new size or zoom once it has come to rest
 
@@ -45,6 +46,7 @@ export class BookController extends EventTarget {
     this._turns = new BookTurns(this._port);
     this._html = null;  // HTML pages, once _build() has loaded their module
     this._text = null;  // a PDF's selectable text, once _build() has loaded its module (text-layer.js)
+    this._poster = null;  // the first view's placeholders as images, until the surface shows its pages
     this._links = makeLinkLayer(this._port);
     this._layers = [this._links];
     this._reducedMotion = typeof matchMedia === 'function' ? matchMedia('(prefers-reduced-motion: reduce)') : null;
@@ -215,6 +217,7 @@ export class BookController extends EventTarget {
     this._document?.destroy();
     this._document = null;
     for (const layer of this._layers) layer.remove();
+    this._removePoster();
     this._input?.stop();
     this._stopWatchingSize?.();
     this._stopCompanions?.();  // page memory, autoplay, the page sound
@@ -250,6 +253,7 @@ export class BookController extends EventTarget {
     const opening = openingPageOf(companionModules, this._settings, this.pageCount);
     prefetchOpening(this._port, display, opening);  // fetched and decoded while the surface is made
     this._prepareCanvas();
+    this._showPoster(display, opening);  // the opening pages' placeholders until the surface shows them
     const HtmlPages = htmlPages && (await htmlPages).HtmlPages;
     this._stopIfDestroyed();
     if (HtmlPages) this._mountHtml(HtmlPages);
@@ -276,6 +280,7 @@ export class BookController extends EventTarget {
   // room kept for it), a document's selectable text under the links, and the edge marks, imported only now;
   // then laid over the open pages.
   async _buildAfterFirstSpread(viewer) {
+    this._port.afterFirstFrame(() => this._retirePoster());  // the surface's frame of those pages is on screen
     const parts = loadLateParts(this._port, this._links.element);
     const [input, controls, text, EdgeMarks] = await Promise.all([parts.input, viewer.attach(), parts.text, parts.edgeMarks]);
     if (this._destroyed) {  // made as destroy() ran: it found none to remove
@@ -299,6 +304,28 @@ export class BookController extends EventTarget {
       task();
     });
     this._deferred.add(cancel);
+  }
+
+  // The first view's poster (layers/first-view-poster.js), laid from the layout rules the surface draws by.
+  _showPoster(display, opening) {
+    const book = { entries: this._pages, pageCount: this.pageCount, display, direction: this._settings.direction,
+      pageAspect: this._settings.pageAspect || DEFAULT_PAGE_ASPECT, center: this._settings.center, ...this._stackShape() };
+    this._poster = showFirstViewPoster(this._canvas, book, this._layoutSize, opening);
+  }
+
+  // How the surface to come lays its stacks, for the poster: a still surface draws none (Flipbook's engine does).
+  _stackShape() { return {}; }
+
+  // The surface covers the poster now; it goes once its images have painted too (each is the page's
+  // largest contentful paint where the canvas is none): first-view-poster.js removeOncePainted.
+  _retirePoster() {
+    const poster = this._poster;
+    poster?.removeOncePainted().then(() => { if (this._poster === poster) this._poster = null; });
+  }
+
+  _removePoster() {
+    this._poster?.remove();
+    this._poster = null;
   }
 
   // The book draws on a fresh canvas in place of its own (Flipbook: the context its canvas was given is not the one wanted).
@@ -370,10 +397,14 @@ export class BookController extends EventTarget {
       return;
     }
     const places = this._surface.openPagePlaces().filter((place) => place.page >= 0);
+    if (this._poster && !posterStillFits(this._poster, places)) this._removePoster();  // zoomed, or other pages open
     for (const layer of this._layers) layer.place(places);
   }
 
-  _hideLayers() { for (const layer of this._layers) layer.hide(); }
+  _hideLayers() {
+    this._removePoster();  // a moving leaf is the surface's alone
+    for (const layer of this._layers) layer.hide();
+  }
 
   _onLink(link, event) {
     const detail = { page: link.page, href: link.href, toPage: link.toPage };
@@ -385,6 +416,7 @@ export class BookController extends EventTarget {
   // Size, pixel ratio or display options changed: 'auto' chooses again (layout.js displayFor, from the
   // settings' minPageWidth, direction, pageAspect); a switch keeps surface and page and says `displaychange`.
   _relayout() {
+    this._removePoster();  // laid for the first size
     const [display, previous] = [displayFor(this._settings.display, this._layoutSize, this._settings), this.display];
     if (display !== previous) {
       this._surface.setDisplay(display);

@@ -64,7 +64,7 @@ export function createShell(container, { label, direction }) {
   // The browser keeps the scrolling that does not turn pages (swipes go along the turn): a stroke across
   // the turn still scrolls the host page. Pinches and double taps stay with the book (it zooms itself);
   // zoomed in, book-zoom.js makes it 'none' (one finger pans the book).
-  canvas.style.cssText = `display:block;width:100%;height:100%;touch-action:${touchAction}`;
+  canvas.style.cssText = `position:relative;display:block;width:100%;height:100%;touch-action:${touchAction}`;  // positioned: over the first-view poster
 
   const status = document.createElement('div');
   status.setAttribute('role', 'status');

@@ -4,6 +4,7 @@
 import { afterFirstFrame, whenIdle } from './after-first-frame.js';
 import { loadEngine } from '../engine/load-engine.js';
 import { BookView } from '../surfaces/book-view.js';
+import { leafThicknessOf } from '../engine/layout.js';
 import { BookController } from './book-controller.js';
 import { DOCUMENT_OPTIONS, describeValue, hardPageIndices, validateOptions } from './options.js';
 import { contextBudget } from '../surfaces/context-budget.js';
@@ -140,6 +141,11 @@ export class Flipbook extends BookController {
     this._replaceCanvas();
     this._contextLease = contextBudget().lease(this._canvas);
     this._contextLease.admit();
+  }
+
+  // The engine draws the stacks' edge bands, and centres a closed book on its page and its band (layout.js centerShift).
+  _stackShape() {
+    return { leafThickness: leafThicknessOf(this._settings.thickness), hardPages: hardPageIndices(this._pages, this._settings.hardCovers) };
   }
 
   async _makeSurface(display) {
