@@ -117,14 +117,11 @@ BookRenderer::Kind BookRenderer::kindOf(const Program& program) const {
     return Kind::composite;
 }
 
-bool BookRenderer::build(Program& program) {
-    if (program.id) return true;
-    if (!error_.empty()) return false;
+ProgramSource BookRenderer::sourceOf(Kind kind) const {
     const std::string prelude = kShaderPrelude;
     const std::string leafVertex = std::string(shaders::cone_curl_glsl) + shaders::page_vert;
     const std::string flatVertex = prelude + shaders::cone_curl_glsl + shaders::flat_page_vert;
     ProgramSource source;
-    const Kind kind = kindOf(program);
     switch (kind) {
         case Kind::leaf:
             source.vertex = prelude + leafVertex;
@@ -149,8 +146,22 @@ bool BookRenderer::build(Program& program) {
             source.fragment = prelude + shaders::composite_frag;
             break;
     }
+    return source;
+}
+
+void BookRenderer::start(Program& program) {
+    if (program.id || program.pending.program || !error_.empty()) return;
+    program.pending = startProgram(sourceOf(kindOf(program)));
+}
+
+bool BookRenderer::build(Program& program) {
+    if (program.id) return true;
+    if (!error_.empty()) return false;
+    const Kind kind = kindOf(program);
+    start(program);  // unless prepareTurn() or createGpuObjects() asked for it already
+    PendingProgram pending = program.pending;
     program = Program{};
-    program.id = buildProgram(source, error_);
+    program.id = finishProgram(pending, error_);
     if (!program.id) return false;
     locate(program);
     // What never changes is set once, here: samplers, the light, the paper colour, the shadow's strength.
@@ -186,11 +197,37 @@ bool BookRenderer::build(Program& program) {
     return true;
 }
 
-void BookRenderer::prepareTurn() {
-    if (!ok() || !makeCurrent()) return;
-    build(leafProgram_);  // each leaves its program in use (programInUse_ follows), as a frame's useProgram would
-    if (options_.shadows) build(shadowProgram_);
-    if (options_.shadows || canvasSamples_ > 0) build(compositeProgram_);
+bool BookRenderer::prepareTurn() {
+    if (!ok() || !makeCurrent()) return true;
+    Program* const turn[] = {&leafProgram_, options_.shadows ? &shadowProgram_ : nullptr,
+                             options_.shadows || canvasSamples_ > 0 ? &compositeProgram_ : nullptr};
+    // Where the driver compiles beside the page (KHR_parallel_shader_compile), this call asks and a later
+    // one checks, once the driver says it is done (a bounded number of asks: a driver that never says so
+    // is waited for). Without it the compile happens when its status is first asked (Chromium on
+    // SwiftShader: a check one idle task later waited 106-456 ms, against 72-245 ms asked and checked
+    // at once), so it is done in this call.
+    if (parallelCompile_) {
+        bool asked = false;
+        for (Program* program : turn) {
+            if (!program || program->id || program->pending.program) continue;
+            start(*program);
+            asked = true;
+        }
+        if (asked) {
+            glFlush();  // on their way to the driver now, not at the end of the task
+            turnPolls_ = 0;
+            return false;
+        }
+        if (++turnPolls_ < kMaxTurnPolls) {
+            for (Program* program : turn) {
+                if (program && program->pending.program && !programCompleted(program->pending)) return false;
+            }
+        }
+    }
+    for (Program* program : turn) {
+        if (program) build(*program);  // each leaves its program in use (programInUse_ follows), as useProgram would
+    }
+    return true;
 }
 
 void BookRenderer::useProgram(Program& program) {
@@ -247,7 +284,12 @@ void BookRenderer::createGpuObjects() {
         glGetFloatv(kMaxTextureMaxAnisotropy, &maxAnisotropy_);
     }
 
-    // The resting frame's programs now, so a missing feature fails create(); the turn's on first use.
+    // KHR_parallel_shader_compile: compiles run beside the page, and prepareTurn() can ask whether they are done.
+    parallelCompile_ = emscripten_webgl_enable_extension(context_, "KHR_parallel_shader_compile");
+    // The resting frame's programs now, so a missing feature fails create(); the turn's on first use. Both
+    // are asked for before either is checked, so the driver works on them together.
+    start(stackProgram_);
+    start(flatProgram_);
     if (!build(stackProgram_) || !build(flatProgram_)) return;
     // Every pass clears to transparent. Blending: the shadow mask's darkest-wins (GL_MAX, which ignores
     // the factors) and the shadow received on the resting pages, which multiplies their colour by the
@@ -296,6 +338,9 @@ void BookRenderer::createGpuObjects() {
 }
 
 void BookRenderer::destroyGpuObjects() {
+    for (Program* program : {&leafProgram_, &shadowProgram_, &stackProgram_, &flatProgram_, &compositeProgram_}) {
+        abandonProgram(program->pending);  // asked for and never checked
+    }
     glDeleteProgram(leafProgram_.id);
     glDeleteProgram(shadowProgram_.id);
     glDeleteProgram(stackProgram_.id);

@@ -21,6 +21,7 @@
 #include "book.hpp"
 #include "book_camera.hpp"
 #include "book_stacks.hpp"
+#include "gl_program.hpp"
 #include "edge_marks_renderer.hpp"
 #include "leaf_placement.hpp"
 #include "page_grid.hpp"
@@ -123,10 +124,14 @@ public:
     // Tabs and ticks on the page blocks' fore-edge (edge_marks_renderer.hpp), drawn over the stacks.
     EdgeMarksRenderer& edgeMarks() { return edgeMarks_; }
 
-    // Links the programs a turning frame draws that resting frames do not (the leaf; with shadows the
+    // Readies the programs a turning frame draws that resting frames do not (the leaf; with shadows the
     // shadow and the shadow received; on a multisampled canvas the composite), so the first turn does
-    // not pay for them: the JS layer calls it in idle time once the first view is shown.
-    void prepareTurn();
+    // not pay for them: the JS layer calls it in idle time once the first view is shown, and again in a
+    // later idle task while it returns false. Where the browser has KHR_parallel_shader_compile, the
+    // first call asks for their compiles and links and returns false, and a later one, once the driver
+    // says they are done, checks them and returns true: no call waits on a compile. Without it, one call
+    // compiles, links and checks them. A turn before then links its own at its first frame, as it waits.
+    bool prepareTurn();
 
     // After a lost context is restored: recreates every GL object from CPU-side state. Page images
     // are GPU-only and must be set again (the JS layer keeps their sources).
@@ -151,6 +156,7 @@ private:
     // lookups) and the value each uniform was last given, so an unchanged value costs no GL call.
     struct Program {
         GLuint id = 0;
+        PendingProgram pending;  // asked for (start) and not yet checked
         std::array<GLint, kUniformCount> location{};
         std::array<std::array<float, 16>, kUniformCount> value{};
         std::array<bool, kUniformCount> known{};
@@ -159,7 +165,9 @@ private:
     // resting book links only the two its frame draws (stacks, flat pages) and a turn the others.
     enum class Kind { leaf, shadow, stack, flat, composite };
     Kind kindOf(const Program& program) const;
-    bool build(Program& program);  // compiles, links and sets the constant uniforms; false (error_) on failure
+    ProgramSource sourceOf(Kind kind) const;
+    void start(Program& program);  // asks for its compile and link, checking nothing (gl_program.hpp)
+    bool build(Program& program);  // compiles (unless started), links and sets the constant uniforms; false (error_) on failure
     void locate(Program& program);
     // Sets `count` floats of uniform `u` of the program in use (1-4: a vector, 9 or 16: a matrix).
     void setUniform(Program& program, Uniform u, const float* values, int count);
@@ -280,6 +288,9 @@ private:
         }
     } stackKey_;
     GLuint programInUse_ = 0;
+    bool parallelCompile_ = false;  // KHR_parallel_shader_compile enabled
+    static constexpr int kMaxTurnPolls = 30;
+    int turnPolls_ = 0;  // prepareTurn()'s asks of the driver since it started the turn's programs
     std::array<GLuint, 4> boundTextures_{};  // per texture unit, as last bound here (3: the cache)
     GLenum blendEquation_ = 0;
     int activeUnit_ = -1;

@@ -616,3 +616,75 @@ test('browser: a book\'s first view links only the two programs it draws, idle t
     { shadows: false, firstView: 2, idle: 1, turns: 0 },
   ]);
 });
+
+test('browser: where the driver compiles beside the page (KHR_parallel_shader_compile, stood in for here), idle time asks for a turn\'s programs in one task, asks only whether they are done until the driver says so, and checks them after: no idle task waits on a compile (counts of compileShader, linkProgram and status queries by idle task)', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    const c = window.__counts.glByName;
+    // The extension, answered by the test: its driver says a program is done only once window.__driverDone.
+    const COMPLETION_STATUS_KHR = 0x91B1;
+    const proto = WebGL2RenderingContext.prototype;
+    const { getExtension, getProgramParameter } = proto;
+    let completionAsks = 0;
+    window.__driverDone = false;
+    proto.getExtension = function fakeParallel(name) {
+      return name === 'KHR_parallel_shader_compile' ? { COMPLETION_STATUS_KHR } : getExtension.call(this, name);
+    };
+    proto.getProgramParameter = function fakeCompletion(program, pname) {
+      if (pname !== COMPLETION_STATUS_KHR) return getProgramParameter.call(this, program, pname);  // counted as before
+      completionAsks++;
+      return window.__driverDone;
+    };
+    const snap = () => ({ compile: c.compileShader ?? 0, link: c.linkProgram ?? 0, shaderQueries: c.getShaderParameter ?? 0, programQueries: c.getProgramParameter ?? 0, completionAsks });
+    const idleCallback = window.requestIdleCallback;
+    const tasks = [];  // what each idle callback of the page asked of WebGL, in order
+    window.requestIdleCallback = (callback, options) => idleCallback((deadline) => {
+      const before = snap();
+      try { callback(deadline); } finally {
+        const after = snap();
+        const asked = Object.fromEntries(Object.keys(after).map((k) => [k, after[k] - before[k]]));
+        if (Object.values(asked).some((n) => n > 0)) tasks.push(asked);
+      }
+    }, options);
+    const idleRounds = async (n, until = () => false) => {
+      for (let i = 0; i < n && !until(); i++) await new Promise((resolve) => idleCallback(resolve));
+    };
+    try {
+      window.book?.destroy();
+      const pages = Array.from({ length: 8 }, (_, i) => window.makeNumberedPage(i));
+      const linkedBefore = snap().link;
+      window.book = await window.Flipbook.create(document.getElementById('container'), { pages, display: 'double', duration: 150, startPage: 1, shadows: true });
+      const firstView = snap().link - linkedBefore;
+      await window.book.whenIdle();
+      await window.settle();
+      await idleRounds(40, () => tasks.some((t) => t.compile > 0));
+      await idleRounds(3);  // the driver not done: the book only asks
+      const whileCompiling = tasks.splice(0);
+      window.__driverDone = true;
+      await idleRounds(40, () => tasks.some((t) => t.programQueries > 0));
+      const afterDone = tasks.splice(0);
+      const linked = snap().link;
+      const landed = (await window.book.next()) && (await window.book.prev());
+      return { firstView, whileCompiling, afterDone, turnLinks: snap().link - linked, landed };
+    } finally {
+      window.requestIdleCallback = idleCallback;
+      Object.assign(proto, { getExtension, getProgramParameter });
+    }
+  });
+  console.log(`idle tasks' GL asks while the driver compiles: ${JSON.stringify(result.whileCompiling)}; once it is done: ${JSON.stringify(result.afterDone)}`);
+  expect(result.firstView).toBe(2);
+  // The leaf, its shadow and the shadow received: both stages of each asked for, nothing checked.
+  expect(result.whileCompiling[0]).toEqual({ compile: 6, link: 3, shaderQueries: 0, programQueries: 0, completionAsks: 0 });
+  const polls = result.whileCompiling.slice(1);
+  expect(polls.length).toBeGreaterThanOrEqual(1);
+  for (const poll of polls) {
+    expect(poll).toMatchObject({ compile: 0, link: 0, shaderQueries: 0, programQueries: 0 });
+    expect(poll.completionAsks).toBe(1);  // it stops at the first program not done
+  }
+  // Once done: one ask a program, then each one's link status (and its uniforms), no stage's status.
+  const checking = result.afterDone.find((t) => t.programQueries > 0);
+  expect(checking).toMatchObject({ compile: 0, link: 0, shaderQueries: 0, completionAsks: 3 });
+  expect(checking.programQueries).toBeGreaterThanOrEqual(3);
+  expect(result.landed).toBe(true);
+  expect(result.turnLinks).toBe(0);
+});

@@ -362,12 +362,25 @@ export function engineSuite(engine) {
         window.refused = 0;  // requests the browser refused (fullscreenerror), each answered by another click
         window.book.addEventListener('fullscreenchange', (e) => window.changes.push(e.detail.fullscreen));
         document.addEventListener('fullscreenerror', () => { window.refused += 1; });
+        window.windowed = [innerWidth, innerHeight];  // the viewport out of fullscreen
       });
-      const button = () => evaluate(() => {
-        const b = Array.from(document.querySelectorAll('[role="toolbar"] button')).find((el) => /fullscreen/i.test(el.getAttribute('aria-label') || el.textContent));
-        const r = b.getBoundingClientRect();
-        return { x: r.x + r.width / 2, y: r.y + r.height / 2 };
-      });
+      // Where the button is once the layout has settled: out of fullscreen, the viewport back to its size
+      // (Firefox tells the change before its window is restored) and the button where it was a frame ago.
+      const button = async () => {
+        await browser.waitFor(() => document.fullscreenElement !== null || (innerWidth === window.windowed[0] && innerHeight === window.windowed[1]));
+        return browser.waitFor(() => new Promise((resolve) => {
+          const at = () => {
+            const b = Array.from(document.querySelectorAll('[role="toolbar"] button')).find((el) => /fullscreen/i.test(el.getAttribute('aria-label') || el.textContent));
+            const r = b.getBoundingClientRect();
+            return { x: r.x + r.width / 2, y: r.y + r.height / 2 };
+          };
+          const before = at();
+          requestAnimationFrame(() => requestAnimationFrame(() => {
+            const now = at();
+            resolve(now.x === before.x && now.y === before.y ? now : false);
+          }));
+        }));
+      };
       for (const round of [1, 2]) {
         // A real click: entering fullscreen needs a user gesture. A request the browser refuses (told by
         // fullscreenerror: one made while the last exit still settles) is made again by another click.

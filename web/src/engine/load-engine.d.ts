@@ -223,8 +223,8 @@ export interface BookRenderer {
   /** Fixed grid rows; 0 (default) chooses them from the canvas size for < 0.5 px error. */
   setGridRows(rows: number): void;
   maxTextureSize(): number;
-  /** Link the programs a turning frame draws that resting frames do not (each is otherwise linked at its first draw). */
-  prepareTurn(): void;
+  /** Readies the programs a turning frame draws that resting frames do not (each is otherwise linked at its first draw): true once they are linked; false (ask again in a later idle task) while the driver still compiles them beside the page, where the browser has KHR_parallel_shader_compile (the first call asks for them, later ones ask whether they are done). */
+  prepareTurn(): boolean;
   /** After a context restore: rebuild every GL object (page images must be set again). */
   recreateGpuObjects(): void;
   /** Marks drawn on the page blocks' fore-edge from the next frame on: index tabs and search ticks at their pages' leaves; [] none. */

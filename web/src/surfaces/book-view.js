@@ -250,12 +250,12 @@ export class BookView {
   }
 
   readPixels() { return this.renderer.readPixels(); }
-  /** Links a turn's programs and draws a posed turning frame under the resting one (warm-turn.js) now (true),
-   * or says false while a frame is coming; a turn under way links its own. */
+  /** Readies a turn's programs and draws a posed turning frame under the resting one (warm-turn.js): true
+   * once done, false to be called again in a later idle task (a frame is coming, or the driver still
+   * compiles the programs beside the page: BookRenderer::prepareTurn); a turn under way links its own. */
   prepareTurn() {
     if (this._frames.moving || this._context.lost || !this.renderer) return true;
-    if (this._frames.pending) return false;
-    this.renderer.prepareTurn();
+    if (this._frames.pending || !this.renderer.prepareTurn()) return false;
     if (this._poseFrom === null) this._warmDraws += warmTurn(this.book, this.renderer, () => this.fitCanvas());
     return true;
   }
