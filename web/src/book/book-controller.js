@@ -308,9 +308,13 @@ export class BookController extends EventTarget {
 
   // The first view's poster (layers/first-view-poster.js), laid from the layout rules the surface draws by.
   _showPoster(display, opening) {
-    const book = { entries: this._pages, pageCount: this.pageCount, display, direction: this._settings.direction,
+    this._poster = showFirstViewPoster(this._canvas, { entries: this._pages, ...this._layoutShape(display) }, this._layoutSize, opening);
+  }
+
+  // This book's shape in `display` as layout.js lays it out: what the poster and a still surface place pages by.
+  _layoutShape(display) {
+    return { pageCount: this.pageCount, display, direction: this._settings.direction,
       pageAspect: this._settings.pageAspect || DEFAULT_PAGE_ASPECT, center: this._settings.center, ...this._stackShape() };
-    this._poster = showFirstViewPoster(this._canvas, book, this._layoutSize, opening);
   }
 
   // How the surface to come lays its stacks, for the poster: a still surface draws none (Flipbook's engine does).

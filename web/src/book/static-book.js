@@ -16,13 +16,7 @@ export class StaticBook extends BookController {
   }
 
   _makeSurface(display) {
-    return new CanvasSurface(this._canvas, {
-      pageCount: this.pageCount,
-      display,
-      direction: this._settings.direction,
-      pageAspect: this._settings.pageAspect,
-      center: this._settings.center,
-    });
+    return new CanvasSurface(this._canvas, this._layoutShape(display));  // no stacks: a still surface draws none
   }
 
   // Builds the first view (BookController's _build, through `this`); resolves with the book once its
