@@ -184,6 +184,43 @@ test('browser: the opening pages\' placeholders named by URL show as images unde
   expect(problems).toEqual([]);
 });
 
+test('browser: a page the poster shows asks for its own image only once its placeholder has painted (the small picture first; the page\'s largest contentful paint waits on no big image), a page without one at once (WebGL; Element Timing and the order of fetches)', async ({ page }) => {
+  const problems = await openReady(page, FIXTURE);
+  const seen = await page.evaluate(async () => {
+    // Pages by URL (blob:), so the book fetches them; all but page 2 name a placeholder by URL.
+    const blobUrl = async (i) => URL.createObjectURL(await new Promise((resolve) => window.makeNumberedPage(i).toBlob(resolve, 'image/png')));
+    const sources = await Promise.all(Array.from({ length: 8 }, (_, i) => blobUrl(i)));
+    const pages = sources.map((src, i) => ({ src, ...(i === 2 ? {} : { placeholder: window.makeNumberedPage(i, 32, 40).toDataURL('image/png') }) }));
+    const asked = {};  // page -> performance.now() when its own image was fetched
+    const fetchOf = window.fetch;
+    window.fetch = (input, init) => {
+      const page = sources.indexOf(String(input));
+      if (page >= 0 && !(page in asked)) asked[page] = performance.now();
+      return fetchOf(input, init);
+    };
+    const painted = {};  // page -> its poster image's paint (Element Timing's renderTime)
+    new PerformanceObserver((list) => {
+      for (const entry of list.getEntries()) {
+        const match = /^conecurl-poster-\d+-(\d+)$/.exec(entry.identifier);
+        if (match) painted[Number(match[1])] = entry.renderTime || entry.loadTime;
+      }
+    }).observe({ type: 'element', buffered: true });
+    try {
+      await window.openBook({ pages, display: 'double', startPage: 1 });
+    } finally {
+      window.fetch = fetchOf;
+    }
+    await window.book.whenIdle();
+    return { asked, painted, open: window.book.surface.openPagePlaces().map((p) => p.page) };
+  });
+  console.log(`fetched at ${JSON.stringify(seen.asked)}; poster painted at ${JSON.stringify(seen.painted)} (ms)`);
+  expect(seen.open).toEqual([1, 2]);
+  expect(seen.painted[1]).toBeGreaterThan(0);
+  expect(seen.asked[1]).toBeGreaterThanOrEqual(seen.painted[1]);
+  expect(seen.asked[2]).toBeLessThan(seen.painted[1]);  // no placeholder: asked as the book opened
+  expect(problems).toEqual([]);
+});
+
 test('browser: a poster whose placeholder never arrives waits under the canvas, and goes as soon as the surface shows other pages or another zoom, and on destroy (WebGL)', async ({ page }) => {
   // The placeholders' server never answers: their images never load, so nothing but the book's changes removes the poster.
   await page.route('**/never/*.png', () => {});

@@ -37,3 +37,34 @@ export function whenIdle(task) {
   const id = requestIdleCallback(task, { timeout: IDLE_LATEST_MS });
   return () => cancelIdleCallback(id);
 }
+
+/**
+ * Calls `task` once, after `count` animation frames have run, or at once when the page is or becomes hidden
+ * (a hidden page runs none). Frames, not time: each one the browser renders is a chance to paint. Returns its cancel.
+ */
+export function afterFrames(count, task) {
+  let frame = 0;
+  let frames = 0;
+  const cancel = () => {
+    if (frame) cancelAnimationFrame(frame);
+    frame = 0;
+    document.removeEventListener('visibilitychange', onHidden);
+  };
+  const run = () => {
+    cancel();
+    task();
+  };
+  const onHidden = () => { if (document.visibilityState === 'hidden') run(); };
+  if (typeof requestAnimationFrame !== 'function' || document.visibilityState === 'hidden') {
+    task();
+    return () => {};
+  }
+  const step = () => {
+    frame = 0;
+    if (++frames < count) frame = requestAnimationFrame(step);
+    else run();
+  };
+  document.addEventListener('visibilitychange', onHidden);
+  frame = requestAnimationFrame(step);
+  return cancel;
+}

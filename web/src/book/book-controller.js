@@ -5,7 +5,7 @@
 // Over 350 lines because it is the whole public API of a book: each member a line or two here, its work in its parts.
 import { createShell } from './book-shell.js';
 import { BookEvents } from './book-events.js';
-import { afterFirstFrame } from './after-first-frame.js';
+import { afterFirstFrame, afterFrames } from './after-first-frame.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { BookTurns } from './book-turns.js';
 import {
@@ -18,6 +18,13 @@ import { DEFAULT_PAGE_ASPECT, MAX_ZOOM, displayFor, openPages } from '../engine/
 import { posterStillFits, showFirstViewPoster } from '../layers/first-view-poster.js';
 
 const REFIT_DELAY_MS = 150;  // images are fitted to a new size or zoom once it has come to rest
+
+// How many animation frames the book waits at most for its poster to be told painted before it makes its
+// context, and after its surface is made the opening pages' own images (first-view-poster.js resolves at once
+// where it cannot be painted: a hidden page, an element not rendered or off screen). Its paint is in the first
+// of them; it only bounds a case not foreseen.
+const POSTER_PAINT_LATEST_FRAMES = 10;
+const posterPaintBound = (task) => afterFrames(POSTER_PAINT_LATEST_FRAMES, task);
 
 export class BookController extends EventTarget {
   /**
@@ -251,9 +258,26 @@ export class BookController extends EventTarget {
     this._layoutSize = { width, height };
     const display = displayFor(this._settings.display, this._layoutSize, this._settings);
     const opening = openingPageOf(companionModules, this._settings, this.pageCount);
-    prefetchOpening(this._port, display, opening);  // fetched and decoded while the surface is made
-    this._prepareCanvas();
+    // Fetched and decoded while the surface is made. A page the poster shows asks for its own image once the
+    // poster has painted: on a slow network the small pictures come first, and the page's largest
+    // contentful paint (the poster's image) waits on none of the big ones.
+    let showPlaceholders;
+    const placeholdersShown = new Promise((resolve) => { showPlaceholders = resolve; });
+    prefetchOpening(this._port, display, opening, placeholdersShown);
     this._showPoster(display, opening);  // the opening pages' placeholders until the surface shows them
+    if (this._poster) {
+      // Painted before the canvas's context is made (a long block of the main thread where WebGL runs in
+      // software): the cover shows first, and the pages' own images are asked for before that block.
+      this._poster.whenPainted.then(showPlaceholders);
+      await new Promise((resolve) => {
+        this._poster.whenPainted.then(resolve);
+        this._defer(posterPaintBound, resolve);
+      });
+      this._stopIfDestroyed();
+    } else {
+      showPlaceholders();
+    }
+    this._prepareCanvas();
     const HtmlPages = htmlPages && (await htmlPages).HtmlPages;
     this._stopIfDestroyed();
     if (HtmlPages) this._mountHtml(HtmlPages);
@@ -261,6 +285,7 @@ export class BookController extends EventTarget {
     if (this._destroyed) surface.destroy({ releaseContext: true });  // made as destroy() ran
     this._stopIfDestroyed();
     this._surface = surface;
+    this._defer(posterPaintBound, showPlaceholders);  // at the latest: a poster never told painted
     followSurface(this._port);  // the pages a moving leaf shows, images lost with a context
     this._surface.jumpTo(this._surface.positionOfPage(opening));
     this._stopWatchingSize = watchBookSize(this._port, this._layoutSize);

@@ -247,11 +247,12 @@ export function openingPageOf(companions, settings, pageCount) {
 /**
  * The pages the first view shows at page `opening` in `display`, and their neighbours, asked for before the
  * surface is made (a WebGL context, the longest step of a first view): their fetch and decode run meanwhile,
- * sized for the canvas as it is laid out now; the store's first update() takes them up. @param {BookPort} book
+ * sized for the canvas as it is laid out now; the store's first update() takes them up. A page whose placeholder
+ * is a URL asks for its own image once `placeholdersShown` resolves (the poster's painted). @param {BookPort} book
  */
-export function prefetchOpening(book, display, opening) {
+export function prefetchOpening(book, display, opening, placeholdersShown = null) {
   const size = { width: book.canvas.clientWidth, height: book.canvas.clientHeight };
-  book.store().prefetch(size, display, positionOfPage(opening, book.pageCount(), display));
+  book.store().prefetch(size, display, positionOfPage(opening, book.pageCount(), display), placeholdersShown);
 }
 
 /**

@@ -10,8 +10,10 @@ let posters = 0;  // posters laid on this page so far: their images' Element Tim
 /**
  * Lays the placeholders of the pages open at `opening` over `canvas` (in the book's element), or returns null when none of them names a placeholder by URL (a Blob, or no placeholder: nothing to show).
  * `book`: { entries, pageCount, display, direction, pageAspect, center, leafThickness, hardPages } (layout.js's book); `size`: the canvas's CSS size.
- * Returns { element, places, remove(), removeOncePainted() }: `places` as layout.js openPagePlaces; remove() may
- * be called more than once; removeOncePainted() resolves once it removed the poster.
+ * Returns { element, places, pages, whenPainted, remove(), removeOncePainted() }: `places` as layout.js
+ * openPagePlaces; `pages` the page indices it shows; `whenPainted` a promise, resolved once its images have been
+ * painted (or failed, or the poster was removed); remove() may be called more than once; removeOncePainted()
+ * resolves once it removed the poster.
  */
 export function showFirstViewPoster(canvas, book, size, opening) {
   const position = positionOfPage(opening, book.pageCount, book.display);
@@ -35,25 +37,41 @@ export function showFirstViewPoster(canvas, book, size, opening) {
     element.append(image);
   }
   canvas.before(element);  // under the canvas (positioned, book-shell.js) and every layer laid in later
-  const remove = () => element.remove();
-  return { element, places, remove, removeOncePainted: () => removeOncePainted(element, remove) };
+  let removed;
+  const whenRemoved = new Promise((resolve) => { removed = resolve; });
+  const remove = () => {
+    element.remove();
+    removed();
+  };
+  const whenPainted = Promise.race([paintedImages(element), whenRemoved]);
+  const removeOncePainted = () => whenPainted.then(remove);
+  return { element, places, pages: places.map(({ page }) => page), whenPainted, remove, removeOncePainted };
 }
 
 /**
- * Removes the poster once each of its images has loaded or failed and has been painted: where the browser
+ * Resolves once each of `element`'s images has loaded or failed and has been painted: where the browser
  * tells paint times (Element Timing: Chromium, whose largest contentful paint drops an image removed before
  * its frame was presented), once it told each image's; elsewhere two animation frames after decoding (the
- * first one's rendering paints them). No timer stands in: where no frame is painted (a hidden tab, a main
- * thread too busy to render) the poster waits under the canvas, unseen.
+ * first one's rendering paints them). At once where it cannot be painted now: a hidden page, the element not
+ * rendered (checkVisibility) or outside the viewport. No timer stands in: where no frame is painted (a main
+ * thread too busy to render) it waits, and the poster under the canvas with it, unseen.
  */
-async function removeOncePainted(element, remove) {
+async function paintedImages(element) {
+  if (!paintable(element)) return;
   const images = [...element.querySelectorAll('img')];
   await Promise.allSettled(images.map((image) => image.decode()));
   const shown = images.filter((image) => image.isConnected && image.naturalWidth > 0);  // a failed one removed itself
   const timed = typeof PerformanceObserver === 'function' && PerformanceObserver.supportedEntryTypes?.includes('element');
   if (shown.length > 0 && timed) await painted(shown.map((image) => image.getAttribute('elementtiming')));
   else await new Promise((resolve) => { requestAnimationFrame(() => requestAnimationFrame(resolve)); });
-  remove();
+}
+
+// Whether `element` can be painted now: the page shown, the element rendered and partly in the viewport.
+function paintable(element) {
+  if (document.visibilityState === 'hidden') return false;
+  if (element.checkVisibility && !element.checkVisibility({ visibilityProperty: true })) return false;
+  const r = element.getBoundingClientRect();
+  return r.width > 0 && r.height > 0 && r.right > 0 && r.bottom > 0 && r.left < innerWidth && r.top < innerHeight;
 }
 
 // Resolves once Element Timing has reported each of `names` (elementtiming values) painted.

@@ -47,9 +47,8 @@ export class HtmlPages {
     this._layer = document.createElement('div');
     this._layer.className = 'conecurl-html-pages';
     this._layer.style.cssText = 'position:absolute;inset:0;overflow:hidden;pointer-events:none';
-    // Right after the canvas (positioned, book-shell.js), so above it and below the links, which come later.
-    if (book.canvas?.parentNode === root) book.canvas.after(this._layer);
-    else root.prepend(this._layer);
+    // Right after the canvas (positioned, book-shell.js, in `root`), so above it and below the links, which come later.
+    book.canvas.after(this._layer);
     this._pages = new Map();  // page index -> { element, sheet, content, home, observer, grips, canvas, videos }
     this._dirty = new Set();
     this._timer = 0;

@@ -47,8 +47,9 @@ export class EarlyLoads {
   }
 
   /** Starts loading each page of `pages` ([index, entry]) whose source is a URL or a Blob, decoded to cover `cover`,
-   * and its placeholder where it has one (a URL or a Blob). */
-  start(pages, cover) {
+   * and its placeholder where it has one (a URL or a Blob). A page whose placeholder is a URL (the book's poster
+   * shows it: first-view-poster.js) asks for its own image only once `placeholdersShown` (a promise) resolves. */
+  start(pages, cover, placeholdersShown = null) {
     for (const [index, entry] of pages) {
       if (isEncoded(entry.placeholder) && !this._placeholders.has(entry)) {
         const load = loadPage(entry.placeholder, { index, signal: this._signal });
@@ -56,7 +57,8 @@ export class EarlyLoads {
         this._placeholders.set(entry, load);
       }
       if (!isEncoded(entry.src) || this._loads.has(entry)) continue;
-      const load = loadPage(entry.src, { index, size: cover, signal: this._signal });
+      const ask = () => loadPage(entry.src, { index, size: cover, signal: this._signal });
+      const load = placeholdersShown && typeof entry.placeholder === 'string' ? placeholdersShown.then(ask) : ask();
       const landed = () => { if (this._loads.get(entry) === load) this._landed.add(entry); };
       load.then(landed, landed);  // a failure is reported by the load that takes it up
       this._loads.set(entry, load);

@@ -103,12 +103,13 @@ export class PageStore {
   }
 
   /** Before the surface exists: starts loading what its first update() will want at `position`, sized for a
-   * `display` view of a canvas of `size` CSS px (layout.js, as the engine), to fetch and decode meanwhile. */
-  prefetch(size, display, position) {
+   * `display` view of a canvas of `size` CSS px (layout.js, as the engine), to fetch and decode meanwhile; a page
+   * whose placeholder is a URL once `placeholdersShown` resolves (EarlyLoads.start). */
+  prefetch(size, display, position, placeholdersShown = null) {
     const open = openPages(position, this.entries.length, display);
     const { direction, pageAspect } = this._settings;
     const cover = this._coverOf(restingRect(size, { display, direction, pageAspect }), display, 1);
-    this._early.start(open.map((page) => [page, this.entries[page]]), cover);  // the first view's pages: their neighbours after
+    this._early.start(open.map((page) => [page, this.entries[page]]), cover, placeholdersShown);  // the first view's pages: their neighbours after
   }
 
   /** A page's size on screen in CSS px at zoom 1 (restingRect is the zoomed picture of both pages). */
