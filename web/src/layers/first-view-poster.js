@@ -10,8 +10,8 @@ let posters = 0;  // posters laid on this page so far: their images' Element Tim
 /**
  * Lays the placeholders of the pages open at `opening` over `canvas` (in the book's element), or returns null when none of them names a placeholder by URL (a Blob, or no placeholder: nothing to show).
  * `book`: { entries, pageCount, display, direction, pageAspect, center, leafThickness, hardPages } (layout.js's book); `size`: the canvas's CSS size.
- * Returns { element, places, pages, whenPainted, remove(), removeOncePainted() }: `places` as layout.js
- * openPagePlaces; `pages` the page indices it shows; `whenPainted` a promise, resolved once its images have been
+ * Returns { element, places, whenPainted, remove(), removeOncePainted() }: `places` as layout.js
+ * openPagePlaces; `whenPainted` a promise, resolved once its images have been
  * painted (or failed, or the poster was removed); remove() may be called more than once; removeOncePainted()
  * resolves once it removed the poster.
  */
@@ -45,7 +45,7 @@ export function showFirstViewPoster(canvas, book, size, opening) {
   };
   const whenPainted = Promise.race([paintedImages(element), whenRemoved]);
   const removeOncePainted = () => whenPainted.then(remove);
-  return { element, places, pages: places.map(({ page }) => page), whenPainted, remove, removeOncePainted };
+  return { element, places, whenPainted, remove, removeOncePainted };
 }
 
 /**
