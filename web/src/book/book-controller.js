@@ -5,7 +5,7 @@
 // Over 350 lines because it is the whole public API of a book: each member a line or two here, its work in its parts.
 import { createShell } from './book-shell.js';
 import { BookEvents } from './book-events.js';
-import { afterFirstFrame, afterFrames } from './after-first-frame.js';
+import { afterFirstFrame } from './after-first-frame.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { BookTurns } from './book-turns.js';
 import {
@@ -15,16 +15,9 @@ import {
 import { makeReadAloud } from './book-read-aloud.js';
 import { makeDocumentApi, planViewer } from '../document/document-wiring.js';
 import { DEFAULT_PAGE_ASPECT, MAX_ZOOM, displayFor, openPages } from '../engine/layout.js';
-import { posterStillFits, showFirstViewPoster } from '../layers/first-view-poster.js';
+import { OpeningPoster } from './opening-poster.js';
 
 const REFIT_DELAY_MS = 150;  // images are fitted to a new size or zoom once it has come to rest
-
-// How many animation frames the book waits at most for its poster to be told painted before it makes its
-// context, and after its surface is made the opening pages' own images (first-view-poster.js resolves at once
-// where it cannot be painted: a hidden page, an element not rendered or off screen). Its paint is in the first
-// of them; it only bounds a case not foreseen.
-const POSTER_PAINT_LATEST_FRAMES = 10;
-const posterPaintBound = (task) => afterFrames(POSTER_PAINT_LATEST_FRAMES, task);
 
 export class BookController extends EventTarget {
   /**
@@ -53,7 +46,7 @@ export class BookController extends EventTarget {
     this._turns = new BookTurns(this._port);
     this._html = null;  // HTML pages, once _build() has loaded their module
     this._text = null;  // a PDF's selectable text, once _build() has loaded its module (text-layer.js)
-    this._poster = null;  // the first view's placeholders as images, until the surface shows its pages
+    this._poster = new OpeningPoster((schedule, task) => this._defer(schedule, task));  // the first view's placeholders as images
     this._links = makeLinkLayer(this._port);
     this._layers = [this._links];
     this._reducedMotion = typeof matchMedia === 'function' ? matchMedia('(prefers-reduced-motion: reduce)') : null;
@@ -224,7 +217,7 @@ export class BookController extends EventTarget {
     this._document?.destroy();
     this._document = null;
     for (const layer of this._layers) layer.remove();
-    this._removePoster();
+    this._poster.remove();
     this._input?.stop();
     this._stopWatchingSize?.();
     this._stopCompanions?.();  // page memory, autoplay, the page sound
@@ -258,25 +251,11 @@ export class BookController extends EventTarget {
     this._layoutSize = { width, height };
     const display = displayFor(this._settings.display, this._layoutSize, this._settings);
     const opening = openingPageOf(companionModules, this._settings, this.pageCount);
-    // Fetched and decoded while the surface is made. A page the poster shows asks for its own image once the
-    // poster has painted: on a slow network the small pictures come first, and the page's largest
-    // contentful paint (the poster's image) waits on none of the big ones.
-    let showPlaceholders;
-    const placeholdersShown = new Promise((resolve) => { showPlaceholders = resolve; });
-    prefetchOpening(this._port, display, opening, placeholdersShown);
-    this._showPoster(display, opening);  // the opening pages' placeholders until the surface shows them
-    if (this._poster) {
-      // Painted before the canvas's context is made (a long block of the main thread where WebGL runs in
-      // software): the cover shows first, and the pages' own images are asked for before that block.
-      this._poster.whenPainted.then(showPlaceholders);
-      await new Promise((resolve) => {
-        this._poster.whenPainted.then(resolve);
-        this._defer(posterPaintBound, resolve);
-      });
-      this._stopIfDestroyed();
-    } else {
-      showPlaceholders();
-    }
+    // Fetched and decoded while the surface is made; the pages the poster shows once it has painted.
+    prefetchOpening(this._port, display, opening, this._poster.placeholdersShown);
+    // The opening pages' placeholders until the surface shows them, painted before the context is made.
+    await this._poster.show(this._canvas, { entries: this._pages, ...this._layoutShape(display) }, this._layoutSize, opening);
+    this._stopIfDestroyed();
     this._prepareCanvas();
     const HtmlPages = htmlPages && (await htmlPages).HtmlPages;
     this._stopIfDestroyed();
@@ -285,7 +264,7 @@ export class BookController extends EventTarget {
     if (this._destroyed) surface.destroy({ releaseContext: true });  // made as destroy() ran
     this._stopIfDestroyed();
     this._surface = surface;
-    this._defer(posterPaintBound, showPlaceholders);  // at the latest: a poster never told painted
+    this._poster.surfaceMade();
     followSurface(this._port);  // the pages a moving leaf shows, images lost with a context
     this._surface.jumpTo(this._surface.positionOfPage(opening));
     this._stopWatchingSize = watchBookSize(this._port, this._layoutSize);
@@ -305,7 +284,7 @@ export class BookController extends EventTarget {
   // room kept for it), a document's selectable text under the links, and the edge marks, imported only now;
   // then laid over the open pages.
   async _buildAfterFirstSpread(viewer) {
-    this._port.afterFirstFrame(() => this._retirePoster());  // the surface's frame of those pages is on screen
+    this._port.afterFirstFrame(() => this._poster.retire());  // the surface's frame of those pages is on screen
     const parts = loadLateParts(this._port, this._links.element);
     const [input, controls, text, EdgeMarks] = await Promise.all([parts.input, viewer.attach(), parts.text, parts.edgeMarks]);
     if (this._destroyed) {  // made as destroy() ran: it found none to remove
@@ -331,11 +310,6 @@ export class BookController extends EventTarget {
     this._deferred.add(cancel);
   }
 
-  // The first view's poster (layers/first-view-poster.js), laid from the layout rules the surface draws by.
-  _showPoster(display, opening) {
-    this._poster = showFirstViewPoster(this._canvas, { entries: this._pages, ...this._layoutShape(display) }, this._layoutSize, opening);
-  }
-
   // This book's shape in `display` as layout.js lays it out: what the poster and a still surface place pages by.
   _layoutShape(display) {
     return { pageCount: this.pageCount, display, direction: this._settings.direction,
@@ -344,18 +318,6 @@ export class BookController extends EventTarget {
 
   // How the surface to come lays its stacks, for the poster: a still surface draws none (Flipbook's engine does).
   _stackShape() { return {}; }
-
-  // The surface covers the poster now; it goes once its images have painted too (each is the page's
-  // largest contentful paint where the canvas is none): first-view-poster.js removeOncePainted.
-  _retirePoster() {
-    const poster = this._poster;
-    poster?.removeOncePainted().then(() => { if (this._poster === poster) this._poster = null; });
-  }
-
-  _removePoster() {
-    this._poster?.remove();
-    this._poster = null;
-  }
 
   // The book draws on a fresh canvas in place of its own (Flipbook: the context its canvas was given is not the one wanted).
   _replaceCanvas() {
@@ -426,12 +388,12 @@ export class BookController extends EventTarget {
       return;
     }
     const places = this._surface.openPagePlaces().filter((place) => place.page >= 0);
-    if (this._poster && !posterStillFits(this._poster, places)) this._removePoster();  // zoomed, or other pages open
+    this._poster.fit(places);  // gone where the open pages lie elsewhere: zoomed, or other pages open
     for (const layer of this._layers) layer.place(places);
   }
 
   _hideLayers() {
-    this._removePoster();  // a moving leaf is the surface's alone
+    this._poster.remove();  // a moving leaf is the surface's alone
     for (const layer of this._layers) layer.hide();
   }
 
@@ -445,7 +407,7 @@ export class BookController extends EventTarget {
   // Size, pixel ratio or display options changed: 'auto' chooses again (layout.js displayFor, from the
   // settings' minPageWidth, direction, pageAspect); a switch keeps surface and page and says `displaychange`.
   _relayout() {
-    this._removePoster();  // laid for the first size
+    this._poster.remove();  // laid for the first size
     const [display, previous] = [displayFor(this._settings.display, this._layoutSize, this._settings), this.display];
     if (display !== previous) {
       this._surface.setDisplay(display);
