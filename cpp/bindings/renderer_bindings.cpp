@@ -154,6 +154,7 @@ EMSCRIPTEN_BINDINGS(conecurl_renderer) {
         .function("gridErrorPixels", &BookRenderer::gridErrorPixels)
         .function("maxTextureSize", &BookRenderer::maxTextureSize)
         .function("setEdgeMarks", &bindings::setEdgeMarks)
+        .function("finishFirstView", &BookRenderer::finishFirstView)
         .function("prepareTurn", &BookRenderer::prepareTurn)
         .function("recreateGpuObjects", &BookRenderer::recreateGpuObjects);
 #ifdef CONECURL_TEST_BINDINGS

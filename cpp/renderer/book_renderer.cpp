@@ -42,8 +42,7 @@ namespace conecurl {
 namespace {
 
 constexpr char kShaderPrelude[] = "#version 300 es\nprecision highp float;\n";
-constexpr GLenum kTextureMaxAnisotropy = 0x84FE;     // EXT_texture_filter_anisotropic
-constexpr GLenum kMaxTextureMaxAnisotropy = 0x84FF;
+constexpr GLenum kMaxTextureMaxAnisotropy = 0x84FF;   // EXT_texture_filter_anisotropic
 constexpr double kNormalStepOfHeight = 1e-3;         // the math doc's finite-difference step
 constexpr float kShadowStrength = 0.45f;
 constexpr float kShadowPenumbra = 0.015f;            // half the shadow's soft edge, a fraction of the page width
@@ -360,6 +359,7 @@ void BookRenderer::destroyGpuObjects() {
     glDeleteFramebuffers(1, &shadowFramebuffer_);
     glDeleteTextures(1, &shadowTexture_);
     for (const auto& [page, texture] : pageTextures_) glDeleteTextures(1, &texture);
+    withoutMipmaps_.clear();
     edgeMarks_.release();
     dropBand();
     forgetGpuObjects();
@@ -368,6 +368,8 @@ void BookRenderer::destroyGpuObjects() {
 void BookRenderer::forgetGpuObjects() {
     edgeMarks_.forget();
     pageTextures_.clear();
+    withoutMipmaps_.clear();
+    bufferSize_ = BufferSize{};  // a restored context's buffer is asked for again
     dropBand(false);
     gridKey_ = GridKey{};  // the grid buffer is gone too
     leafProgram_ = Program{};
@@ -463,13 +465,7 @@ std::string BookRenderer::setPageImage(int page, int width, int height, JsHandle
     if (found == pageTextures_.end()) pageTextures_.emplace_back(page, texture);
     // New pixels in a texture the cached resting spread shows: draw the spread again.
     if (std::find(cachedTextures_.begin(), cachedTextures_.end(), texture) != cachedTextures_.end()) invalidateRestingSpread();
-    glGenerateMipmap(GL_TEXTURE_2D);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    // Small text on a tilted page stays legible with anisotropic filtering, where the GPU has it.
-    if (maxAnisotropy_ > 1.0f) glTexParameterf(GL_TEXTURE_2D, kTextureMaxAnisotropy, std::min(8.0f, maxAnisotropy_));
+    finishPageTexture(texture);
     return {};
 }
 
@@ -477,6 +473,7 @@ void BookRenderer::releasePageImage(int page) {
     if (band_.page == page && makeCurrent()) dropBand();
     auto found = findTexture(page);
     if (found == pageTextures_.end()) return;
+    withoutMipmaps_.erase(std::remove(withoutMipmaps_.begin(), withoutMipmaps_.end(), found->second), withoutMipmaps_.end());
     if (makeCurrent()) {
         for (GLuint& bound : boundTextures_) {
             if (bound == found->second) bound = 0;  // a deleted name may come back for another texture
@@ -786,9 +783,17 @@ void BookRenderer::presentScaledFrame(int width, int height) {
 
 void BookRenderer::draw(const Book& book, const BookFrame& frame) {
     if (!ok() || !makeCurrent()) return;
+    int moving = 0;
+    bool curled = false;  // a curled leaf may hide part of itself; a hard leaf turns flat
+    for (int i = 0; i < frame.count; ++i) {
+        if (frame.leaves[i].resting) continue;
+        ++moving;
+        curled |= !frame.leaves[i].hard;
+    }
+    if (moving > 0) finishFirstView();  // a moving leaf shows its pages at a slant: their mipmaps first
     int width = 0;
     int height = 0;
-    emscripten_webgl_get_drawing_buffer_size(context_, &width, &height);
+    drawingBufferSize(width, height);
     if (width <= 0 || height <= 0) return;
     drawingWidth_ = width;
     drawingHeight_ = height;
@@ -797,13 +802,6 @@ void BookRenderer::draw(const Book& book, const BookFrame& frame) {
     updateStacks(book);
     ++framesDrawn_;
 
-    int moving = 0;
-    bool curled = false;  // a curled leaf may hide part of itself; a hard leaf turns flat
-    for (int i = 0; i < frame.count; ++i) {
-        if (frame.leaves[i].resting) continue;
-        ++moving;
-        curled |= !frame.leaves[i].hard;
-    }
     glDisable(GL_DEPTH_TEST);
     if (moving == 0) {
         // A resting book: the stacks, the flat pages over them. Nothing is depth-tested.

@@ -133,6 +133,15 @@ public:
     // compiles, links and checks them. A turn before then links its own at its first frame, as it waits.
     bool prepareTurn();
 
+    // The first view leaves out what its frame does not need, each a wait on the browser's GL (first_view.cpp):
+    // the page textures' mipmaps (a page at rest is drawn at about its image's size; WebKit on llvmpipe spent
+    // 76-134 ms making the first ones) and asking the drawing buffer's size (in Firefox a round trip to its
+    // GPU process, which waited 230 ms on all the first view had queued), taken from the canvas meanwhile.
+    // The JS layer calls this once the first view is on screen, in idle time; the first frame with a moving
+    // leaf does it first if that comes sooner. Returns true if the drawing buffer is not the canvas's size
+    // (the browser clamped it): the frame drawn at that size must be drawn again. Later calls do nothing.
+    bool finishFirstView();
+
     // After a lost context is restored: recreates every GL object from CPU-side state. Page images
     // are GPU-only and must be set again (the JS layer keeps their sources).
     void recreateGpuObjects();
@@ -246,6 +255,15 @@ private:
     float maxAnisotropy_ = 0.0f;
     int drawingWidth_ = 0;
     int drawingHeight_ = 0;
+    bool firstView_ = true;  // see finishFirstView()
+    std::vector<GLuint> withoutMipmaps_;  // page textures uploaded in the first view, filtered without mipmaps
+    struct BufferSize { int canvasWidth = -1, canvasHeight = -1, width = 0, height = 0; } bufferSize_;  // as last asked
+    // The drawing buffer's size for a frame: the canvas's in the first view, else the browser's (asked again
+    // only when the canvas's size changed).
+    void drawingBufferSize(int& width, int& height);
+    // The page texture bound to unit 0 for editing: its mipmaps and filtering, or (first view) filtering without.
+    void finishPageTexture(GLuint texture);
+    void makeMipmaps();
 
     // Where the leaf is and whether it lies flat (every program that draws a leaf's grid); then how its
     // surface looks (the leaf program only).

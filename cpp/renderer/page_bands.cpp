@@ -50,15 +50,10 @@ std::string BookRenderer::setPageImageRows(int page, int width, int height, int 
     band_.rows = y + rows;
     if (band_.rows < height) return {};
     // The last band: the texture is the page's now, with its mipmaps and filtering as setPageImage's.
-    glGenerateMipmap(GL_TEXTURE_2D);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    if (maxAnisotropy_ > 1.0f) glTexParameterf(GL_TEXTURE_2D, 0x84FE, std::min(8.0f, maxAnisotropy_));  // TEXTURE_MAX_ANISOTROPY
     const GLuint texture = band_.texture;
     band_ = Band{};
     releasePageImage(page);
+    finishPageTexture(texture);
     pageTextures_.emplace_back(page, texture);
     return {};
 }

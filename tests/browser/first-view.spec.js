@@ -153,3 +153,96 @@ test('browser: create() and ready come once the first view is drawn, not after i
   expect(result.idleWhileHeld).toBe(false);
   expect(result.after).toEqual(['loaded', 'loaded', 'loaded']);
 });
+
+/**
+ * Tracks what the first view asks of the GL beyond drawing: reads of the drawing buffer's size (in Firefox a
+ * round trip that waits on all the GPU process has queued) and the page textures' mipmaps. `needsMipmaps`:
+ * textures whose image was uploaded (texImage2D from a browser image) and not mipmapped since.
+ */
+function trackGlAsks() {
+  const asks = { bufferReads: 0, mipmaps: 0, needsMipmaps: new Set() };
+  window.__asks = asks;
+  const proto = WebGL2RenderingContext.prototype;
+  for (const name of ['drawingBufferWidth', 'drawingBufferHeight']) {
+    const { get } = Object.getOwnPropertyDescriptor(proto, name);
+    Object.defineProperty(proto, name, { configurable: true, get() { asks.bufferReads++; return get.call(this); } });
+  }
+  const bound = new WeakMap();  // context -> { unit, textures: unit -> TEXTURE_2D bound there }
+  const state = (gl) => { if (!bound.has(gl)) bound.set(gl, { unit: 0, textures: [] }); return bound.get(gl); };
+  const { activeTexture, bindTexture, texImage2D, generateMipmap, deleteTexture } = proto;
+  Object.assign(proto, {
+    activeTexture(unit) { state(this).unit = unit; return activeTexture.call(this, unit); },
+    bindTexture(target, texture) {
+      if (target === this.TEXTURE_2D) state(this).textures[state(this).unit] = texture;
+      return bindTexture.call(this, target, texture);
+    },
+    texImage2D(...args) {
+      const s = state(this);
+      if (args.length === 6 && args[1] === 0 && args[5] && typeof args[5] === 'object') asks.needsMipmaps.add(s.textures[s.unit]);
+      return texImage2D.apply(this, args);
+    },
+    generateMipmap(target) {
+      asks.mipmaps++;
+      const s = state(this);
+      asks.needsMipmaps.delete(s.textures[s.unit]);
+      return generateMipmap.call(this, target);
+    },
+    deleteTexture(texture) { asks.needsMipmaps.delete(texture); return deleteTexture.call(this, texture); },
+  });
+}
+
+test('browser: the first view waits on no GL answer it does not need: no drawing-buffer size asked and no page mipmaps made before create() resolves; idle time once it is on screen makes every page texture\'s, a turn asked sooner makes them at its first frame, and turning frames ask no buffer size (counts)', async ({ page }) => {
+  await page.addInitScript(trackGlAsks);
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    const asks = window.__asks;
+    // Asks since `from` (a snapshot), and the textures waiting for their mipmaps now.
+    const snap = (from = { bufferReads: 0, mipmaps: 0 }) => ({ bufferReads: asks.bufferReads - from.bufferReads, mipmaps: asks.mipmaps - from.mipmaps, needsMipmaps: asks.needsMipmaps.size });
+    const idleCallback = window.requestIdleCallback;
+    const runs = [];
+    for (const turnFirst of [false, true]) {
+      // The page's idle callbacks are held while the book is made (a slow machine may be idle before create() resolves).
+      const held = [];
+      window.requestIdleCallback = (callback, options) => held.push([callback, options]);
+      window.book?.destroy();
+      asks.needsMipmaps.clear();
+      const before = snap();
+      const pages = Array.from({ length: 8 }, (_, i) => window.makeNumberedPage(i));
+      window.book = await window.Flipbook.create(document.getElementById('container'), { pages, display: 'double', duration: 150, startPage: 3 });
+      const run = { turnFirst, atCreate: snap(before) };
+      if (turnFirst) {
+        // Idle time still held: the turn's first frame makes the mipmaps and asks the buffer's size.
+        if (!(await window.book.next())) throw new Error('the turn did not land');
+        run.afterTurn = snap(before);
+        window.requestIdleCallback = idleCallback;
+        for (const [callback, options] of held.splice(0)) idleCallback(callback, options);
+      } else {
+        window.requestIdleCallback = idleCallback;
+        await window.book.whenIdle();  // the neighbours, asked for after the first frame
+        await window.settle();
+        for (const [callback, options] of held.splice(0)) idleCallback(callback, options);
+        for (let i = 0; i < 10 && asks.needsMipmaps.size > 0; i++) await new Promise((resolve) => idleCallback(resolve));
+        run.afterIdle = snap(before);
+        const reads = asks.bufferReads;
+        if (!(await window.book.next()) || !(await window.book.prev())) throw new Error('a turn did not land');
+        run.turnReads = asks.bufferReads - reads;
+      }
+      run.resident = window.book.residentPages.length;
+      runs.push(run);
+    }
+    return runs;
+  });
+  console.log(`GL asks of the first view: ${JSON.stringify(result)}`);
+  const [idleFirst, turnFirst] = result;
+  for (const run of result) {
+    expect(run.atCreate.bufferReads).toBe(0);
+    expect(run.atCreate.mipmaps).toBe(0);
+    expect(run.atCreate.needsMipmaps).toBeGreaterThanOrEqual(2);  // the open spread's pages, up without them
+  }
+  expect(idleFirst.afterIdle.needsMipmaps).toBe(0);
+  expect(idleFirst.afterIdle.mipmaps).toBeGreaterThanOrEqual(idleFirst.resident);  // each page's, once
+  expect(idleFirst.afterIdle.bufferReads).toBeGreaterThan(idleFirst.atCreate.bufferReads);  // asked once the view was on screen
+  expect(idleFirst.turnReads).toBe(0);  // known for this canvas size: no frame of a turn asks again
+  expect(turnFirst.afterTurn.needsMipmaps).toBe(0);
+  expect(turnFirst.afterTurn.bufferReads).toBeGreaterThan(turnFirst.atCreate.bufferReads);
+});

@@ -5,7 +5,7 @@
 // Over 350 lines because it is the whole public API of a book: each member a line or two here, its work in its parts.
 import { createShell } from './book-shell.js';
 import { BookEvents } from './book-events.js';
-import { afterFirstFrame } from './after-first-frame.js';
+import { afterFirstFrame } from '../surfaces/after-first-frame.js';
 import { checkFlipOptions, checkLiveOptions, pageEntries } from './options.js';
 import { BookTurns } from './book-turns.js';
 import {

@@ -1,7 +1,7 @@
 // The public entry point: a flipbook in a container element. Flipbook is the book controller
 // (book-controller.js) over the WebGL surface, BookView on the wasm engine, sharing the page's WebGL
 // contexts with other books; without WebGL2 or the engine, create() leaves a StaticBook in its place.
-import { afterFirstFrame, whenIdle } from './after-first-frame.js';
+import { idleAfterFirstFrame, whenIdle } from '../surfaces/after-first-frame.js';
 import { loadEngine } from '../engine/load-engine.js';
 import { BookView } from '../surfaces/book-view.js';
 import { leafThicknessOf } from '../engine/layout.js';
@@ -85,7 +85,7 @@ export class Flipbook extends BookController {
     // ones a turn draws are linked when the page is next idle once the first frame is on screen, so neither
     // the first page nor the first turn waits.
     const prepare = () => { if (this._surface?.prepareTurn?.() === false) this._defer(whenIdle, prepare); };
-    this._defer(afterFirstFrame, () => this._defer(whenIdle, prepare));
+    this._defer(idleAfterFirstFrame, prepare);
     return this;
   }
 

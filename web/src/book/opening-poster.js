@@ -1,6 +1,6 @@
 // The first view's poster over one book (layers/first-view-poster.js lays it), through its life: shown once the
 // book knows its size, the opening pages' own images held until it has painted, and gone when the surface covers it.
-import { afterFrames } from './after-first-frame.js';
+import { afterFrames } from '../surfaces/after-first-frame.js';
 import { posterStillFits, showFirstViewPoster } from '../layers/first-view-poster.js';
 
 // How many animation frames the book waits at most for its poster to be told painted before it makes its

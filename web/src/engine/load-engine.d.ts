@@ -225,6 +225,8 @@ export interface BookRenderer {
   maxTextureSize(): number;
   /** Readies the programs a turning frame draws that resting frames do not (each is otherwise linked at its first draw): true once they are linked; false (ask again in a later idle task) while the driver still compiles them beside the page, where the browser has KHR_parallel_shader_compile (the first call asks for them, later ones ask whether they are done). */
   prepareTurn(): boolean;
+  /** Ends the first view: until then page textures go up without their mipmaps and frames take the drawing buffer's size from the canvas (neither waits on the GL). Makes the mipmaps and asks the buffer's size; true if that is not the size the last frame was drawn at (draw again). The first frame with a moving leaf calls it itself; later calls do nothing. A BookView calls it in idle time once its first frame is on screen. */
+  finishFirstView(): boolean;
   /** After a context restore: rebuild every GL object (page images must be set again). */
   recreateGpuObjects(): void;
   /** Marks drawn on the page blocks' fore-edge from the next frame on: index tabs and search ticks at their pages' leaves; [] none. */

@@ -4,6 +4,7 @@
 // (engine-objects.js) and the view's parts: the frames (frame-scheduler.js), the page textures
 // (page-textures.js), the lost context (context-keeper.js), the canvas's sizes (canvas-size.js), the
 // sharpness of moving frames (moving-resolution.js).
+// Over 350 lines because it is BookView's whole public API (docs/engine.md): each member a few lines over its parts.
 import { loadEngine } from '../engine/load-engine.js';
 import { TURN_REFUSED } from '../engine/layout.js';
 import { uploadSizeFor } from '../pages/texture-upload.js';
@@ -14,6 +15,7 @@ import { ContextKeeper } from './context-keeper.js';
 import { CanvasSize } from './canvas-size.js';
 import { MovingResolution } from './moving-resolution.js';
 import { warmTurn } from './warm-turn.js';
+import { idleAfterFirstFrame } from './after-first-frame.js';
 
 export { uploadSizeFor };
 
@@ -45,6 +47,7 @@ export class BookView {
     this.contextLease = null;
     this._poseFrom = null;  // the settled position showTurn() poses from
     this._warmDraws = 0;  // frames drawn by prepareTurn() that never reached the screen
+    this._finishFirstView = null;  // cancels the first view's finish (see _drawn), once its first frame is drawn
     this._resolution = new MovingResolution(options.resolution ?? 'auto');
     this._frames = new FrameScheduler({
       runs: () => Boolean(this.renderer) && this._context.clockRuns,
@@ -247,6 +250,15 @@ export class BookView {
   drawNow() {
     this.fitCanvas();
     this.renderer.draw(this.book);
+    this._drawn();
+  }
+
+  // After a drawn frame: what the first view left out, each a wait on the GL (the mipmaps, the drawing buffer's
+  // size: BookRenderer::finishFirstView), asked for once, in idle time after its first frame (a turn's frame is sooner).
+  _drawn() {
+    this._finishFirstView ??= idleAfterFirstFrame(() => {
+      if (this.renderer && !this._context.lost && this.renderer.finishFirstView()) this.requestRender();
+    });
   }
 
   readPixels() { return this.renderer.readPixels(); }
@@ -274,6 +286,7 @@ export class BookView {
   destroy({ releaseContext = false } = {}) {
     if (!this.renderer) return;
     this._frames.cancel();
+    this._finishFirstView?.();
     this._size.stop();
     this._context.stop();
     // The canvas has its WebGL2 context already: getContext hands back that one, it makes no new one.
@@ -326,6 +339,7 @@ export class BookView {
   // After the step: the leaves' motion to the page sound, and page images that arrived: one band a
   // frame while leaves move (a page shown from the frame after its last band), all at once at rest.
   _ticked() {
+    if (!this._context.lost) this._drawn();
     if (this.onMotion) this.onMotion(this._loop.motion());  // a second call into the engine, only with sound on
     this._textures.drain(this._frames.moving);
   }

@@ -68,3 +68,9 @@ export function afterFrames(count, task) {
   frame = requestAnimationFrame(step);
   return cancel;
 }
+
+/** Calls `task` when the page is next idle once the first frame is on screen (afterFirstFrame, then whenIdle). Returns its cancel. */
+export function idleAfterFirstFrame(task) {
+  let cancel = afterFirstFrame(() => { cancel = whenIdle(task); });
+  return () => cancel();
+}
