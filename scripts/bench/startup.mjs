@@ -5,11 +5,15 @@
 // Usage: node scripts/bench/startup.mjs [--libs conecurl,floor-webgl] [--configs double-20,single-20,phone-20] [--reps 5]
 //        [--port 8097] [--baseline <dir>] (another checkout, measured as conecurl-baseline: name it in --libs)
 //        [--no-bundle] (reuse bench-results/startup/bundles) [--rows] (also each run's figures, one JSON line a config)
-// The libraries take turns within each rep (one browser each), so a slow spell of the machine falls on all of them.
+//        [--engine chromium|firefox|webkit] (Firefox and WebKit through scripts/engines.mjs, desktop configs only)
+// The libraries take turns within each rep, so a slow spell of the machine falls on all of them. Chromium: a
+// fresh browser each run. Firefox and WebKit: one browser for all runs of a config, after one visit not measured
+// (as the bench's engine rows), the instrument run by startup.html's first script.
 import { spawn } from 'node:child_process';
 import path from 'node:path';
 import { chromium } from '@playwright/test';
 import { chromiumLaunchOptions } from '../chromium.mjs';
+import { ENGINES, engineExecutables, launchEngine, startDisplay } from '../engines.mjs';
 import { BASELINE, bundleBaseline, bundleLibraries } from './bundle.mjs';
 import { writePageImages } from './page-images.mjs';
 import { PHONES, phoneUse } from '../../tests/browser/phone.js';
@@ -25,110 +29,86 @@ if (libs.includes(BASELINE) && !baselineDir) throw new Error(`startup: ${BASELIN
 const configIds = arg('--configs', 'double-20,phone-20').split(',');
 const reps = Number(arg('--reps', '5'));
 const port = Number(arg('--port', process.env.CONECURL_BENCH_PORT || '8097'));
+const engine = arg('--engine', 'chromium');
+if (engine !== 'chromium' && !ENGINES.includes(engine)) throw new Error(`startup: unknown engine ${engine} (chromium, ${ENGINES.join(', ')})`);
+const INSTRUMENT = path.join(root, 'scripts/bench/startup-instrument.js');
 const CONFIGS = {  // as scripts/bench/run.mjs measures them
   'double-20': { display: 'double', pages: 20, use: { viewport: { width: 1600, height: 1100 }, deviceScaleFactor: 1 } },
   'single-20': { display: 'single', pages: 20, use: { viewport: { width: 1600, height: 1100 }, deviceScaleFactor: 1 } },
   'phone-20': { display: 'single', pages: 20, use: phoneUse(PHONES['phone-portrait']) },
 };
-for (const id of configIds) if (!CONFIGS[id]) throw new Error(`startup: unknown config ${id} (${Object.keys(CONFIGS).join(', ')})`);
-
-// Runs in the page before anything else: wraps the calls each phase makes and notes when each ran and
-// how long it blocked the main thread (GL calls that wait for the GPU process block here).
-function instrument() {
-  const t = { calls: {}, events: [], long: [], frames: [] };
-  const frame = (now) => { t.frames.push(now); if (t.frames.length < 600) requestAnimationFrame(frame); };
-  requestAnimationFrame(frame);  // when each animation frame ran, to see the frames between ready and the first frame
-  window.__startup = t;
-  const note = (name, start, end) => {
-    const c = (t.calls[name] ??= { count: 0, ms: 0, first: start, last: end });
-    c.count++;
-    c.ms += end - start;
-    c.last = end;
-    if (end - start >= 1) t.long.push({ name, start, ms: end - start });  // to split the time after create() resolved
-  };
-  const wrap = (proto, name, label = name) => {
-    const f = proto[name];
-    if (typeof f !== 'function') return;
-    proto[name] = function wrapped(...args) {
-      const start = performance.now();
-      try { return f.apply(this, args); } finally { note(label, start, performance.now()); }
-    };
-  };
-  const wrapAsync = (object, name, label = name) => {
-    const f = object[name];
-    object[name] = function wrapped(...args) {
-      const start = performance.now();
-      const result = f.apply(this, args);
-      Promise.resolve(result).then(() => t.events.push({ name: label, start, end: performance.now(), what: String(args[0]?.url ?? args[0] ?? '').slice(-40) }), () => {});
-      return result;
-    };
-  };
-  const gl = WebGL2RenderingContext.prototype;
-  for (const name of ['compileShader', 'linkProgram', 'getShaderParameter', 'getProgramParameter', 'getUniformLocation',
-    'getActiveUniform', 'texImage2D', 'texSubImage2D', 'drawArrays', 'drawElements', 'getParameter', 'getExtension',
-    'getSupportedExtensions', 'readPixels', 'clear']) wrap(gl, name);
-  wrap(HTMLCanvasElement.prototype, 'getContext');
-  wrapAsync(WebAssembly, 'instantiateStreaming');
-  wrapAsync(WebAssembly, 'instantiate');
-  wrapAsync(window, 'createImageBitmap');
-  wrapAsync(window, 'fetch');
+for (const id of configIds) {
+  if (!CONFIGS[id]) throw new Error(`startup: unknown config ${id} (${Object.keys(CONFIGS).join(', ')})`);
+  if (engine !== 'chromium' && CONFIGS[id].use.isMobile) throw new Error(`startup: ${id} is a phone, measured in Chromium only (no phone emulation in ${engine} here)`);
 }
 
-// One navigation of `lib` in `config`: the phases' timestamps, as the init script and the resource timings saw them.
+// In the page once the book is ready: the phases' timestamps, as the instrument and the resource timings saw them.
+function collect([ready, first]) {
+  const { calls, events, long, frames } = window.__startup;
+  const resources = performance.getEntriesByType('resource');
+  const res = (test) => resources.filter((r) => test(new URL(r.name).pathname));
+  const span = (list) => (list.length ? [Math.min(...list.map((r) => r.startTime)), Math.max(...list.map((r) => r.responseEnd))] : [NaN, NaN]);
+  const [, bundleEnd] = span(res((p) => p.endsWith('.js') && p.includes('/bundles/')));
+  const [wasmStart, wasmEnd] = span(res((p) => p.endsWith('.wasm')));
+  const inst = events.filter((e) => e.name.startsWith('instantiate'));
+  const pngs = res((p) => p.endsWith('.png'));
+  const firstPng = pngs.length ? Math.min(...pngs.map((r) => r.startTime)) : NaN;
+  const bitmaps = events.filter((e) => e.name === 'createImageBitmap').sort((a, b) => a.end - b.end);
+  const c = (name) => calls[name] ?? { count: 0, ms: 0, first: NaN, last: NaN };
+  const draws = [c('drawArrays').first, c('drawElements').first].filter(Number.isFinite);
+  const shaderMs = ['compileShader', 'linkProgram', 'getShaderParameter', 'getProgramParameter', 'getUniformLocation', 'getActiveUniform']
+    .reduce((sum, n) => sum + c(n).ms, 0);
+  // Between create() resolving and the first frame: the main thread blocked in GL calls, pages fetched, frames run.
+  const between = (start) => start >= ready && start <= first;
+  return {
+    bundleEnd,
+    wasmFetch: [wasmStart, wasmEnd],
+    instantiated: inst.length ? Math.max(...inst.map((e) => e.end)) : NaN,
+    context: [c('getContext').first, c('getContext').ms],
+    programs: c('linkProgram').count,
+    shaders: [c('compileShader').first, c('getProgramParameter').last, shaderMs],
+    pagesRequested: firstPng,
+    pagesDecoded: bitmaps.length ? bitmaps[Math.min(bitmaps.length, 2) - 1].end : NaN,
+    upload: [c('texImage2D').first, c('texImage2D').ms + c('texSubImage2D').ms],
+    firstDraw: Math.min(...draws),
+    ready,
+    first,
+    afterReady: {
+      glBlockedMs: long.filter((call) => between(call.start)).reduce((sum, call) => sum + call.ms, 0),
+      pngsRequested: pngs.filter((r) => between(r.startTime)).length,
+      frames: frames.filter(between).length,
+      longestFrameGapMs: frames.filter((now) => now >= ready).slice(0, 4).reduce((gap, now, i, list) => (i ? Math.max(gap, now - list[i - 1]) : gap), 0),
+    },
+    marks: performance.getEntriesByType('mark').map((m) => [m.name, m.startTime]),
+  };
+}
+
+const queryOf = (lib, config, bundles, images) => new URLSearchParams({ lib, pages: String(config.pages), display: config.display, duration: '600', bundles, images });
+const bookReady = async () => {
+  while (!window.bench) await new Promise((resolve) => setTimeout(resolve, 5));
+  return window.bench.ready();
+};
+
+// One navigation of `lib` in `config` in a fresh Chromium.
 async function measureOnce(lib, config, bundles, images) {
   const browser = await chromium.launch(chromiumLaunchOptions());
   try {
     const context = await browser.newContext(config.use);
-    await context.addInitScript(instrument);
+    await context.addInitScript({ path: INSTRUMENT });
     const page = await context.newPage();
-    const query = new URLSearchParams({ lib, pages: String(config.pages), display: config.display, duration: '600', bundles, images });
-    await page.goto(`http://127.0.0.1:${port}/scripts/bench/harness.html?${query}`, { waitUntil: 'commit' });
-    const { readyMs, firstFrameMs } = await page.evaluate(async () => {
-      while (!window.bench) await new Promise((resolve) => setTimeout(resolve, 5));
-      return window.bench.ready();
-    });
-    return await page.evaluate(([ready, first]) => {
-      const { calls, events, long, frames } = window.__startup;
-      const resources = performance.getEntriesByType('resource');
-      const res = (test) => resources.filter((r) => test(new URL(r.name).pathname));
-      const span = (list) => (list.length ? [Math.min(...list.map((r) => r.startTime)), Math.max(...list.map((r) => r.responseEnd))] : [NaN, NaN]);
-      const [, bundleEnd] = span(res((p) => p.endsWith('.js') && p.includes('/bundles/')));
-      const [wasmStart, wasmEnd] = span(res((p) => p.endsWith('.wasm')));
-      const inst = events.filter((e) => e.name.startsWith('instantiate'));
-      const pngs = res((p) => p.endsWith('.png'));
-      const firstPng = pngs.length ? Math.min(...pngs.map((r) => r.startTime)) : NaN;
-      const bitmaps = events.filter((e) => e.name === 'createImageBitmap').sort((a, b) => a.end - b.end);
-      const c = (name) => calls[name] ?? { count: 0, ms: 0, first: NaN, last: NaN };
-      const draws = [c('drawArrays').first, c('drawElements').first].filter(Number.isFinite);
-      const shaderMs = ['compileShader', 'linkProgram', 'getShaderParameter', 'getProgramParameter', 'getUniformLocation', 'getActiveUniform']
-        .reduce((sum, n) => sum + c(n).ms, 0);
-      // Between create() resolving and the first frame: the main thread blocked in GL calls, pages fetched, frames run.
-      const between = (start) => start >= ready && start <= first;
-      return {
-        bundleEnd,
-        wasmFetch: [wasmStart, wasmEnd],
-        instantiated: inst.length ? Math.max(...inst.map((e) => e.end)) : NaN,
-        context: [c('getContext').first, c('getContext').ms],
-        programs: c('linkProgram').count,
-        shaders: [c('compileShader').first, c('getProgramParameter').last, shaderMs],
-        pagesRequested: firstPng,
-        pagesDecoded: bitmaps.length ? bitmaps[Math.min(bitmaps.length, 2) - 1].end : NaN,
-        upload: [c('texImage2D').first, c('texImage2D').ms + c('texSubImage2D').ms],
-        firstDraw: Math.min(...draws),
-        ready,
-        first,
-        afterReady: {
-          glBlockedMs: long.filter((call) => between(call.start)).reduce((sum, call) => sum + call.ms, 0),
-          pngsRequested: pngs.filter((r) => between(r.startTime)).length,
-          frames: frames.filter(between).length,
-          longestFrameGapMs: frames.filter((now) => now >= ready).slice(0, 4).reduce((gap, now, i, list) => (i ? Math.max(gap, now - list[i - 1]) : gap), 0),
-        },
-        marks: performance.getEntriesByType('mark').map((m) => [m.name, m.startTime]),
-      };
-    }, [readyMs, firstFrameMs]);
+    await page.goto(`http://127.0.0.1:${port}/scripts/bench/harness.html?${queryOf(lib, config, bundles, images)}`, { waitUntil: 'commit' });
+    const { readyMs, firstFrameMs } = await page.evaluate(bookReady);
+    return await page.evaluate(collect, [readyMs, firstFrameMs]);
   } finally {
     await browser.close();
   }
+}
+
+// One navigation of `lib` in `config` in `browser` (scripts/engines.mjs), through startup.html.
+async function measureInEngine(browser, lib, config, bundles, images) {
+  await browser.goto(`http://127.0.0.1:${port}/scripts/bench/startup.html?${queryOf(lib, config, bundles, images)}`);
+  const { readyMs, firstFrameMs } = await browser.evaluate(bookReady);
+  return browser.evaluate(collect, [readyMs, firstFrameMs]);
 }
 
 const med = (rows, f) => {
@@ -155,6 +135,25 @@ function report(lib, id, rows) {
   for (const [i, [name]] of (rows[0].marks || []).entries()) console.log(`  ${name.padEnd(24)} ${m((r) => r.marks[i]?.[1])}`);
 }
 
+// Firefox or WebKit on a display of its own at the config's viewport, after one visit not measured (its first
+// page and WebGL context): a measure(lib, config, bundles, images) function, with close().
+async function engineMeasure(config, bundles, images) {
+  const exe = engineExecutables(engine);
+  const display = await startDisplay(exe.xvfb);
+  const { width, height } = config.use.viewport;
+  const browser = await launchEngine(engine, { display: display.display, width, height });
+  const measure = (lib, ...rest) => measureInEngine(browser, lib, ...rest);
+  measure.close = async () => { await browser.close().catch(() => {}); display.stop(); };
+  try {
+    await measureInEngine(browser, libs[0], config, bundles, images);
+  } catch (error) {
+    await measure.close();
+    throw error;
+  }
+  console.log(`startup: ${engine} ${browser.version}`);
+  return measure;
+}
+
 const server = spawn(process.execPath, [path.join(root, 'scripts/serve.mjs'), '--port', String(port)], { stdio: 'ignore' });
 const out = path.join(root, 'bench-results/startup');
 try {
@@ -169,9 +168,15 @@ try {
   }
   const rel = (p) => `/${path.relative(root, p)}`;
   for (const id of configIds) {
+    const config = CONFIGS[id];
     const rows = Object.fromEntries(libs.map((lib) => [lib, []]));
-    for (let rep = 0; rep < reps; rep++) {
-      for (const lib of libs) rows[lib].push(await measureOnce(lib, CONFIGS[id], rel(dirs[lib]), rel(path.join(out, 'pages'))));
+    const measure = engine === 'chromium' ? measureOnce : await engineMeasure(config, rel(dirs[libs[0]]), rel(path.join(out, 'pages')));
+    try {
+      for (let rep = 0; rep < reps; rep++) {
+        for (const lib of libs) rows[lib].push(await measure(lib, config, rel(dirs[lib]), rel(path.join(out, 'pages'))));
+      }
+    } finally {
+      await measure.close?.();
     }
     for (const lib of libs) {
       // --rows: each run's figures as one JSON line, to pool runs of several invocations.
