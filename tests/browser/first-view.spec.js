@@ -246,3 +246,38 @@ test('browser: the first view waits on no GL answer it does not need: no drawing
   expect(turnFirst.afterTurn.needsMipmaps).toBe(0);
   expect(turnFirst.afterTurn.bufferReads).toBeGreaterThan(turnFirst.atCreate.bufferReads);
 });
+
+test('browser: a canvas larger than the browser lets its drawing buffer be (Chromium shrinks an 8000x8000 one) is drawn at the buffer\'s size once its first view is on screen: the first view took the canvas\'s size, idle time asks the buffer\'s and draws again (a BookView of its own, so nothing else draws; the last frame\'s viewport)', async ({ page }) => {
+  await page.addInitScript(() => {
+    const viewport = WebGL2RenderingContext.prototype.viewport;
+    WebGL2RenderingContext.prototype.viewport = function recorded(...args) { window.__lastViewport = args; return viewport.apply(this, args); };
+  });
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    window.book?.destroy();
+    const { BookView } = await import('/web/src/surfaces/book-view.js');
+    const canvas = document.createElement('canvas');
+    canvas.style.cssText = 'position: absolute; left: 0; top: 0; width: 8000px; height: 8000px';
+    document.body.append(canvas);
+    const view = await BookView.create(canvas, { pageCount: 4 });
+    view.drawNow();
+    const gl = canvas.getContext('webgl2');  // the renderer's context: getContext hands back the one made
+    const atFirst = { canvas: [canvas.width, canvas.height], viewport: [...window.__lastViewport], frames: view.framesDrawn };
+    const buffer = [gl.drawingBufferWidth, gl.drawingBufferHeight];
+    const drawnAtBuffer = () => window.__lastViewport[2] === buffer[0] && window.__lastViewport[3] === buffer[1];
+    for (let i = 0; i < 10 && !drawnAtBuffer(); i++) {
+      await new Promise((resolve) => requestIdleCallback(resolve));
+      await new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve)));
+    }
+    const after = { viewport: [...window.__lastViewport], frames: view.framesDrawn };
+    view.destroy({ releaseContext: true });
+    canvas.remove();
+    return { atFirst, buffer, after };
+  });
+  console.log(`an 8000x8000 canvas: ${JSON.stringify(result)}`);
+  expect(result.atFirst.canvas).toEqual([8000, 8000]);
+  expect(result.buffer[0]).toBeLessThan(8000);  // the premise: the browser gave a smaller buffer
+  expect(result.atFirst.viewport).toEqual([0, 0, 8000, 8000]);  // the first view asked nothing
+  expect(result.after.viewport).toEqual([0, 0, ...result.buffer]);  // drawn again at the buffer's size
+  expect(result.after.frames).toBeGreaterThan(result.atFirst.frames);
+});
