@@ -1,7 +1,7 @@
 // Runs inside the benchmark page: loads one library's bundle, mounts the book with the generated
 // pages, and exposes window.bench for the runner (first frame, turns with rAF sampling, stats).
 // Query: ?lib=conecurl|page-flip|turnjs|floor-webgl|floor-2d|conecurl-baseline&pages=N&display=single|double&duration=ms&bundles=URL&images=URL
-// [&options=JSON]
+// [&options=JSON] [&instrument=startup] (startup-instrument.js run before the library loads: startup.mjs in Firefox and WebKit)
 const params = new URLSearchParams(location.search);
 const required = (name) => {
   const value = params.get(name);
@@ -35,6 +35,7 @@ function sample(now) {
 
 async function main() {
   if (!['single', 'double'].includes(display)) throw new Error(`bench harness: display must be single or double, got ${display}`);
+  if (params.get('instrument') === 'startup') await import('./startup-instrument.js');
   const { mount } = await import(`${bundles}/${lib}.js`);
   const book = await mount(document.getElementById('book'), { urls, display, duration, extra });
   const readyMs = performance.now();

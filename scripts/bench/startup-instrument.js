@@ -1,5 +1,5 @@
-// The startup profile's instrument (scripts/bench/startup.mjs): run in the page before anything else, by
-// Chromium's init script or by startup.html's first script in Firefox and WebKit, whose drivers have none.
+// The startup profile's instrument (scripts/bench/startup.mjs): run in the page before anything else by
+// Chromium's init script; in Firefox and WebKit, whose drivers have none, by harness.js before the library loads.
 // Wraps the calls each phase makes and notes when each ran and
 // how long it blocked the main thread (GL calls that wait for the GPU process block here).
 (() => {

@@ -8,7 +8,7 @@
 //        [--engine chromium|firefox|webkit] (Firefox and WebKit through scripts/engines.mjs, desktop configs only)
 // The libraries take turns within each rep, so a slow spell of the machine falls on all of them. Chromium: a
 // fresh browser each run. Firefox and WebKit: one browser for all runs of a config, after one visit not measured
-// (as the bench's engine rows), the instrument run by startup.html's first script.
+// (as the bench's engine rows), the instrument run by harness.js (`instrument=startup`) before the library loads.
 import { spawn } from 'node:child_process';
 import path from 'node:path';
 import { chromium } from '@playwright/test';
@@ -104,9 +104,9 @@ async function measureOnce(lib, config, bundles, images) {
   }
 }
 
-// One navigation of `lib` in `config` in `browser` (scripts/engines.mjs), through startup.html.
+// One navigation of `lib` in `config` in `browser` (scripts/engines.mjs), the harness running the instrument.
 async function measureInEngine(browser, lib, config, bundles, images) {
-  await browser.goto(`http://127.0.0.1:${port}/scripts/bench/startup.html?${queryOf(lib, config, bundles, images)}`);
+  await browser.goto(`http://127.0.0.1:${port}/scripts/bench/harness.html?${queryOf(lib, config, bundles, images)}&instrument=startup`);
   const { readyMs, firstFrameMs } = await browser.evaluate(bookReady);
   return browser.evaluate(collect, [readyMs, firstFrameMs]);
 }
