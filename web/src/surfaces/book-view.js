@@ -47,7 +47,7 @@ export class BookView {
     this.contextLease = null;
     this._poseFrom = null;  // the settled position showTurn() poses from
     this._warmDraws = 0;  // frames drawn by prepareTurn() that never reached the screen
-    this._finishFirstView = null;  // cancels the first view's finish (see _drawn), once its first frame is drawn
+    this._cancelFirstViewFinish = null;  // set once the first frame is drawn: cancels the first view's finish to come (see _drawn)
     this._resolution = new MovingResolution(options.resolution ?? 'auto');
     this._frames = new FrameScheduler({
       runs: () => Boolean(this.renderer) && this._context.clockRuns,
@@ -256,7 +256,7 @@ export class BookView {
   // After a drawn frame: what the first view left out, each a wait on the GL (the mipmaps, the drawing buffer's
   // size: BookRenderer::finishFirstView), asked for once, in idle time after its first frame (a turn's frame is sooner).
   _drawn() {
-    this._finishFirstView ??= idleAfterFirstFrame(() => {
+    this._cancelFirstViewFinish ??= idleAfterFirstFrame(() => {
       if (this.renderer && !this._context.lost && this.renderer.finishFirstView()) this.requestRender();
     });
   }
@@ -286,7 +286,7 @@ export class BookView {
   destroy({ releaseContext = false } = {}) {
     if (!this.renderer) return;
     this._frames.cancel();
-    this._finishFirstView?.();
+    this._cancelFirstViewFinish?.();
     this._size.stop();
     this._context.stop();
     // The canvas has its WebGL2 context already: getContext hands back that one, it makes no new one.
