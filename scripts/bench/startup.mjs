@@ -6,6 +6,7 @@
 //        [--port 8097] [--baseline <dir>] (another checkout, measured as conecurl-baseline: name it in --libs)
 //        [--no-bundle] (reuse bench-results/startup/bundles) [--rows] (also each run's figures, one JSON line a config)
 //        [--engine chromium|firefox|webkit] (Firefox and WebKit through scripts/engines.mjs, desktop configs only)
+//        [--stack] (a failure's stack trace; without it, one line)
 // The libraries take turns within each rep, so a slow spell of the machine falls on all of them. Chromium: a
 // fresh browser each run. Firefox and WebKit: one browser for all runs of a config, after one visit not measured
 // (as the bench's engine rows), the instrument run by harness.js (`instrument=startup`) before the library loads.
@@ -14,7 +15,7 @@ import path from 'node:path';
 import { chromium } from '@playwright/test';
 import { chromiumLaunchOptions } from '../chromium.mjs';
 import { ENGINES, engineExecutables, launchEngine, startDisplay } from '../engines.mjs';
-import { BASELINE, bundleBaseline, bundleLibraries } from './bundle.mjs';
+import { BASELINE, LIBRARIES, bundleBaseline, bundleLibraries } from './bundle.mjs';
 import { writePageImages } from './page-images.mjs';
 import { PHONES, phoneUse } from '../../tests/browser/phone.js';
 
@@ -23,14 +24,21 @@ const arg = (name, fallback) => {
   const i = process.argv.indexOf(name);
   return i > 0 ? process.argv[i + 1] : fallback;
 };
+// A bad argument: what is wrong and what to give, in one line, exit 2.
+const usage = (message) => {
+  console.error(`startup: ${message}`);
+  process.exit(2);
+};
 const libs = arg('--libs', arg('--lib', 'conecurl')).split(',');
 const baselineDir = arg('--baseline', null);
-if (libs.includes(BASELINE) && !baselineDir) throw new Error(`startup: ${BASELINE} needs --baseline <dir> (another conecurl checkout with its dist/ built)`);
+if (libs.includes(BASELINE) && !baselineDir) usage(`${BASELINE} needs --baseline <dir> (another conecurl checkout with its dist/ built)`);
 const configIds = arg('--configs', 'double-20,phone-20').split(',');
 const reps = Number(arg('--reps', '5'));
+for (const lib of libs) if (lib !== BASELINE && !LIBRARIES.includes(lib)) usage(`unknown library ${lib} (${[...LIBRARIES, BASELINE].join(', ')})`);
+if (!Number.isInteger(reps) || reps < 1) usage(`--reps takes a whole number of runs, 1 or more (got ${arg('--reps')})`);
 const port = Number(arg('--port', process.env.CONECURL_BENCH_PORT || '8097'));
 const engine = arg('--engine', 'chromium');
-if (engine !== 'chromium' && !ENGINES.includes(engine)) throw new Error(`startup: unknown engine ${engine} (chromium, ${ENGINES.join(', ')})`);
+if (engine !== 'chromium' && !ENGINES.includes(engine)) usage(`unknown engine ${engine} (chromium, ${ENGINES.join(', ')})`);
 const INSTRUMENT = path.join(root, 'scripts/bench/startup-instrument.js');
 const CONFIGS = {  // as scripts/bench/run.mjs measures them
   'double-20': { display: 'double', pages: 20, use: { viewport: { width: 1600, height: 1100 }, deviceScaleFactor: 1 } },
@@ -38,8 +46,8 @@ const CONFIGS = {  // as scripts/bench/run.mjs measures them
   'phone-20': { display: 'single', pages: 20, use: phoneUse(PHONES['phone-portrait']) },
 };
 for (const id of configIds) {
-  if (!CONFIGS[id]) throw new Error(`startup: unknown config ${id} (${Object.keys(CONFIGS).join(', ')})`);
-  if (engine !== 'chromium' && CONFIGS[id].use.isMobile) throw new Error(`startup: ${id} is a phone, measured in Chromium only (no phone emulation in ${engine} here)`);
+  if (!CONFIGS[id]) usage(`unknown config ${id} (${Object.keys(CONFIGS).join(', ')})`);
+  if (engine !== 'chromium' && CONFIGS[id].use.isMobile) usage(`${id} is a phone, measured in Chromium only (no phone emulation in ${engine} here)`);
 }
 
 // In the page once the book is ready: the phases' timestamps, as the instrument and the resource timings saw them.
@@ -154,36 +162,45 @@ async function engineMeasure(config, bundles, images) {
   return measure;
 }
 
-const server = spawn(process.execPath, [path.join(root, 'scripts/serve.mjs'), '--port', String(port)], { stdio: 'ignore' });
-const out = path.join(root, 'bench-results/startup');
-try {
-  writePageImages(path.join(out, 'pages'), 20);
-  const bundlesDir = path.join(out, 'bundles');
-  if (!process.argv.includes('--no-bundle')) await bundleLibraries(bundlesDir);
-  const dirs = Object.fromEntries(libs.map((lib) => [lib, bundlesDir]));
-  if (baselineDir) {
-    const built = await bundleBaseline(path.resolve(baselineDir), bundlesDir);
-    dirs[BASELINE] = built.bundles;
-    console.log(`startup: ${BASELINE} is ${built.dir} at ${built.commit}`);
-  }
-  const rel = (p) => `/${path.relative(root, p)}`;
-  for (const id of configIds) {
-    const config = CONFIGS[id];
-    const rows = Object.fromEntries(libs.map((lib) => [lib, []]));
-    const measure = engine === 'chromium' ? measureOnce : await engineMeasure(config, rel(dirs[libs[0]]), rel(path.join(out, 'pages')));
-    try {
-      for (let rep = 0; rep < reps; rep++) {
-        for (const lib of libs) rows[lib].push(await measure(lib, config, rel(dirs[lib]), rel(path.join(out, 'pages'))));
+// Bundles the libraries, serves the page and measures each config; a failure is one line (`--stack`: its trace), exit 1.
+async function main() {
+  const server = spawn(process.execPath, [path.join(root, 'scripts/serve.mjs'), '--port', String(port)], { stdio: 'ignore' });
+  const out = path.join(root, 'bench-results/startup');
+  try {
+    writePageImages(path.join(out, 'pages'), 20);
+    const bundlesDir = path.join(out, 'bundles');
+    if (!process.argv.includes('--no-bundle')) await bundleLibraries(bundlesDir);
+    const dirs = Object.fromEntries(libs.map((lib) => [lib, bundlesDir]));
+    if (baselineDir) {
+      const built = await bundleBaseline(path.resolve(baselineDir), bundlesDir);
+      dirs[BASELINE] = built.bundles;
+      console.log(`startup: ${BASELINE} is ${built.dir} at ${built.commit}`);
+    }
+    const rel = (p) => `/${path.relative(root, p)}`;
+    for (const id of configIds) {
+      const config = CONFIGS[id];
+      const rows = Object.fromEntries(libs.map((lib) => [lib, []]));
+      const measure = engine === 'chromium' ? measureOnce : await engineMeasure(config, rel(dirs[libs[0]]), rel(path.join(out, 'pages')));
+      try {
+        for (let rep = 0; rep < reps; rep++) {
+          for (const lib of libs) rows[lib].push(await measure(lib, config, rel(dirs[lib]), rel(path.join(out, 'pages'))));
+        }
+      } finally {
+        await measure.close?.();
       }
-    } finally {
-      await measure.close?.();
+      for (const lib of libs) {
+        // --rows: each run's figures as one JSON line, to pool runs of several invocations.
+        if (process.argv.includes('--rows')) console.log(`rows ${lib} ${id} ${JSON.stringify(rows[lib])}`);
+        report(lib, id, rows[lib]);
+      }
     }
-    for (const lib of libs) {
-      // --rows: each run's figures as one JSON line, to pool runs of several invocations.
-      if (process.argv.includes('--rows')) console.log(`rows ${lib} ${id} ${JSON.stringify(rows[lib])}`);
-      report(lib, id, rows[lib]);
-    }
+  } finally {
+    server.kill();
   }
-} finally {
-  server.kill();
 }
+
+main().catch((error) => {
+  const message = String(error?.message ?? error);
+  console.error(process.argv.includes('--stack') ? error : /^[\w-]+: /.test(message) ? message : `startup: ${message}`);
+  process.exit(1);
+});
