@@ -152,6 +152,41 @@ test('browser: a turning frame costs one call into the wasm engine and a bounded
   }
 });
 
+test('browser: a turn that starts before idle time finished the first view finishes it in its first frames (the mipmaps), and the idle task asked for it then calls nothing in the engine mid-turn (counts)', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    // The page's idle callbacks are held from before the book is made, and run when the test says, mid-turn.
+    const held = new Map();
+    let ids = 0;
+    const { requestIdleCallback, cancelIdleCallback } = window;
+    window.requestIdleCallback = (callback) => { held.set(++ids, callback); return ids; };
+    window.cancelIdleCallback = (id) => { held.delete(id); };
+    const nextFrame = () => new Promise((resolve) => requestAnimationFrame(resolve));
+    try {
+      await window.openBook({ pages: 8, display: 'double', duration: 3000, loadWindow: 8, startPage: 1 });
+      const mipmaps = () => window.__counts.glByName.generateMipmap ?? 0;
+      const atRest = mipmaps();  // the first view's pages have none yet: their finish waits on idle time
+      const turning = window.book.next();
+      for (let i = 0; i < 4; i++) await nextFrame();
+      const inTurn = mipmaps() - atRest;
+      const before = window.__counts.wasm;
+      const callbacks = [...held.values()];
+      held.clear();
+      for (const callback of callbacks) callback({ didTimeout: false, timeRemaining: () => 50 });
+      const idleCalls = window.__counts.wasm - before;
+      const stillMoving = window.book.animating;
+      return { inTurn, idleCalls, stillMoving, landed: await turning };
+    } finally {
+      Object.assign(window, { requestIdleCallback, cancelIdleCallback });
+    }
+  });
+  console.log(`first view finished by a turn: ${JSON.stringify(result)}`);
+  expect(result.inTurn, 'mipmaps made by the turn\'s first frames').toBeGreaterThan(0);
+  expect(result.stillMoving).toBe(true);
+  expect(result.idleCalls, 'calls into the engine from the idle tasks run mid-turn').toBe(0);
+  expect(result.landed).toBe(true);
+});
+
 test('browser: the page sound (opt-in) adds one call into the engine a frame (FrameLoop.motion) once a gesture made its AudioContext, none while muted, and no WebGL call (counts)', async ({ page }) => {
   await openReady(page, FIXTURE);
   const options = { pages: 8, display: 'double', duration: 3000, loadWindow: 8, startPage: 1, sound: true, muted: true };

@@ -254,8 +254,15 @@ export class BookView {
   }
 
   // After a drawn frame: what the first view left out, each a wait on the GL (the mipmaps, the drawing buffer's
-  // size: BookRenderer::finishFirstView), asked for once, in idle time after its first frame (a turn's frame is sooner).
+  // size: BookRenderer::finishFirstView), asked for once, in idle time after its first frame. A frame drawn with a
+  // leaf still moving did it first (BookRenderer::draw): the idle call, a wasted call into the engine in the middle
+  // of a turn, is cancelled.
   _drawn() {
+    if (this._frames.moving) {
+      this._cancelFirstViewFinish?.();
+      this._cancelFirstViewFinish = () => {};
+      return;
+    }
     this._cancelFirstViewFinish ??= idleAfterFirstFrame(() => {
       if (this.renderer && !this._context.lost && this.renderer.finishFirstView()) this.requestRender();
     });
