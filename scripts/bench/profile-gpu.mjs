@@ -10,10 +10,12 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { chromium } from '@playwright/test';
 import { chromiumLaunchOptions } from '../chromium.mjs';
+import { runMain, usage as badArgument } from './cli.mjs';
 import { cpuDelta, processCpu, summarize } from './metrics.mjs';
 import { PHONES, phoneUse } from '../../tests/browser/phone.js';
 
 const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
+const usage = (message) => badArgument('profile-gpu', message);
 const arg = (name, fallback) => {
   const i = process.argv.indexOf(name);
   return i > 0 ? process.argv[i + 1] : fallback;
@@ -28,10 +30,11 @@ const CONFIGS = {  // as scripts/bench/run.mjs measures them
   'single-20': { display: 'single', use: { viewport: { width: 800, height: 1100 }, deviceScaleFactor: 1 } },
   'phone-20': { display: 'single', use: phoneUse(PHONES['phone-portrait']) },
 };
-if (!CONFIGS[config]) throw new Error(`profile-gpu: unknown config ${config} (${Object.keys(CONFIGS).join(', ')})`);
+if (!CONFIGS[config]) usage(`unknown config ${config} (${Object.keys(CONFIGS).join(', ')})`);
+if (!Number.isInteger(framesPerSample) || framesPerSample < 2) usage(`--frames takes a whole number of frames, 2 or more (got ${arg('--frames')})`);
+if (!Number.isInteger(rounds) || rounds < 1) usage(`--rounds takes a whole number, 1 or more (got ${arg('--rounds')})`);
 const { display, use } = CONFIGS[config];
 const pages = '20';
-if (!fs.existsSync(path.join(root, bundles, 'conecurl.js'))) throw new Error(`profile-gpu: ${bundles}/conecurl.js is missing; run npm run bench once first`);
 
 // Each variant: [name, setup, teardown], evaluated in the page with `view` (BookView) in scope.
 const VARIANTS = [
@@ -49,61 +52,70 @@ const VARIANTS = [
 
 const chosen = arg('--variants', null);
 const variants = chosen ? chosen.split(',').map((i) => {
-  if (!VARIANTS[Number(i)]) throw new Error(`profile-gpu: no variant ${i} (0..${VARIANTS.length - 1})`);
+  if (!VARIANTS[Number(i)]) usage(`no variant ${i} (0..${VARIANTS.length - 1})`);
   return VARIANTS[Number(i)];
 }) : VARIANTS;
+if (!fs.existsSync(path.join(root, bundles, 'conecurl.js'))) usage(`${bundles}/conecurl.js is missing; run npm run bench once first`);
 
-const server = spawn(process.execPath, [path.join(root, 'scripts/serve.mjs'), '--port', String(port)], { stdio: 'ignore' });
-await new Promise((resolve) => setTimeout(resolve, 500));
-const browser = await chromium.launch(chromiumLaunchOptions());
-try {
-  const page = await (await browser.newContext(use)).newPage();
-  const cdp = await browser.newBrowserCDPSession();
-  const query = new URLSearchParams({ lib: 'conecurl', pages, display, duration: '600', bundles: `/${bundles}`, images: `/${path.dirname(bundles)}/pages` });
-  await page.goto(`http://127.0.0.1:${port}/scripts/bench/harness.html?${query}`);
-  await page.evaluate(async () => { while (!window.bench) await new Promise((r) => setTimeout(r, 5)); await window.bench.ready(); });
-  await page.evaluate(async () => { const book = await window.bench.mounted(); await book.turn(); await book.turn(); });
-  const samples = new Map(variants.map(([name]) => [name, { gpu: [], interval: [], draw: [] }]));
-  for (let round = 0; round < rounds; round++) {
-    for (const [name, setup, teardown] of variants) {
-      await page.evaluate(async (code) => { const view = (await window.bench.mounted()).view(); new Function('view', code)(view); }, setup);
-      await page.waitForTimeout(300);
-      const before = await processCpu(cdp);
-      const { stamps, draws } = await page.evaluate(async (count) => {
-        const view = (await window.bench.mounted()).view();
-        const stampsIn = [];
-        const drawsIn = [];
-        for (let i = 0; i < count; i++) {
-          await new Promise((resolve) => requestAnimationFrame(resolve));
-          const t0 = performance.now();
-          if (window.__rest) view.drawNow();
-          else if (!window.__skip) view.showTurn('forward', 0.1 + (0.8 * (i % 8)) / 8);
-          drawsIn.push(performance.now() - t0);
-          stampsIn.push(performance.now());
-        }
-        view.jumpTo(view.position);  // back to rest, no pose left behind
-        return { stamps: stampsIn, draws: drawsIn };
-      }, framesPerSample);
-      const after = await processCpu(cdp);
-      const gpu = cpuDelta(before, after).filter((p) => p.type === 'GPU').reduce((sum, p) => sum + p.cpu, 0);
-      const sample = samples.get(name);
-      sample.gpu.push((1000 * gpu) / framesPerSample);
-      sample.interval.push(summarize(stamps.slice(1).map((t, i) => t - stamps[i])).median);
-      sample.draw.push(summarize(draws).median);
-      await page.evaluate(async (code) => { const view = (await window.bench.mounted()).view(); new Function('view', code)(view); }, teardown);
-    }
-  }
-  const canvas = await page.evaluate(async () => {
-    const view = (await window.bench.mounted()).view();
-    return `${view.canvas.width}x${view.canvas.height}, grid ${view.renderer.gridRows()}x${view.renderer.gridColumns()}`;
+// Draws the pose under each variant and prints the medians; a failure is one line (`--stack`: its trace), exit 1.
+async function main() {
+  const server = spawn(process.execPath, [path.join(root, 'scripts/serve.mjs'), '--port', String(port)], { stdio: 'ignore' });
+  await new Promise((resolve) => setTimeout(resolve, 500));
+  const browser = await chromium.launch(chromiumLaunchOptions()).catch((error) => {
+    server.kill();
+    throw error;
   });
-  console.log(`conecurl ${config} (canvas ${canvas}), ${framesPerSample} frames x ${rounds} rounds per variant; medians over rounds`);
-  console.log(`${'variant'.padEnd(36)} ${'GPU ms/frame'.padStart(13)} ${'interval ms'.padStart(12)} ${'draw call ms'.padStart(13)}`);
-  for (const [name, s] of samples) {
-    console.log(`${name.padEnd(36)} ${summarize(s.gpu).median.toFixed(1).padStart(13)} ${summarize(s.interval).median.toFixed(1).padStart(12)} `
-      + `${summarize(s.draw).median.toFixed(2).padStart(13)}`);
+  try {
+    const page = await (await browser.newContext(use)).newPage();
+    const cdp = await browser.newBrowserCDPSession();
+    const query = new URLSearchParams({ lib: 'conecurl', pages, display, duration: '600', bundles: `/${bundles}`, images: `/${path.dirname(bundles)}/pages` });
+    await page.goto(`http://127.0.0.1:${port}/scripts/bench/harness.html?${query}`);
+    await page.evaluate(async () => { while (!window.bench) await new Promise((r) => setTimeout(r, 5)); await window.bench.ready(); });
+    await page.evaluate(async () => { const book = await window.bench.mounted(); await book.turn(); await book.turn(); });
+    const samples = new Map(variants.map(([name]) => [name, { gpu: [], interval: [], draw: [] }]));
+    for (let round = 0; round < rounds; round++) {
+      for (const [name, setup, teardown] of variants) {
+        await page.evaluate(async (code) => { const view = (await window.bench.mounted()).view(); new Function('view', code)(view); }, setup);
+        await page.waitForTimeout(300);
+        const before = await processCpu(cdp);
+        const { stamps, draws } = await page.evaluate(async (count) => {
+          const view = (await window.bench.mounted()).view();
+          const stampsIn = [];
+          const drawsIn = [];
+          for (let i = 0; i < count; i++) {
+            await new Promise((resolve) => requestAnimationFrame(resolve));
+            const t0 = performance.now();
+            if (window.__rest) view.drawNow();
+            else if (!window.__skip) view.showTurn('forward', 0.1 + (0.8 * (i % 8)) / 8);
+            drawsIn.push(performance.now() - t0);
+            stampsIn.push(performance.now());
+          }
+          view.jumpTo(view.position);  // back to rest, no pose left behind
+          return { stamps: stampsIn, draws: drawsIn };
+        }, framesPerSample);
+        const after = await processCpu(cdp);
+        const gpu = cpuDelta(before, after).filter((p) => p.type === 'GPU').reduce((sum, p) => sum + p.cpu, 0);
+        const sample = samples.get(name);
+        sample.gpu.push((1000 * gpu) / framesPerSample);
+        sample.interval.push(summarize(stamps.slice(1).map((t, i) => t - stamps[i])).median);
+        sample.draw.push(summarize(draws).median);
+        await page.evaluate(async (code) => { const view = (await window.bench.mounted()).view(); new Function('view', code)(view); }, teardown);
+      }
+    }
+    const canvas = await page.evaluate(async () => {
+      const view = (await window.bench.mounted()).view();
+      return `${view.canvas.width}x${view.canvas.height}, grid ${view.renderer.gridRows()}x${view.renderer.gridColumns()}`;
+    });
+    console.log(`conecurl ${config} (canvas ${canvas}), ${framesPerSample} frames x ${rounds} rounds per variant; medians over rounds`);
+    console.log(`${'variant'.padEnd(36)} ${'GPU ms/frame'.padStart(13)} ${'interval ms'.padStart(12)} ${'draw call ms'.padStart(13)}`);
+    for (const [name, s] of samples) {
+      console.log(`${name.padEnd(36)} ${summarize(s.gpu).median.toFixed(1).padStart(13)} ${summarize(s.interval).median.toFixed(1).padStart(12)} `
+        + `${summarize(s.draw).median.toFixed(2).padStart(13)}`);
+    }
+  } finally {
+    await browser.close();
+    server.kill();
   }
-} finally {
-  await browser.close();
-  server.kill();
 }
+
+runMain('profile-gpu', main);

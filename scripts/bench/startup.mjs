@@ -18,17 +18,14 @@ import { ENGINES, engineExecutables, launchEngine, startDisplay } from '../engin
 import { BASELINE, LIBRARIES, bundleBaseline, bundleLibraries } from './bundle.mjs';
 import { writePageImages } from './page-images.mjs';
 import { PHONES, phoneUse } from '../../tests/browser/phone.js';
+import { runMain, usage as badArgument } from './cli.mjs';
 
 const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
 const arg = (name, fallback) => {
   const i = process.argv.indexOf(name);
   return i > 0 ? process.argv[i + 1] : fallback;
 };
-// A bad argument: what is wrong and what to give, in one line, exit 2.
-const usage = (message) => {
-  console.error(`startup: ${message}`);
-  process.exit(2);
-};
+const usage = (message) => badArgument('startup', message);
 const libs = arg('--libs', arg('--lib', 'conecurl')).split(',');
 const baselineDir = arg('--baseline', null);
 if (libs.includes(BASELINE) && !baselineDir) usage(`${BASELINE} needs --baseline <dir> (another conecurl checkout with its dist/ built)`);
@@ -199,8 +196,4 @@ async function main() {
   }
 }
 
-main().catch((error) => {
-  const message = String(error?.message ?? error);
-  console.error(process.argv.includes('--stack') ? error : /^[\w-]+: /.test(message) ? message : `startup: ${message}`);
-  process.exit(1);
-});
+runMain('startup', main);
