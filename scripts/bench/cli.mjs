@@ -1,5 +1,8 @@
 // How a bench script that a developer runs fails, the same in each: a bad argument named in one line before
-// anything is served or written (exit 2), a failed run in one line (exit 1), its stack only with --stack.
+// anything is served or written (exit 2), a failed run in one line (exit 1), its stack only with --stack;
+// and the served repository with a Chromium that the profiling aids share.
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
 
 /** Says what is wrong with the arguments, as `tool: message`, and exits 2. */
 export function usage(tool, message) {
@@ -15,4 +18,22 @@ export function runMain(tool, main) {
     console.error(process.argv.includes('--stack') ? error : /^[\w-]+: /.test(message) ? message : `${tool}: ${message}`);
     process.exit(1);
   });
+}
+
+/**
+ * Serves the repository on `port` (in this process, ready once listening) and launches Chromium, then runs
+ * `work(browser)` and closes both however it ends; a browser that cannot start closes the server too.
+ */
+export async function withServedChromium(port, work) {
+  const [{ serveDirectory }, { chromium }, { chromiumLaunchOptions }] = await Promise.all([
+    import('../serve.mjs'), import('@playwright/test'), import('../chromium.mjs')]);
+  const { server } = await serveDirectory(path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..'), { port });
+  let browser;
+  try {
+    browser = await chromium.launch(chromiumLaunchOptions());
+    return await work(browser);
+  } finally {
+    await browser?.close().catch(() => {});
+    server.close();
+  }
 }

@@ -5,12 +5,9 @@
 // pages of a previous `npm run bench`.
 // Usage: node scripts/bench/profile-gpu.mjs [--config double-20|single-20|phone-20] [--frames 12] [--rounds 3] [--port 8096]
 //        [--variants 0,6] (indices into VARIANTS) [--bundles bench-results/bundles] (another build of conecurl; its pages beside it)
-import { spawn } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
-import { chromium } from '@playwright/test';
-import { chromiumLaunchOptions } from '../chromium.mjs';
-import { runMain, usage as badArgument } from './cli.mjs';
+import { runMain, usage as badArgument, withServedChromium } from './cli.mjs';
 import { cpuDelta, processCpu, summarize } from './metrics.mjs';
 import { PHONES, phoneUse } from '../../tests/browser/phone.js';
 
@@ -59,13 +56,7 @@ if (!fs.existsSync(path.join(root, bundles, 'conecurl.js'))) usage(`${bundles}/c
 
 // Draws the pose under each variant and prints the medians; a failure is one line (`--stack`: its trace), exit 1.
 async function main() {
-  const server = spawn(process.execPath, [path.join(root, 'scripts/serve.mjs'), '--port', String(port)], { stdio: 'ignore' });
-  await new Promise((resolve) => setTimeout(resolve, 500));
-  const browser = await chromium.launch(chromiumLaunchOptions()).catch((error) => {
-    server.kill();
-    throw error;
-  });
-  try {
+  await withServedChromium(port, async (browser) => {
     const page = await (await browser.newContext(use)).newPage();
     const cdp = await browser.newBrowserCDPSession();
     const query = new URLSearchParams({ lib: 'conecurl', pages, display, duration: '600', bundles: `/${bundles}`, images: `/${path.dirname(bundles)}/pages` });
@@ -112,10 +103,7 @@ async function main() {
       console.log(`${name.padEnd(36)} ${summarize(s.gpu).median.toFixed(1).padStart(13)} ${summarize(s.interval).median.toFixed(1).padStart(12)} `
         + `${summarize(s.draw).median.toFixed(2).padStart(13)}`);
     }
-  } finally {
-    await browser.close();
-    server.kill();
-  }
+  });
 }
 
 runMain('profile-gpu', main);

@@ -3,12 +3,9 @@
 // time, by slice name. Open the JSON in chrome://tracing or Perfetto for the timeline.
 // Usage: node scripts/bench/trace.mjs [--lib conecurl] [--config double-20] [--turns 3] [--duration 600]
 //        [--options '{"shadows":false}'] [--port 8096] [--startup] (trace navigation to first frame instead)
-import { spawn } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
-import { chromium } from '@playwright/test';
-import { chromiumLaunchOptions } from '../chromium.mjs';
-import { runMain, usage as badArgument } from './cli.mjs';
+import { runMain, usage as badArgument, withServedChromium } from './cli.mjs';
 
 const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
 const usage = (message) => badArgument('trace', message);
@@ -39,14 +36,8 @@ const CATEGORIES = ['devtools.timeline', 'disabled-by-default-devtools.timeline'
 
 // Traces the page and prints each thread's time by slice name; a failure is one line (`--stack`: its trace), exit 1.
 async function main() {
-  const server = spawn(process.execPath, [path.join(root, 'scripts/serve.mjs'), '--port', String(port)], { stdio: 'ignore' });
-  await new Promise((resolve) => setTimeout(resolve, 500));
-  const browser = await chromium.launch(chromiumLaunchOptions()).catch((error) => {
-    server.kill();
-    throw error;
-  });
   const outFile = path.join(root, 'bench-results/traces', `${lib}-${config}${startup ? '-startup' : ''}.json`);
-  try {
+  await withServedChromium(port, async (browser) => {
     const viewport = display === 'double' ? { width: 1600, height: 1100 } : { width: 800, height: 1100 };
     const page = await browser.newPage({ viewport, deviceScaleFactor: 1 });
     const query = new URLSearchParams({ lib, pages, display, duration: String(duration), bundles: '/bench-results/bundles', images: '/bench-results/pages', options: extra });
@@ -70,10 +61,7 @@ async function main() {
       const intervals = stamps.slice(1).map((t, i) => Math.round(t - stamps[i]));
       console.log(`${lib} ${config}: ${intervals.length} frames, intervals (ms): ${intervals.join(' ')}`);
     }
-  } finally {
-    await browser.close();
-    server.kill();
-  }
+  });
 
   // Self time is not in the trace; summing complete events per thread by name gives inclusive time,
   // which is what "where did this thread spend its time" needs at this level.
