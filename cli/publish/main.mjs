@@ -3,7 +3,7 @@
 // Returns the exit code: 0 done, 1 bad input, 2 bad usage, 3 a site whose failed pages are listed.
 import fs from 'node:fs';
 import path from 'node:path';
-import { ALT_CHARS, MANIFEST, altText, checkManifest, makeManifest, pagePath } from '../../web/src/document/format.js';
+import { ALT_CHARS, MANIFEST, altText, checkManifest, encodeTextGroup, makeManifest, pagePath, planTextGroups } from '../../web/src/document/format.js';
 import { pdfOutline } from '../../web/src/document/pdf-document.js';
 import { DEFAULTS, FORMATS, HELP, parsePublishArgs } from './args.mjs';
 import { HEADERS, embedSrc, headersFile, iframeSnippet } from './embed.mjs';
@@ -113,11 +113,12 @@ async function publish(options) {
     const ext = FORMATS[options.format];
     const kinds = ['pages', 'thumbs', 'text', ...(options.zoom > 0 ? ['zoom'] : [])];
     const pageFiles = numbers.flatMap((_, i) => kinds.map((kind) => `${BOOK}/${pagePath(kind, i, kind === 'text' ? 'json' : ext)}`));
+    const textGroups = planTextGroups(numbers.length);  // the text files again, a group of pages to a file: what search reads
     const icons = ICON_SIDES.map((side) => ({ src: `${BOOK}/${iconFile(side)}`, side }));
     const fixed = ['index.html', HEADERS, `${BOOK}/${MANIFEST}`, `${BOOK}/${COVER}`, ...(download ? [`${BOOK}/${download}`] : []),
       WEB_MANIFEST, SERVICE_WORKER, ...icons.map(({ src }) => src),
       ...site.files.map((file) => `${RUNTIME}/${file}`), ...[...narration.values()].flatMap(({ src, words }) => [`${BOOK}/${src}`, `${BOOK}/${words}`])];
-    const { previous } = claimOutFolder(options.out, [...fixed, ...pageFiles]);
+    const { previous } = claimOutFolder(options.out, [...fixed, ...pageFiles, ...textGroups.map(({ src }) => `${BOOK}/${src}`)]);
     steps.lap('open');  // pdf.js loaded, the PDF opened, its outline read, the out folder checked
 
     const bookDir = path.join(options.out, BOOK);
@@ -184,7 +185,15 @@ async function publish(options) {
         ...(narration.has(index) ? { narration: { src: narration.get(index).src, words: narration.get(index).words } } : {}),
       });
     }
-    const manifest = checkManifest(makeManifest({ title, lang, pages, outline, download }), MANIFEST);
+    // Each group from its pages' text files as written (a page that failed has none: null).
+    for (const { first, count, src } of textGroups) {
+      const files = Array.from({ length: count }, (_, k) => (results[first + k].failed ? null
+        : fs.readFileSync(path.join(bookDir, pagePath('text', first + k, 'json')), 'utf8')));
+      const group = encodeTextGroup(first, files);
+      fs.writeFileSync(path.join(bookDir, src), group);
+      written.set(`${BOOK}/${src}`, { bytes: Buffer.byteLength(group), kind: 'text' });
+    }
+    const manifest = checkManifest(makeManifest({ title, lang, pages, outline, download, textGroups }), MANIFEST);
     const manifestText = `${JSON.stringify(manifest)}\n`;
     fs.writeFileSync(path.join(bookDir, MANIFEST), manifestText);
     written.set(`${BOOK}/${MANIFEST}`, { bytes: manifestText.length, kind: 'text' });
@@ -203,11 +212,12 @@ async function publish(options) {
     fs.writeFileSync(path.join(options.out, HEADERS), headers);
     written.set(HEADERS, { bytes: Buffer.byteLength(headers), kind: 'text' });
     // Last: the web app manifest, and the service worker whose version hashes every file written above.
-    // Precached at install: the page, the reader, book.json, the manifest and its icons, and every page's
-    // text (small; search reads them all); the images as they are read.
-    const shellFiles = ['index.html', `${BOOK}/${MANIFEST}`, WEB_MANIFEST, ...icons.map(({ src }) => src)];
+    // Precached at install: the page, the reader, book.json, the manifest and its icons, and the text groups
+    // (every page's text, a few requests: search reads them all, and a page's text layer offline too); the
+    // images and a page's own text file as they are read.
+    const shellFiles = ['index.html', `${BOOK}/${MANIFEST}`, WEB_MANIFEST, ...icons.map(({ src }) => src), ...textGroups.map(({ src }) => `${BOOK}/${src}`)];
     writeWebApp({ out: options.out, title, lang, written, icons, skip: [HEADERS],
-      shell: (file, { kind }) => kind === 'runtime' || shellFiles.includes(file) || file.startsWith(`${BOOK}/text/`) });
+      shell: (file, { kind }) => kind === 'runtime' || shellFiles.includes(file) });
     settleOutFolder(options.out, previous, [...written.keys()]);
     steps.lap('finish');  // narration, book.json, index.html, _headers, the web app files, the out folder settled
     steps.save({ jobs: options.jobs, pageCount: numbers.length, workerStartMs });

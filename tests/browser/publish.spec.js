@@ -9,7 +9,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdirSync, rmSync, writeFileSync } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { BOOKMARKS, makeDocumentPdf, openPdfBook } from './document-pdf.js';
+import { BOOKMARKS, PAGES, makeDocumentPdf, openPdfBook } from './document-pdf.js';
 
 const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '../..');
 const SITES = path.join(root, 'build/test-sites');
@@ -118,6 +118,35 @@ test('browser: search in the published site finds the same hits, with the same r
   // The mark shows over the word once shown.
   await page.evaluate(async () => window.book.showHit((await window.book.search('coffee'))[0]));
   await expect(page.locator('[data-search-hit]').first()).toBeVisible();
+});
+
+test('browser: the published site reads the book\'s text for search a text group a request, not a file a page; a page whose own text file cannot be read takes its text from its group (counts requests; no service worker, which would answer the requests out of the routes\' sight)', async ({ browser }) => {
+  const context = await browser.newContext({ serviceWorkers: 'block' });
+  const page = await context.newPage();
+  const requests = await openSite(page);
+  await page.evaluate(() => window.book.search('zebra'));  // every page read: the background's, or the search's own
+  const texts = () => requests.map((url) => new URL(url).pathname).filter((file) => file.includes('/book/text/'));
+  const own = texts().filter((file) => /\/text\/\d{4}\.json$/.test(file));
+  const groups = texts().filter((file) => /\/text\/pages-\d{4}-\d{4}\.json$/.test(file));
+  expect(groups.map((file) => file.split('/').pop())).toEqual(['pages-0001-0008.json']);  // 8 pages: one group
+  // The pages' own files: only those the text layer read for the pages shown (the first spread's).
+  expect(own.length).toBeLessThanOrEqual(2);
+  // The document alone, a page's own file refused: its text comes from the group, and the other pages' with it.
+  const site = siteUrl(siteName());
+  await page.route(`**${site}book/text/0003.json`, (route) => route.abort());
+  const read = await page.evaluate(async (url) => {
+    const { openPublished } = await import('/web/src/document/published-document.js');
+    const doc = await openPublished(url);
+    const third = await doc.pageText(2);
+    const fourth = await doc.pageText(3);
+    return { third: third.text, fourth: fourth.text, items: third.items.length };  // a record, as its own file's
+  }, `${site}book/book.json`);
+  expect(read.third).toContain(PAGES[2].heading);
+  expect(read.fourth).toContain(PAGES[3].heading);
+  expect(read.items).toBeGreaterThan(0);
+  const after = texts().slice(own.length + groups.length);
+  expect(after.map((file) => file.split('/').pop())).toEqual(['0003.json', 'pages-0001-0008.json']);  // page 4's from the group too
+  await context.close();
 });
 
 test('browser: the published text layer lies over the words and a mouse drag selects a line without turning', async ({ page }) => {

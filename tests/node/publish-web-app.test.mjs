@@ -57,10 +57,11 @@ test('node: conecurl publish writes manifest.webmanifest with square icons from 
   // Every file written but _headers and sw.js itself, each with its size on disk.
   assert.deepEqual(site.files.map(([file]) => file), ledger.filter((file) => !['_headers', 'sw.js'].includes(file)));
   for (const [file, bytes] of site.files) assert.equal(bytes, fs.statSync(path.join(out, file)).size, file);
-  for (const file of ['index.html', 'book/book.json', 'manifest.webmanifest', 'book/icon-512.png', 'book/text/0001.json', `conecurl/${reader.entry}`, `conecurl/${reader.wasm}`]) {
+  for (const file of ['index.html', 'book/book.json', 'manifest.webmanifest', 'book/icon-512.png', 'book/text/pages-0001-0008.json', `conecurl/${reader.entry}`, `conecurl/${reader.wasm}`]) {
     assert.ok(site.shell.includes(file), `${file} is precached`);
   }
-  for (const file of ['book/pages/0001.webp', 'book/thumbs/0001.webp', 'book/cover.jpg']) assert.ok(!site.shell.includes(file), `${file} is kept as read`);
+  // A page's own text file is read by its text layer (offline, the reader takes the page's text from its group).
+  for (const file of ['book/pages/0001.webp', 'book/thumbs/0001.webp', 'book/cover.jpg', 'book/text/0001.json']) assert.ok(!site.shell.includes(file), `${file} is kept as read`);
   assert.match(site.version, /^[0-9a-f]{16}$/);
   // The page's own version, which the reader compares with its worker's (a new publish's worker reloads it).
   assert.match(fs.readFileSync(path.join(out, 'index.html'), 'utf8'), new RegExp(`<meta name="conecurl-site-version" content="${site.version}">`));

@@ -1,6 +1,7 @@
 // The published document's format, in one place: what `conecurl publish` writes (cli/) and what a book
 // opened with the `document` option reads (published-document.js). A folder holds `book.json` (the
-// pages, their images, links and the outline) and one text file a page (its words and where they lie).
+// pages, their images, links and the outline), one text file a page (its words and where they lie), and
+// the same files again a few at a time (text groups: what search reads, one request for many pages).
 // The same page-text record serves a PDF opened with pdf.js: search and the text layer read only it.
 
 export const FORMAT = 'conecurl-document';
@@ -14,9 +15,11 @@ export const ALT_CHARS = 100;
 /** A link's rectangle in the manifest, in fractions of its page to this step (a tenth of a pixel on a 1000 px page). */
 const LINK_STEP = 1e4;
 
+const pageNumber = (index) => String(index + 1).padStart(4, '0');
+
 /** The path, inside the folder, of page `index`'s file of `kind` (a FOLDERS key) with extension `ext`. */
 export function pagePath(kind, index, ext) {
-  return `${FOLDERS[kind]}/${String(index + 1).padStart(4, '0')}.${ext}`;
+  return `${FOLDERS[kind]}/${pageNumber(index)}.${ext}`;
 }
 
 // ---- a page's text --------------------------------------------------------------------------------
@@ -109,18 +112,59 @@ export function altText(index, text, max = Infinity) {
   return words ? `Page ${index + 1}: ${words}` : `Page ${index + 1}`;
 }
 
+// ---- text groups: many pages' text files in one ---------------------------------------------------
+
+/** Pages a text group holds (the last one fewer): one request for that many pages' text, and a short parse. */
+export const TEXT_GROUP_PAGES = 32;
+
+/** The path, inside the folder, of the text group of pages `first` to `last` (from 0): text/pages-0001-0032.json. */
+export function textGroupPath(first, last) {
+  return `${FOLDERS.text}/pages-${pageNumber(first)}-${pageNumber(last)}.json`;
+}
+
+/** The text groups of a document of `pageCount` pages, as book.json names them: [{ first, count, src }]. */
+export function planTextGroups(pageCount, size = TEXT_GROUP_PAGES) {
+  return Array.from({ length: Math.ceil(pageCount / size) }, (_, k) => {
+    const first = k * size;
+    const count = Math.min(size, pageCount - first);
+    return { first, count, src: textGroupPath(first, first + count - 1) };
+  });
+}
+
+/** A text group's file from its pages' text files as written (JSON text each, or null for a page without one). */
+export function encodeTextGroup(first, files) {
+  return `{"format":"${FORMAT}","version":${FORMAT_VERSION},"first":${first},"pages":[${files.map((file) => file ?? 'null').join(',')}]}\n`;
+}
+
+/**
+ * The pages of a text group's file (`json`, read from `where`) for the group `{ first, count }` the manifest
+ * names: each page's text file as it holds it (decodePageText() reads one when it is wanted, so that no task
+ * decodes a whole group), null for a page without one. An Error names the file and what is wrong.
+ */
+export function checkTextGroup(json, where, { first, count }) {
+  const bad = (what) => new Error(`conecurl: the text group ${where} ${what}`);
+  if (!json || typeof json !== 'object' || json.format !== FORMAT || !Array.isArray(json.pages)) {
+    throw bad(`is not a conecurl text group ({ format: "${FORMAT}", first, pages })`);
+  }
+  if (json.version > FORMAT_VERSION) throw bad(`is format version ${json.version}; this conecurl reads version ${FORMAT_VERSION}: update conecurl`);
+  if (json.first !== first || json.pages.length !== count) throw bad(`holds pages ${json.first} + ${json.pages.length}, not the ${first} + ${count} book.json names`);
+  return json.pages;
+}
+
 // ---- the manifest ---------------------------------------------------------------------------------
 
 /**
  * The manifest of a published document. `pages[i]`: { width, height (page units), src, zoomSrc?,
  * thumbSrc?, placeholder? (a small image drawn while `src` loads: a path or a data: URL), text?, alt? (else made from
  * the text once read), links? ([{ rect, href } | { rect, page }]) } with paths relative to the manifest, or { width, height, failed: 'why' } for a page that could not be drawn.
- * @param {{ title?: string, lang?: string, pages: object[], outline?: object[], download?: string|null }} parts
+ * `textGroups` (optional): [{ first, count, src }], the text groups, in page order, each naming its file.
+ * @param {{ title?: string, lang?: string, pages: object[], outline?: object[], download?: string|null, textGroups?: object[] }} parts
  */
-export function makeManifest({ title = '', lang = '', pages, outline = [], download = null }) {
+export function makeManifest({ title = '', lang = '', pages, outline = [], download = null, textGroups }) {
   const step = (v) => Math.round(v * LINK_STEP) / LINK_STEP;
   const rounded = pages.map((page) => (page.links ? { ...page, links: page.links.map((link) => ({ ...link, rect: link.rect.map(step) })) } : page));
-  return { format: FORMAT, version: FORMAT_VERSION, title, lang, pageCount: pages.length, pages: rounded, outline, download };
+  return { format: FORMAT, version: FORMAT_VERSION, title, lang, pageCount: pages.length, pages: rounded, outline, download,
+    ...(textGroups ? { textGroups } : {}) };
 }
 
 const isRect = (r) => Array.isArray(r) && r.length === 4 && r.every((v) => Number.isFinite(v) && v >= 0 && v <= 1);
@@ -163,5 +207,15 @@ export function checkManifest(json, where) {
   });
   checkOutline(json.outline ?? [], count, bad);
   if (json.download != null && !isPath(json.download)) throw bad("'download' is not a path");
+  if (json.textGroups !== undefined) {
+    if (!Array.isArray(json.textGroups)) throw bad("'textGroups' is not an array");
+    let next = 0;  // groups come in page order and do not overlap
+    json.textGroups.forEach((group, i) => {
+      const ok = group && isPath(group.src) && Number.isInteger(group.first) && Number.isInteger(group.count)
+        && group.first >= next && group.count > 0 && group.first + group.count <= count;
+      if (!ok) throw bad(`'textGroups[${i}]' needs a src and pages (first, count) after the group before it and below ${count}`);
+      next = group.first + group.count;
+    });
+  }
   return json;
 }

@@ -1,8 +1,9 @@
 // A published document (the `document` option: a book.json that `conecurl publish` wrote, or a host's
 // own pipeline): its pages are images, and its text, outline and links come from the files beside them
 // (format.js), read with fetch. No pdf.js: search, the text layer and outline() read the same records
-// as for a PDF opened at run time.
-import { MANIFEST, altText, checkManifest, decodePageText, emptyPageText } from './format.js';
+// as for a PDF opened at run time. A page's text comes from its own file (the text layer of a page opened),
+// or from its text group (search reads many pages a request; offline, a page whose own file was never read).
+import { MANIFEST, altText, checkManifest, checkTextGroup, decodePageText, emptyPageText } from './format.js';
 
 const copyOutline = (entries) => entries.map(({ title, page, children }) => ({ title, page, children: copyOutline(children ?? []) }));
 
@@ -53,7 +54,34 @@ export async function openPublished(url) {
     }
     return entry;
   });
-  const texts = new Map();  // page index -> Promise of its record, fetched once
+  const texts = new Map();  // page index -> Promise of its record, read once
+  const groups = manifest.textGroups ?? [];
+  const groupReads = new Map();  // a text group -> Promise of its read
+  const held = new Map();  // page index -> its text file as its group held it (null: none), until its record is made
+  const made = new Set();  // the pages whose record was made
+  const emptyText = (index) => emptyPageText(manifest.pages[index]?.width, manifest.pages[index]?.height);
+  const keep = (index, record) => {
+    if (manifest.pages[index].alt === undefined) pages[index].alt = altText(index, record.text);
+    made.add(index);
+    held.delete(index);
+    return record;
+  };
+  const groupOf = (index) => groups.find(({ first, count }) => index >= first && index < first + count) ?? null;
+  const readGroup = (group) => {
+    if (!groupReads.has(group)) {
+      groupReads.set(group, fetchJson(at(group.src), 'the text group').then((json) => {
+        checkTextGroup(json, at(group.src), group).forEach((page, k) => { if (!made.has(group.first + k)) held.set(group.first + k, page); });
+      }));
+    }
+    return groupReads.get(group);
+  };
+  const fromGroup = (index, group) => {
+    const page = held.get(index);
+    return keep(index, page ? decodePageText(page, `${at(group.src)} (page ${index + 1})`) : emptyText(index));
+  };
+  // From the page's own file; where that cannot be read (offline, a page whose file was never read), from its group.
+  const ownText = (index, file, group) => fetchJson(at(file), 'the page text').then((json) => keep(index, decodePageText(json, at(file))))
+    .catch((error) => (group ? readGroup(group).then(() => fromGroup(index, group), () => { throw error; }) : Promise.reject(error)));
   const first = manifest.pages[0];
   return {
     pages,
@@ -62,19 +90,27 @@ export async function openPublished(url) {
     lang: manifest.lang || '',
     /** The manifest's URL. */
     url: manifestUrl,
-    /** Page `index`'s text record (format.js); a page without a text file has no text. */
+    /**
+     * Page `index`'s text record (format.js): from its text group where that is read or on its way (search,
+     * read-aloud), else from its own file (a page's text layer). A page without a text file has no text.
+     */
     pageText(index) {
       if (!texts.has(index)) {
         const file = manifest.pages[index]?.text;
-        texts.set(index, file
-          ? fetchJson(at(file), 'the page text').then((json) => {
-            const record = decodePageText(json, at(file));
-            if (manifest.pages[index].alt === undefined) pages[index].alt = altText(index, record.text);
-            return record;
-          })
-          : Promise.resolve(emptyPageText(manifest.pages[index]?.width, manifest.pages[index]?.height)));
+        const group = groupOf(index);
+        texts.set(index, !file ? Promise.resolve(emptyText(index))
+          : group && groupReads.has(group) ? readGroup(group).then(() => fromGroup(index, group), () => ownText(index, file, group))
+            : ownText(index, file, group));
       }
       return texts.get(index);
+    },
+    /**
+     * Reads the text group that holds page `index` (one request for its pages); resolves with its pages
+     * ({ first, count }), whose pageText() then needs no request, or null where there is none or it cannot be read.
+     */
+    readTextGroup(index) {
+      const group = groupOf(index);
+      return group ? readGroup(group).then(() => ({ first: group.first, count: group.count }), () => null) : Promise.resolve(null);
     },
     outline: async () => copyOutline(manifest.outline ?? []),
     /** The document's PDF, when it was published with it. */

@@ -3,8 +3,9 @@
 // pages read from their elements, and each hit's rectangles (one per line) as fractions of its page.
 //
 // What runs where: for a PDF, pdf.js parses each page's content stream and extracts its text in its
-// worker; a published document's text files are fetched. Only the folding, the matching and the geometry
-// of the hits run here on the main thread, page by page in idle time, never inside a turn's frame.
+// worker; a published document's text files are fetched, a text group (many pages) a request. Only the
+// folding, the matching and the geometry of the hits run here on the main thread, page by page in idle
+// time, never inside a turn's frame.
 import { emptyPageText } from './format.js';
 import { measureText as measure } from '../layers/text-measure.js';
 
@@ -130,7 +131,10 @@ const cancelIdle = (id) => (typeof cancelIdleCallback === 'function' ? cancelIdl
  * (format.js) read once and kept, for every later search.
  */
 export class TextIndex {
-  /** @param {{ pageText: (index: number) => Promise<object> }} doc  the book's document @param {number} pageCount */
+  /**
+   * @param {{ pageText: (index: number) => Promise<object>, readTextGroup?: (index: number) => Promise<{ first: number, count: number }|null> }} doc
+   *   the book's document @param {number} pageCount
+   */
   constructor(doc, pageCount) {
     this._doc = doc;
     this._pages = new Array(pageCount);  // page -> Promise of its record
@@ -139,9 +143,13 @@ export class TextIndex {
     this._stopped = false;
   }
 
-  /** Page `index`'s record, read now if the background has not reached it yet (a page whose text cannot be read has none). */
+  /**
+   * Page `index`'s record, read now if the background has not reached it yet (a page whose text cannot be
+   * read has none). Where the document has text groups (a published one's `readTextGroup`), the page's
+   * group is read first: one request for it and the pages beside it, which then need none.
+   */
   page(index) {
-    this._pages[index] ??= Promise.resolve().then(() => this._doc.pageText(index)).catch(() => emptyPageText());
+    this._pages[index] ??= Promise.resolve(this._doc.readTextGroup?.(index)).then(() => this._doc.pageText(index)).catch(() => emptyPageText());
     return this._pages[index];
   }
 
