@@ -114,11 +114,12 @@ async function publish(options) {
     const kinds = ['pages', 'thumbs', 'text', ...(options.zoom > 0 ? ['zoom'] : [])];
     const pageFiles = numbers.flatMap((_, i) => kinds.map((kind) => `${BOOK}/${pagePath(kind, i, kind === 'text' ? 'json' : ext)}`));
     const textGroups = planTextGroups(numbers.length);  // the text files again, a group of pages to a file: what search reads
+    const groupFiles = textGroups.map(({ src }) => `${BOOK}/${src}`);
     const icons = ICON_SIDES.map((side) => ({ src: `${BOOK}/${iconFile(side)}`, side }));
     const fixed = ['index.html', HEADERS, `${BOOK}/${MANIFEST}`, `${BOOK}/${COVER}`, ...(download ? [`${BOOK}/${download}`] : []),
       WEB_MANIFEST, SERVICE_WORKER, ...icons.map(({ src }) => src),
       ...site.files.map((file) => `${RUNTIME}/${file}`), ...[...narration.values()].flatMap(({ src, words }) => [`${BOOK}/${src}`, `${BOOK}/${words}`])];
-    const { previous } = claimOutFolder(options.out, [...fixed, ...pageFiles, ...textGroups.map(({ src }) => `${BOOK}/${src}`)]);
+    const { previous } = claimOutFolder(options.out, [...fixed, ...pageFiles, ...groupFiles]);
     steps.lap('open');  // pdf.js loaded, the PDF opened, its outline read, the out folder checked
 
     const bookDir = path.join(options.out, BOOK);
@@ -215,7 +216,7 @@ async function publish(options) {
     // Precached at install: the page, the reader, book.json, the manifest and its icons, and the text groups
     // (every page's text, a few requests: search reads them all, and a page's text layer offline too); the
     // images and a page's own text file as they are read.
-    const shellFiles = ['index.html', `${BOOK}/${MANIFEST}`, WEB_MANIFEST, ...icons.map(({ src }) => src), ...textGroups.map(({ src }) => `${BOOK}/${src}`)];
+    const shellFiles = ['index.html', `${BOOK}/${MANIFEST}`, WEB_MANIFEST, ...icons.map(({ src }) => src), ...groupFiles];
     writeWebApp({ out: options.out, title, lang, written, icons, skip: [HEADERS],
       shell: (file, { kind }) => kind === 'runtime' || shellFiles.includes(file) });
     settleOutFolder(options.out, previous, [...written.keys()]);

@@ -1,8 +1,14 @@
-// How a bench script that a developer runs fails, the same in each: a bad argument named in one line before
+// How a bench script that a developer runs reads its arguments and fails, the same in each: a bad argument named in one line before
 // anything is served or written (exit 2), a failed run in one line (exit 1), its stack only with --stack;
 // and the served repository with a Chromium that the profiling aids share.
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
+
+/** The value given after `--name` on the command line, else `fallback`. */
+export function arg(name, fallback) {
+  const i = process.argv.indexOf(name);
+  return i > 0 ? process.argv[i + 1] : fallback;
+}
 
 /** Says what is wrong with the arguments, as `tool: message`, and exits 2. */
 export function usage(tool, message) {

@@ -7,16 +7,12 @@
 //        [--variants 0,6] (indices into VARIANTS) [--bundles bench-results/bundles] (another build of conecurl; its pages beside it)
 import fs from 'node:fs';
 import path from 'node:path';
-import { runMain, usage as badArgument, withServedChromium } from './cli.mjs';
+import { arg, runMain, usage as badArgument, withServedChromium } from './cli.mjs';
 import { cpuDelta, processCpu, summarize } from './metrics.mjs';
 import { PHONES, phoneUse } from '../../tests/browser/phone.js';
 
 const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
 const usage = (message) => badArgument('profile-gpu', message);
-const arg = (name, fallback) => {
-  const i = process.argv.indexOf(name);
-  return i > 0 ? process.argv[i + 1] : fallback;
-};
 const config = arg('--config', 'double-20');
 const framesPerSample = Number(arg('--frames', '12'));
 const rounds = Number(arg('--rounds', '3'));

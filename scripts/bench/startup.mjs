@@ -18,13 +18,9 @@ import { ENGINES, engineExecutables, launchEngine, startDisplay } from '../engin
 import { BASELINE, LIBRARIES, bundleBaseline, bundleLibraries } from './bundle.mjs';
 import { writePageImages } from './page-images.mjs';
 import { PHONES, phoneUse } from '../../tests/browser/phone.js';
-import { runMain, usage as badArgument } from './cli.mjs';
+import { arg, runMain, usage as badArgument } from './cli.mjs';
 
 const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
-const arg = (name, fallback) => {
-  const i = process.argv.indexOf(name);
-  return i > 0 ? process.argv[i + 1] : fallback;
-};
 const usage = (message) => badArgument('startup', message);
 const libs = arg('--libs', arg('--lib', 'conecurl')).split(',');
 const baselineDir = arg('--baseline', null);

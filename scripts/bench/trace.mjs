@@ -5,14 +5,10 @@
 //        [--options '{"shadows":false}'] [--port 8096] [--startup] (trace navigation to first frame instead)
 import fs from 'node:fs';
 import path from 'node:path';
-import { runMain, usage as badArgument, withServedChromium } from './cli.mjs';
+import { arg, runMain, usage as badArgument, withServedChromium } from './cli.mjs';
 
 const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
 const usage = (message) => badArgument('trace', message);
-const arg = (name, fallback) => {
-  const i = process.argv.indexOf(name);
-  return i > 0 ? process.argv[i + 1] : fallback;
-};
 const lib = arg('--lib', 'conecurl');
 const config = arg('--config', 'double-20');
 const turns = Number(arg('--turns', '3'));

@@ -99,18 +99,18 @@ export async function openPublished(url) {
         const file = manifest.pages[index]?.text;
         const group = groupOf(index);
         texts.set(index, !file ? Promise.resolve(emptyText(index))
-          : group && groupReads.has(group) ? readGroup(group).then(() => fromGroup(index, group), () => ownText(index, file, group))
+          : groupReads.has(group) ? groupReads.get(group).then(() => fromGroup(index, group), () => ownText(index, file, group))
             : ownText(index, file, group));
       }
       return texts.get(index);
     },
     /**
-     * Reads the text group that holds page `index` (one request for its pages); resolves with its pages
-     * ({ first, count }), whose pageText() then needs no request, or null where there is none or it cannot be read.
+     * Reads the text group that holds page `index` (one request for its pages, whose pageText() then needs
+     * none); resolves once it is read, or could not be (pageText() then reads the page's own file), or at once without one.
      */
-    readTextGroup(index) {
+    async readTextGroup(index) {
       const group = groupOf(index);
-      return group ? readGroup(group).then(() => ({ first: group.first, count: group.count }), () => null) : Promise.resolve(null);
+      if (group) await readGroup(group).catch(() => {});
     },
     outline: async () => copyOutline(manifest.outline ?? []),
     /** The document's PDF, when it was published with it. */

@@ -132,7 +132,7 @@ const cancelIdle = (id) => (typeof cancelIdleCallback === 'function' ? cancelIdl
  */
 export class TextIndex {
   /**
-   * @param {{ pageText: (index: number) => Promise<object>, readTextGroup?: (index: number) => Promise<{ first: number, count: number }|null> }} doc
+   * @param {{ pageText: (index: number) => Promise<object>, readTextGroup?: (index: number) => Promise<void> }} doc
    *   the book's document @param {number} pageCount
    */
   constructor(doc, pageCount) {
