@@ -49,11 +49,17 @@ function countCalls() {
       return original.apply(this, args);
     };
   }
-  // Main-thread image scaling: every drawImage on a 2D canvas (the upload's scratch canvas, a check).
+  // Main-thread image scaling: every drawImage on a 2D canvas that draws its source at another size (the
+  // upload's scratch canvas, a check); an unscaled copy (the reduction probe's 2 x 2 read) is no scaling pass.
   counts.drawImage = 0;
   for (const Context of [CanvasRenderingContext2D, globalThis.OffscreenCanvasRenderingContext2D].filter(Boolean)) {
     const drawImage = Context.prototype.drawImage;
-    Context.prototype.drawImage = function countedDrawImage(...args) { counts.drawImage++; return drawImage.apply(this, args); };
+    Context.prototype.drawImage = function countedDrawImage(source, ...rest) {
+      const [width, height] = rest.length === 8 ? [rest[6], rest[7]] : rest.length === 4 ? [rest[2], rest[3]] : [];
+      const natural = [source.naturalWidth || source.videoWidth || source.width, source.naturalHeight || source.videoHeight || source.height];
+      if (width !== undefined && (width !== natural[0] || height !== natural[1])) counts.drawImage++;
+      return drawImage.call(this, source, ...rest);
+    };
   }
   // Every ImageBitmap made, to count those still open (a closed one reads 0 x 0).
   window.__bitmaps = [];

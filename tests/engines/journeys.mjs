@@ -13,6 +13,7 @@ import pixelmatch from 'pixelmatch';
 import { cropPng, launchEngine, startDisplay, engineExecutables } from '../../scripts/engines.mjs';
 import { serveDirectory } from '../../scripts/serve.mjs';
 import { shownAtInPage as shownAt } from '../browser/shown-at.js';
+import { fineStrokesInPage } from '../browser/fine-strokes.js';
 import { VELOCITY_WINDOW_MS } from '../../web/src/input/pointer-drag.js';
 import { documentJourneys } from './documents.mjs';
 import { readAloudJourneys, speechEnvironment } from './read-aloud.mjs';
@@ -278,6 +279,15 @@ export function engineSuite(engine) {
       await evaluate(() => window.book.element.focus());
       await browser.key('0');
       await browser.waitFor(() => window.book.zoom === 1);
+    });
+
+    journey('a page image reduced 4-5x keeps its 1-px strokes as an even grey on both roads, a Blob decoded at the size drawn and a canvas scaled on a canvas (the engine\'s one-sample reductions stepped down by halves)', async () => {
+      await open(FLIPBOOK);
+      const pages = await evaluate(fineStrokesInPage);
+      assert.deepEqual(pages.map((p) => p.page), [1, 2]);
+      for (const p of pages) {
+        assert.ok(p.min > 150 && p.max < 232 && Math.abs(p.mean - 191) < 25, `page ${p.page}: red ${p.min}-${p.max}, mean ${p.mean} (dropped or striped strokes)`);
+      }
     });
 
     journey('a context lost mid-turn pauses it; restored, every texture is back and the turn lands', async () => {

@@ -4,6 +4,7 @@
 // only fetch reports the status; nothing that would taint a canvas gets through.
 
 import { imageSizeOf } from './image-header.js';
+import { decodeReduced, makeCanvas } from './step-down.js';
 import { MAX_IMAGE_SIZE, uploadSizeFor } from './texture-upload.js';
 
 /**
@@ -27,10 +28,6 @@ export class PageLoadError extends Error {
 export function pageFailure(error) {
   return { error: error instanceof Error ? error : new Error(String(error)), reason: error?.reason || 'upload' };
 }
-
-const makeCanvas = (width, height) => (typeof OffscreenCanvas === 'function'
-  ? new OffscreenCanvas(width, height)
-  : Object.assign(document.createElement('canvas'), { width, height }));
 
 function sourceName(source) {
   if (typeof source === 'string') return `'${source}'`;
@@ -131,14 +128,14 @@ async function answersWithoutCors(url, signal) {
 }
 
 // Decoded by the browser off the main thread; at the size that covers `size` (never up) when the header
-// says the image is larger, so it reaches the texture without a scaling pass on the main thread.
+// says the image is larger, so it reaches the texture without a scaling pass on the main thread
+// (filtered: by halves where the browser's resize samples).
 async function decodeBlob(blob, where, url, size) {
   try {
     const natural = size ? await imageSizeOf(blob) : null;
     const wanted = natural && uploadSizeFor(natural.width, natural.height, { cover: size, maxTextureSize: MAX_IMAGE_SIZE });
     if (wanted && wanted.width < natural.width) {
-      const image = await createImageBitmap(blob, { resizeWidth: wanted.width, resizeHeight: wanted.height, resizeQuality: 'high' });
-      return { image, natural };
+      return { image: await decodeReduced(blob, natural, wanted), natural };
     }
     return { image: await createImageBitmap(blob) };
   } catch (first) {

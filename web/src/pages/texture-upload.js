@@ -1,6 +1,8 @@
 // How a page image becomes a texture's pixels: the size it is uploaded at (never up, within the GPU's
 // limit, just covering what the screen needs) and a scaled copy on one shared scratch canvas when needed.
 
+import { drawableFor, makeCanvas } from './step-down.js';
+
 /** The largest image a page is decoded or drawn at; no browser keeps a bigger texture (BookView also fits the GPU's limit). */
 export const MAX_IMAGE_SIZE = 16384;
 const SAME_SIZE = 0.99;  // within 1 % of the size wanted is that size
@@ -33,8 +35,8 @@ let scratch = null;  // one canvas for every book's scaling: texImage2D copies i
 /**
  * What the texture is uploaded from: the source itself when it already has the size wanted, else the
  * source drawn at that size on a scratch canvas (`own`: a canvas of its own, for an upload in bands
- * spread over frames). The pixels never pass through getImageData or the wasm heap: the browser copies
- * them from there into the texture.
+ * spread over frames), by halves where drawImage would sample a large reduction. The pixels never pass
+ * through getImageData or the wasm heap: the browser copies them from there into the texture.
  */
 export function atSize(source, natural, { width, height }, { own = false } = {}) {
   if (natural.width === width && natural.height === height) return source;
@@ -48,12 +50,6 @@ export function atSize(source, natural, { width, height }, { own = false } = {})
   const context = target.getContext('2d');
   context.imageSmoothingQuality = 'high';  // a big reduction stays legible, not aliased
   context.clearRect(0, 0, width, height);
-  context.drawImage(drawable, 0, 0, width, height);
+  context.drawImage(drawableFor(drawable, natural, { width, height }), 0, 0, width, height);
   return target;
-}
-
-function makeCanvas(width, height) {
-  return typeof OffscreenCanvas === 'function'
-    ? new OffscreenCanvas(width, height)
-    : Object.assign(document.createElement('canvas'), { width, height });
 }

@@ -1,0 +1,57 @@
+// Browser: a page image reduced far below its size keeps its fine strokes (an even grey, not dropped or
+// striped) on both roads, a Blob decoded at the size drawn and a canvas scaled on a canvas; where a browser
+// samples such a reduction (WebKit, Firefox's drawImage) the road steps down by halves. Needs WebGL2.
+import { test, expect } from '@playwright/test';
+import { openReady } from './helpers.js';
+import { fineStrokesInPage } from './fine-strokes.js';
+
+const FIXTURE = '/tests/browser/fixtures/flipbook-fixture.html';
+
+// Records every drawImage's source size and createImageBitmap's asked size; with `sampling`, both take one
+// sample a pixel as WebKit's do (Chromium's 'low' quality: bilinear, no mipmaps; a 2x step still filters).
+function watchScaling(sampling) {
+  window.__scaling = { draws: [], bitmaps: [] };
+  for (const Context of [CanvasRenderingContext2D, globalThis.OffscreenCanvasRenderingContext2D].filter(Boolean)) {
+    const drawImage = Context.prototype.drawImage;
+    Context.prototype.drawImage = function watchedDrawImage(source, ...rest) {
+      if (rest.length >= 4) window.__scaling.draws.push([source.width, rest[2]]);
+      if (sampling) this.imageSmoothingQuality = 'low';
+      return drawImage.call(this, source, ...rest);
+    };
+  }
+  const createImageBitmap = window.createImageBitmap;
+  window.createImageBitmap = (source, options) => {
+    if (options?.resizeWidth) window.__scaling.bitmaps.push([source.constructor.name, options.resizeWidth]);
+    return options ? createImageBitmap.call(window, source, sampling ? { ...options, resizeQuality: 'low' } : options)
+      : createImageBitmap.call(window, source);
+  };
+}
+
+const even = (page) => page.min > 150 && page.max < 232 && Math.abs(page.mean - 191) < 25;
+
+test('browser: Chromium filters a 5x reduction on both roads in one pass: the Blob page and the canvas page show their 1-px strokes as an even grey, no halving step made', async ({ page }) => {
+  await page.addInitScript(watchScaling, false);
+  await openReady(page, FIXTURE);
+  const pages = await page.evaluate(fineStrokesInPage);
+  const scaling = await page.evaluate(() => window.__scaling);
+  console.log(`filtered: ${JSON.stringify(pages)}; bitmaps asked ${JSON.stringify(scaling.bitmaps)}`);
+  expect(pages.map((p) => p.page)).toEqual([1, 2]);
+  for (const p of pages) expect(even(p), JSON.stringify(p)).toBe(true);
+  // One resize of the Blob (and the probe's 16 -> 2); the canvas page drawn once from its 1600 px.
+  expect(scaling.bitmaps.filter(([kind]) => kind === 'Blob').length).toBe(1);
+  expect(scaling.draws.filter(([from, to]) => to > 2 && from !== 1600)).toEqual([]);
+});
+
+test('browser: where drawImage and createImageBitmap\'s resize sample a large reduction (as WebKit\'s do; stood in by their low quality), both roads step down by halves and the 1-px strokes still show an even grey', async ({ page }) => {
+  await page.addInitScript(watchScaling, true);
+  await openReady(page, FIXTURE);
+  const pages = await page.evaluate(fineStrokesInPage);
+  const scaling = await page.evaluate(() => window.__scaling);
+  console.log(`stepped: ${JSON.stringify(pages)}; bitmaps asked ${JSON.stringify(scaling.bitmaps)}; draws ${JSON.stringify(scaling.draws)}`);
+  expect(pages.map((p) => p.page)).toEqual([1, 2]);
+  for (const p of pages) expect(even(p), JSON.stringify(p)).toBe(true);
+  // The Blob: halved from the Blob, then from each bitmap before; the canvas: 1600 -> 800 -> 400 -> drawn.
+  expect(scaling.bitmaps.filter(([kind]) => kind === 'Blob').map(([, width]) => width)).toContain(800);
+  expect(scaling.bitmaps.filter(([kind]) => kind === 'ImageBitmap').map(([, width]) => width).slice(0, 1)).toEqual([400]);
+  expect(scaling.draws.filter(([from]) => from === 1600).map(([, to]) => to)).toContain(800);
+});

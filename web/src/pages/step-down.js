@@ -1,0 +1,113 @@
+// A page image reduced by more than half stays legible in every engine: Firefox's drawImage and WebKit's
+// drawImage and createImageBitmap resize take one sample a pixel there, so a page's thin strokes drop out.
+// Each road is asked once a document whether it filters; where it samples, the image steps down by halves.
+
+/** A canvas for pixels that are never shown: an OffscreenCanvas where the browser has one. */
+export function makeCanvas(width, height) {
+  return typeof OffscreenCanvas === 'function'
+    ? new OffscreenCanvas(width, height)
+    : Object.assign(document.createElement('canvas'), { width, height });
+}
+
+const PATTERN = 16;  // the probe: 1-px black columns every 4 px on white, reduced 8x to 2 x 2
+const FILTERED = [64, 240];  // a filtered reduction reads about 191 (a quarter black); a sampled one 255 or 0
+
+function pattern() {
+  const canvas = makeCanvas(PATTERN, PATTERN);
+  const g = canvas.getContext('2d');
+  g.fillStyle = '#fff';
+  g.fillRect(0, 0, PATTERN, PATTERN);
+  g.fillStyle = '#000';
+  for (let x = 1; x < PATTERN; x += 4) g.fillRect(x, 0, 1, PATTERN);
+  return canvas;
+}
+
+// The red of the probe's reduced top-left pixel, drawn unscaled (or, for drawImage, reduced) on a 2 x 2 canvas.
+function reads(draw) {
+  const g = makeCanvas(2, 2).getContext('2d', { willReadFrequently: true });
+  g.imageSmoothingQuality = 'high';
+  draw(g);
+  const red = g.getImageData(0, 0, 1, 1).data[0];
+  return red > FILTERED[0] && red < FILTERED[1];
+}
+
+let drawVerdict;
+/** Whether this browser's drawImage (smoothing 'high') filters a large reduction. Asked once; synchronous. */
+export function drawFilters() {
+  drawVerdict ??= reads((g) => g.drawImage(pattern(), 0, 0, 2, 2));
+  return drawVerdict;
+}
+
+let bitmapVerdict;
+/** Whether createImageBitmap's resize (resizeQuality 'high') filters a large reduction. Asked once. */
+export function bitmapFilters() {
+  bitmapVerdict ??= createImageBitmap(pattern(), { resizeWidth: 2, resizeHeight: 2, resizeQuality: 'high' })
+    .then((bitmap) => {
+      try {
+        return reads((g) => g.drawImage(bitmap, 0, 0));
+      } finally {
+        bitmap.close();
+      }
+    }, () => true);  // no resize at all: nothing to step around
+  return bitmapVerdict;
+}
+
+/**
+ * The sizes a `from` image passes through on its way down to `to`, each side half the one before (rounded
+ * up) while it is over 2x its target, until the last step left is 2x or less. Empty within 2x of `to`.
+ */
+export function halvings(from, to) {
+  const steps = [];
+  let { width, height } = from;
+  while (width > 2 * to.width || height > 2 * to.height) {
+    if (width > 2 * to.width) width = Math.ceil(width / 2);
+    if (height > 2 * to.height) height = Math.ceil(height / 2);
+    steps.push({ width, height });
+  }
+  return steps;
+}
+
+const resize = ({ width, height }) => ({ resizeWidth: width, resizeHeight: height, resizeQuality: 'high' });
+
+/**
+ * `blob` (whose header said `natural`) decoded at `wanted`, filtered: in one resize where the browser's
+ * resize filters, else by halves, each bitmap made from the one before (those are closed).
+ */
+export async function decodeReduced(blob, natural, wanted) {
+  const steps = halvings(natural, wanted);
+  if (!steps.length) return createImageBitmap(blob, resize(wanted));
+  if (bitmapVerdict === undefined) {
+    // The first time: the probe beside the one-pass decode, so a browser that filters waits for nothing more.
+    const [filters, image] = await Promise.all([bitmapFilters(), createImageBitmap(blob, resize(wanted))]);
+    if (filters) return image;
+    image.close();
+  } else if (await bitmapVerdict) {
+    return createImageBitmap(blob, resize(wanted));
+  }
+  let image = await createImageBitmap(blob, resize(steps[0]));
+  for (const size of [...steps.slice(1), wanted]) {
+    const next = await createImageBitmap(image, resize(size));
+    image.close();
+    image = next;
+  }
+  return image;
+}
+
+/**
+ * What to draw `source` (of `natural` size) from at `to` with drawImage: the source itself where the
+ * reduction is 2x or less or drawImage filters, else a canvas of it halved until the last step is.
+ */
+export function drawableFor(source, natural, to) {
+  const steps = halvings(natural, to);
+  if (!steps.length || drawFilters()) return source;
+  let drawable = source;
+  for (const { width, height } of steps) {
+    const canvas = makeCanvas(width, height);
+    const g = canvas.getContext('2d');
+    g.imageSmoothingQuality = 'high';
+    g.drawImage(drawable, 0, 0, width, height);
+    if (drawable !== source) Object.assign(drawable, { width: 0, height: 0 });  // its pixels let go now
+    drawable = canvas;
+  }
+  return drawable;
+}
