@@ -281,6 +281,10 @@ void BookRenderer::createGpuObjects() {
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTextureSize_);
     if (emscripten_webgl_enable_extension(context_, "EXT_texture_filter_anisotropic")) {
         glGetFloatv(kMaxTextureMaxAnisotropy, &maxAnisotropy_);
+        // Mesa's llvmpipe filters any anisotropy from 2 up from too fine a level: a page at rest, drawn at
+        // 2/3 of its texture, loses 1-px strokes there (trilinear keeps them). Its pages go without.
+        const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+        if (renderer && std::strstr(renderer, "llvmpipe")) maxAnisotropy_ = 1.0f;
     }
 
     // KHR_parallel_shader_compile: compiles run beside the page, and prepareTurn() can ask whether they are done.

@@ -1,9 +1,10 @@
-// Browser: a page image reduced far below its size keeps its fine strokes (an even grey, not dropped or
+// Browser: a page image reduced below its size keeps its fine strokes (an even grey, not dropped or
 // striped) on both roads, a Blob decoded at the size drawn and a canvas scaled on a canvas; where a browser
 // samples such a reduction (WebKit, Firefox's drawImage) the road steps down by halves. Needs WebGL2.
+// (Chromium's own one pass at 1.8x leaves its faintest stroke at 225-230: logged, not held.)
 import { test, expect } from '@playwright/test';
 import { openReady } from './helpers.js';
-import { fineStrokesInPage } from './fine-strokes.js';
+import { COARSE_STROKES, FAINTEST_STROKE, fineStrokesInPage } from './fine-strokes.js';
 
 const FIXTURE = '/tests/browser/fixtures/flipbook-fixture.html';
 
@@ -27,14 +28,21 @@ function watchScaling(sampling) {
   };
 }
 
+// The fixture with `watchScaling(sampling)`: the 4x pages as shown, what was scaled on the way, the 1.8x pages.
+async function readStrokes(page, sampling) {
+  await page.addInitScript(watchScaling, sampling);
+  await openReady(page, FIXTURE);
+  const { shown: pages } = await page.evaluate(fineStrokesInPage);
+  const scaling = await page.evaluate(() => window.__scaling);
+  const coarse = await page.evaluate(fineStrokesInPage, COARSE_STROKES);
+  return { pages, scaling, coarse };
+}
+
 const even = (page) => page.min > 150 && page.max < 232 && Math.abs(page.mean - 191) < 25;
 
 test('browser: Chromium filters a 5x reduction on both roads in one pass: the Blob page and the canvas page show their 1-px strokes as an even grey, no halving step made', async ({ page }) => {
-  await page.addInitScript(watchScaling, false);
-  await openReady(page, FIXTURE);
-  const pages = await page.evaluate(fineStrokesInPage);
-  const scaling = await page.evaluate(() => window.__scaling);
-  console.log(`filtered: ${JSON.stringify(pages)}; bitmaps asked ${JSON.stringify(scaling.bitmaps)}`);
+  const { pages, scaling, coarse } = await readStrokes(page, false);
+  console.log(`filtered: ${JSON.stringify(pages)}; bitmaps asked ${JSON.stringify(scaling.bitmaps)}; coarse ${JSON.stringify(coarse)}`);
   expect(pages.map((p) => p.page)).toEqual([1, 2]);
   for (const p of pages) expect(even(p), JSON.stringify(p)).toBe(true);
   // One resize of the Blob (and the probe's 16 -> 2); the canvas page drawn once from its 1600 px.
@@ -42,14 +50,15 @@ test('browser: Chromium filters a 5x reduction on both roads in one pass: the Bl
   expect(scaling.draws.filter(([from, to]) => to > 2 && from !== 1600)).toEqual([]);
 });
 
-test('browser: where drawImage and createImageBitmap\'s resize sample a large reduction (as WebKit\'s do; stood in by their low quality), both roads step down by halves and the 1-px strokes still show an even grey', async ({ page }) => {
-  await page.addInitScript(watchScaling, true);
-  await openReady(page, FIXTURE);
-  const pages = await page.evaluate(fineStrokesInPage);
-  const scaling = await page.evaluate(() => window.__scaling);
-  console.log(`stepped: ${JSON.stringify(pages)}; bitmaps asked ${JSON.stringify(scaling.bitmaps)}; draws ${JSON.stringify(scaling.draws)}`);
+test('browser: where drawImage and createImageBitmap\'s resize take one sample a pixel (as WebKit\'s do; stood in by their low quality), both roads step down by halves: 1-px strokes reduced 4x show an even grey, and reduced 1.8x none drops out', async ({ page }) => {
+  const { pages, scaling, coarse } = await readStrokes(page, true);
+  console.log(`stepped: ${JSON.stringify(pages)}; bitmaps asked ${JSON.stringify(scaling.bitmaps)}; draws ${JSON.stringify(scaling.draws)}; coarse ${JSON.stringify(coarse)}`);
   expect(pages.map((p) => p.page)).toEqual([1, 2]);
   for (const p of pages) expect(even(p), JSON.stringify(p)).toBe(true);
+  // Reduced 1.8x: enlarged to twice the texture and halved, so no stroke falls between two samples.
+  for (const p of coarse.shown) expect(p.faintest, JSON.stringify(p)).toBeLessThanOrEqual(FAINTEST_STROKE);
+  expect(coarse.uploads.length).toBe(2);
+  for (const faintest of coarse.uploads) expect(faintest).toBeLessThanOrEqual(FAINTEST_STROKE);
   // The Blob: halved from the Blob, then from each bitmap before; the canvas: 1600 -> 800 -> 400 -> drawn.
   expect(scaling.bitmaps.filter(([kind]) => kind === 'Blob').map(([, width]) => width)).toContain(800);
   expect(scaling.bitmaps.filter(([kind]) => kind === 'ImageBitmap').map(([, width]) => width).slice(0, 1)).toEqual([400]);

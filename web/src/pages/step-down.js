@@ -1,6 +1,6 @@
-// A page image reduced by more than half stays legible in every engine: Firefox's drawImage and WebKit's
-// drawImage and createImageBitmap resize take one sample a pixel there, so a page's thin strokes drop out.
-// Each road is asked once a document whether it filters; where it samples, the image steps down by halves.
+// A page image reduced stays legible in every engine: Firefox's drawImage and WebKit's drawImage and
+// createImageBitmap resize take one sample a pixel, so a page's thin strokes drop out. Each road is asked
+// once a document whether it filters; where it samples, the image steps down by halves.
 
 /** A canvas for pixels that are never shown: an OffscreenCanvas where the browser has one. */
 export function makeCanvas(width, height) {
@@ -52,11 +52,16 @@ export function bitmapFilters() {
   return bitmapVerdict;
 }
 
+const DIRECT = 1.25;  // a last step of at most this one sampled pass keeps 3/4 of a 1-px stroke's ink
+
 /**
- * The sizes a `from` image passes through on its way down to `to`, each side half the one before (rounded
- * up) while it is over 2x its target, until the last step left is 2x or less. Empty within 2x of `to`.
+ * The sizes a `from` image passes through on its way down to `to` where each pass takes one bilinear
+ * sample a pixel: each side halved (rounded up) while over 2x its target, so each pass is a 2 x 2 box;
+ * then, where a side is left over DIRECT times its target, that side enlarged to exactly twice its target,
+ * so the last pass halves it too (one sample at 1.25-2x falls between strokes: a 1-px line drops out).
+ * Empty within DIRECT of `to`.
  */
-export function halvings(from, to) {
+export function reductionSteps(from, to) {
   const steps = [];
   let { width, height } = from;
   while (width > 2 * to.width || height > 2 * to.height) {
@@ -64,6 +69,9 @@ export function halvings(from, to) {
     if (height > 2 * to.height) height = Math.ceil(height / 2);
     steps.push({ width, height });
   }
+  const last = (length, target) => (length > DIRECT * target ? 2 * target : length);
+  const enlarged = { width: last(width, to.width), height: last(height, to.height) };
+  if (enlarged.width !== width || enlarged.height !== height) steps.push(enlarged);
   return steps;
 }
 
@@ -71,10 +79,10 @@ const resize = ({ width, height }) => ({ resizeWidth: width, resizeHeight: heigh
 
 /**
  * `blob` (whose header said `natural`) decoded at `wanted`, filtered: in one resize where the browser's
- * resize filters, else by halves, each bitmap made from the one before (those are closed).
+ * resize filters, else through reductionSteps, each bitmap made from the one before (those are closed).
  */
 export async function decodeReduced(blob, natural, wanted) {
-  const steps = halvings(natural, wanted);
+  const steps = reductionSteps(natural, wanted);
   if (!steps.length) return createImageBitmap(blob, resize(wanted));
   if (bitmapVerdict === undefined) {
     // The first time: the probe beside the one-pass decode, so a browser that filters waits for nothing more.
@@ -94,11 +102,11 @@ export async function decodeReduced(blob, natural, wanted) {
 }
 
 /**
- * What to draw `source` (of `natural` size) from at `to` with drawImage: the source itself where the
- * reduction is 2x or less or drawImage filters, else a canvas of it halved until the last step is.
+ * What to draw `source` (of `natural` size) from at `to` with drawImage: the source itself where
+ * drawImage filters or the reduction is small, else a canvas of it through reductionSteps but the last.
  */
 export function drawableFor(source, natural, to) {
-  const steps = halvings(natural, to);
+  const steps = reductionSteps(natural, to);
   if (!steps.length || drawFilters()) return source;
   let drawable = source;
   for (const { width, height } of steps) {

@@ -35,7 +35,7 @@ let scratch = null;  // one canvas for every book's scaling: texImage2D copies i
 /**
  * What the texture is uploaded from: the source itself when it already has the size wanted, else the
  * source drawn at that size on a scratch canvas (`own`: a canvas of its own, for an upload in bands
- * spread over frames), by halves where drawImage would sample a large reduction. The pixels never pass
+ * spread over frames), stepped down where drawImage would sample the reduction. The pixels never pass
  * through getImageData or the wasm heap: the browser copies them from there into the texture.
  */
 export function atSize(source, natural, { width, height }, { own = false } = {}) {
