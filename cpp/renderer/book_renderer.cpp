@@ -273,6 +273,12 @@ void BookRenderer::bindTexture(int unit, GLuint texture, bool toEdit) {
     boundTextures_[unit] = texture;
 }
 
+// Whether the current context's renderer string names llvmpipe. Read in JS: glGetString would keep a copy
+// of the string in the wasm heap for good.
+EM_JS(int, conecurl_renderer_is_llvmpipe, (), {
+    return /llvmpipe/i.test(String(GLctx.getParameter(0x1F01))) ? 1 : 0;  // GL_RENDERER
+});
+
 void BookRenderer::createGpuObjects() {
     if (!makeCurrent()) {
         error_ = "could not make the WebGL2 context current";
@@ -283,8 +289,7 @@ void BookRenderer::createGpuObjects() {
         glGetFloatv(kMaxTextureMaxAnisotropy, &maxAnisotropy_);
         // Mesa's llvmpipe filters any anisotropy from 2 up from too fine a level: a page at rest, drawn at
         // 2/3 of its texture, loses 1-px strokes there (trilinear keeps them). Its pages go without.
-        const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-        if (renderer && std::strstr(renderer, "llvmpipe")) maxAnisotropy_ = 1.0f;
+        if (conecurl_renderer_is_llvmpipe()) maxAnisotropy_ = 1.0f;
     }
 
     // KHR_parallel_shader_compile: compiles run beside the page, and prepareTurn() can ask whether they are done.
