@@ -10,14 +10,11 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { chromium } from '@playwright/test';
 import { chromiumLaunchOptions } from '../chromium.mjs';
+import { arg } from './cli.mjs';
 import { summarize } from './metrics.mjs';
 import { throttledPhonePage } from './throttled-phone.mjs';
 
 const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
-const arg = (name, fallback) => {
-  const i = process.argv.indexOf(name);
-  return i > 0 ? process.argv[i + 1] : fallback;
-};
 const out = arg('--out', 'bench-results');
 const libs = arg('--libs', 'conecurl,conecurl-baseline,floor-webgl').split(',');
 const reps = Number(arg('--reps', '5'));

@@ -17,15 +17,12 @@ import path from 'node:path';
 import zlib from 'node:zlib';
 import { chromium } from '@playwright/test';
 import { chromiumLaunchOptions } from '../chromium.mjs';
+import { arg } from './cli.mjs';
 import { summarize } from './metrics.mjs';
 import { throttledPhonePage } from './throttled-phone.mjs';
 
 const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '../..');
 const args = process.argv.slice(2);
-const arg = (name, fallback) => {
-  const i = args.indexOf(name);
-  return i >= 0 ? args[i + 1] : fallback;
-};
 const pdfs = args.flatMap((a, i) => (a === '--pdf' ? [path.resolve(args[i + 1])] : []));
 const reps = Number(arg('--reps', '3'));
 const out = path.resolve(root, arg('--out', 'bench-results'));

@@ -83,14 +83,15 @@ const resize = ({ width, height }) => ({ resizeWidth: width, resizeHeight: heigh
  */
 export async function decodeReduced(blob, natural, wanted) {
   const steps = reductionSteps(natural, wanted);
-  if (!steps.length) return createImageBitmap(blob, resize(wanted));
+  const onePass = () => createImageBitmap(blob, resize(wanted));
+  if (!steps.length) return onePass();
   if (bitmapVerdict === undefined) {
     // The first time: the probe beside the one-pass decode, so a browser that filters waits for nothing more.
-    const [filters, image] = await Promise.all([bitmapFilters(), createImageBitmap(blob, resize(wanted))]);
+    const [filters, image] = await Promise.all([bitmapFilters(), onePass()]);
     if (filters) return image;
     image.close();
   } else if (await bitmapVerdict) {
-    return createImageBitmap(blob, resize(wanted));
+    return onePass();
   }
   let image = await createImageBitmap(blob, resize(steps[0]));
   for (const size of [...steps.slice(1), wanted]) {
