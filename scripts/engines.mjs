@@ -84,8 +84,9 @@ export async function launchEngine(engine, { display, width = 800, height = 600,
       const value = await browser.evaluate(fn, ...args);
       if (value) return value;
       if (Date.now() - started > timeoutMs) {
-        // What the page saw meanwhile, where it keeps a log (tests/engines/heard.js): the input that came.
-        const seen = await browser.evaluate(() => [window.__explain?.(), window.__frames && `frames asked ${window.__frames.asked}, run ${window.__frames.ran} (last at ${window.__frames.lastRan}ms)`, ...(window.__seen || [])]
+        // What the page saw meanwhile, where it keeps a log (tests/engines/heard.js): what it threw, the input that came.
+        const seen = await browser.evaluate(() => [window.__explain?.(), window.__frames && `frames asked ${window.__frames.asked}, run ${window.__frames.ran} (last at ${window.__frames.lastRan}ms)`,
+          ...(window.__heard || []), ...(window.__seen || [])]
           .filter(Boolean).join('; ')).catch(() => '');
         throw new Error(`${engine}: waited ${timeoutMs / 1000} s for ${fn.toString().slice(0, 160)}${seen ? `; the page saw: ${seen}` : ''}`);
       }

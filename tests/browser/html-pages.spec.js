@@ -223,13 +223,13 @@ test('browser: <cone-flipbook> takes its child elements as pages: an <img> an im
   expect(Math.abs(result.width - result.place)).toBeLessThan(1);
 });
 
-test('browser: 200 create/destroy cycles of a book with an HTML page keep the JS heap flat and leave the element where it was', async ({ page }) => {
+test('browser: 200 create/destroy cycles of a book with an HTML page keep the JS heap flat (no growth in either 90-cycle span) and leave the element where it was', async ({ page }) => {
   // About 110 s on a busy 2-core machine (each cycle rasterises the HTML page): the limit allows five times that.
   test.setTimeout(600_000);
   await openReady(page, FIXTURE);
   const cdp = await page.context().newCDPSession(page);
   const heap = async () => {
-    await cdp.send('HeapProfiler.collectGarbage');
+    for (let i = 0; i < 3; i++) await cdp.send('HeapProfiler.collectGarbage');  // as robustness.spec.js: one pass leaves some
     return (await cdp.send('Runtime.getHeapUsage')).usedSize;
   };
   const cycles = (n) => page.evaluate(async (n) => {
@@ -243,10 +243,14 @@ test('browser: 200 create/destroy cycles of a book with an HTML page keep the JS
   }, n);
   expect(await cycles(20)).toBe(true);
   const at20 = await heap();
-  expect(await cycles(180)).toBe(true);
+  expect(await cycles(90)).toBe(true);
+  const at110 = await heap();
+  expect(await cycles(90)).toBe(true);
   const at200 = await heap();
-  console.log(`HTML page books: JS heap ${at20} -> ${at200} bytes from cycle 20 to 200`);
-  expect(at200 - at20).toBeLessThan(1_000_000);
+  console.log(`HTML page books: JS heap ${at20} -> ${at110} -> ${at200} bytes at cycles 20, 110 and 200`);
+  // A leak grows the heap in both spans alike (5.5 KB a cycle is 500 KB a span); one measurement thrown
+  // off by what the collector left (seen: up to 1 MB either way) moves one span up and the other down.
+  expect(Math.min(at110 - at20, at200 - at110), 'the smaller of the two spans\' growth, bytes').toBeLessThan(500_000);
 });
 
 test('browser: turnArea limits where a press turns image pages too: \'edges\' turns from the free edge only, \'corners\' from its ends, \'none\' never (keys still turn)', async ({ page }) => {

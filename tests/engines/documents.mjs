@@ -24,6 +24,9 @@ async function openHtmlBook(options) {
   window.book = await window.Flipbook.create(window.container, { pages, display: 'double', startPage: 1, ...options });
   window.events = [];
   for (const type of ['turnstart', 'turned', 'pageschange']) window.book.addEventListener(type, (e) => window.events.push({ type, ...e.detail }));
+  // Told when a wait times out (scripts/engines.mjs): where the book stands.
+  window.__explain = () => `events ${window.events.map((e) => e.type).join(' ')}; page ${window.book.page}, animating ${window.book.animating}, `
+    + `queued ${window.book.surface.queuedTurns}, frames drawn ${window.book.surface.framesDrawn}, context lost ${window.book.surface.canvas.getContext('webgl2')?.isContextLost()}`;
   await window.book.whenIdle();
   return window.book.surface.kind;
 }
@@ -227,7 +230,7 @@ export function documentJourneys(context) {
     const red = await evaluate(async () => {
       let ended = false;
       window.turning = window.book.next();
-      window.turning.then(() => { ended = true; });
+      window.turning.then((landed) => { ended = true; window.turnLanded = landed; });
       const lifted = () => window.book.surface.book.frame().some((leaf) => !leaf.resting && leaf.curl.rho > 0.05);
       while (!lifted() && !ended) await new Promise((resolve) => requestAnimationFrame(resolve));
       if (!lifted()) return { ended, page: window.book.page, animating: window.book.animating };
@@ -240,7 +243,8 @@ export function documentJourneys(context) {
     assert.equal(red.ended, undefined, `the leaf lifted before the turn ended: ${JSON.stringify(red)}`);
     assert.equal(red.live, false, 'the live page is hidden while its leaf moves');
     assert.ok(red.n > 200, `the moving leaf shows the red block (${red.n} red pixels)`);
-    assert.equal(await evaluate(() => window.turning), true);
+    // Waited for by polling, so a turn that never lands says where the book stood (its __explain).
+    assert.equal(await browser.waitFor(() => window.turnLanded !== undefined && String(window.turnLanded)), 'true', 'the turn landed');
     await evaluate(settleBook);
     assert.deepEqual(await evaluate(() => [window.book.page, window.events.filter((e) => e.type === 'turned').length]), [3, 1]);
   });

@@ -1,6 +1,6 @@
 // Put first into every page the cross-engine suite opens (its server adds it to each <head>): what the
 // page throws, rejects or logs as an error, kept on window.__heard, since WebKit's driver hears no console;
-// and the last input events and fullscreen changes the page saw (window.__seen) and its animation frames
+// and the last input events, fullscreen changes and WebGL context losses the page saw (window.__seen) and its animation frames
 // (window.__frames), told when a wait times out, with what the test adds (window.__explain()).
 (() => {
   const heard = (window.__heard = []);
@@ -17,7 +17,9 @@
     seen.push(`${Math.round(performance.now() - t0)}ms ${event.type}${where} on ${on}${event.defaultPrevented ? ' (prevented)' : ''}`);
     if (seen.length > 40) seen.shift();
   };
-  for (const type of ['pointerdown', 'pointerup', 'click', 'dblclick', 'keydown', 'fullscreenchange', 'fullscreenerror', 'blur', 'focus']) {
+  // (WebGL's context events do not bubble: a listener on the window in the capture phase hears every canvas's.)
+  for (const type of ['pointerdown', 'pointerup', 'click', 'dblclick', 'keydown', 'fullscreenchange', 'fullscreenerror', 'blur', 'focus',
+    'webglcontextlost', 'webglcontextrestored']) {
     window.addEventListener(type, note, { capture: true });
   }
   document.addEventListener('visibilitychange', () => note({ type: `visibilitychange (${document.visibilityState})`, target: document }));
