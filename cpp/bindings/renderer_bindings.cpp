@@ -153,6 +153,7 @@ EMSCRIPTEN_BINDINGS(conecurl_renderer) {
                   }))
         .function("gridErrorPixels", &BookRenderer::gridErrorPixels)
         .function("maxTextureSize", &BookRenderer::maxTextureSize)
+        .function("anisotropy", &BookRenderer::anisotropy)
         .function("setEdgeMarks", &bindings::setEdgeMarks)
         .function("finishFirstView", &BookRenderer::finishFirstView)
         .function("prepareTurn", &BookRenderer::prepareTurn)

@@ -198,8 +198,9 @@ bool BookRenderer::build(Program& program) {
 
 bool BookRenderer::prepareTurn() {
     if (!ok() || !makeCurrent()) return true;
+    // The composite program also draws the probe of anisotropic filtering, while the page has not asked it.
     Program* const turn[] = {&leafProgram_, options_.shadows ? &shadowProgram_ : nullptr,
-                             options_.shadows || canvasSamples_ > 0 ? &compositeProgram_ : nullptr};
+                             options_.shadows || canvasSamples_ > 0 || anisotropyUnknown() ? &compositeProgram_ : nullptr};
     // Where the driver compiles beside the page (KHR_parallel_shader_compile), this call asks and a later
     // one checks, once the driver says it is done (a bounded number of asks: a driver that never says so
     // is waited for). Without it the compile happens when its status is first asked (Chromium on
@@ -226,6 +227,7 @@ bool BookRenderer::prepareTurn() {
     for (Program* program : turn) {
         if (program) build(*program);  // each leaves its program in use (programInUse_ follows), as useProgram would
     }
+    settleAnisotropy();
     return true;
 }
 
@@ -273,12 +275,6 @@ void BookRenderer::bindTexture(int unit, GLuint texture, bool toEdit) {
     boundTextures_[unit] = texture;
 }
 
-// Whether the current context's renderer string names llvmpipe. Read in JS: glGetString would keep a copy
-// of the string in the wasm heap for good.
-EM_JS(int, conecurl_renderer_is_llvmpipe, (), {
-    return /llvmpipe/i.test(String(GLctx.getParameter(0x1F01))) ? 1 : 0;  // GL_RENDERER
-});
-
 void BookRenderer::createGpuObjects() {
     if (!makeCurrent()) {
         error_ = "could not make the WebGL2 context current";
@@ -287,10 +283,9 @@ void BookRenderer::createGpuObjects() {
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTextureSize_);
     if (emscripten_webgl_enable_extension(context_, "EXT_texture_filter_anisotropic")) {
         glGetFloatv(kMaxTextureMaxAnisotropy, &maxAnisotropy_);
-        // Mesa's llvmpipe filters any anisotropy from 2 up from too fine a level: a page at rest, drawn at
-        // 2/3 of its texture, loses 1-px strokes there (trilinear keeps them). Its pages go without.
-        if (conecurl_renderer_is_llvmpipe()) maxAnisotropy_ = 1.0f;
     }
+    // Whether it keeps 1-px strokes of a page at rest is found in idle time (prepareTurn), once a page.
+    anisotropy_ = pageAnisotropy(false);
 
     // KHR_parallel_shader_compile: compiles run beside the page, and prepareTurn() can ask whether they are done.
     parallelCompile_ = emscripten_webgl_enable_extension(context_, "KHR_parallel_shader_compile");

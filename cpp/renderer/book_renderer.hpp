@@ -121,6 +121,8 @@ public:
     // The chosen grid's verified mesh error in pixels at the current canvas (NaN for fixed rows).
     double gridErrorPixels() const { return gridErrorPixels_; }
     int maxTextureSize() const { return maxTextureSize_; }
+    // The anisotropy page textures are filtered with: 1 until prepareTurn() found this GPU's filtering right.
+    float anisotropy() const { return anisotropy_; }
     // Tabs and ticks on the page blocks' fore-edge (edge_marks_renderer.hpp), drawn over the stacks.
     EdgeMarksRenderer& edgeMarks() { return edgeMarks_; }
 
@@ -131,11 +133,13 @@ public:
     // first call asks for their compiles and links and returns false, and a later one, once the driver
     // says they are done, checks them and returns true: no call waits on a compile. Without it, one call
     // compiles, links and checks them. A turn before then links its own at its first frame, as it waits.
+    // The call that finds them linked also asks, once a page, whether anisotropic filtering draws a page at
+    // rest as trilinear does (a draw read back, anisotropy_probe.cpp); until then pages go without it.
     bool prepareTurn();
 
     // The first view leaves out what its frame does not need, each a wait on the browser's GL (first_view.cpp):
     // the page textures' mipmaps (a page at rest is drawn at about its image's size; WebKit on llvmpipe spent
-    // 76-134 ms making the first ones) and asking the drawing buffer's size (in Firefox a round trip to its
+    // 76-134 ms making the first ones), asking the drawing buffer's size (in Firefox a round trip to its
     // GPU process, which waited 230 ms on all the first view had queued), taken from the canvas meanwhile.
     // The JS layer calls this once the first view is on screen, in idle time; the first frame with a moving
     // leaf does it first if that comes sooner. Returns true if the drawing buffer is not the canvas's size
@@ -252,7 +256,16 @@ private:
         }
     } gridKey_;
     int maxTextureSize_ = 0;
-    float maxAnisotropy_ = 0.0f;
+    float maxAnisotropy_ = 0.0f;  // the GPU's most (EXT_texture_filter_anisotropic), 0 without it
+    float anisotropy_ = 1.0f;     // what page textures get: 1 until this GPU is known to filter right (pageAnisotropy)
+    // The anisotropy page textures get: 1 without the extension, or where it filters a page at rest otherwise
+    // than trilinear (Mesa's llvmpipe), else up to 8. Found once a page by drawing (anisotropy_probe.cpp):
+    // with `probe` false an unknown answer is 1 and nothing is drawn.
+    float pageAnisotropy(bool probe);
+    // Once the composite program is linked (prepareTurn): the probe's answer, given to every page texture.
+    void settleAnisotropy();
+    bool anisotropyUnknown() const;  // the GPU has it and the page has not probed it yet
+    bool probeAnisotropy();  // draws, reads back and compares: a wait on the GL, for idle time
     int drawingWidth_ = 0;
     int drawingHeight_ = 0;
     bool firstView_ = true;  // see finishFirstView()

@@ -58,8 +58,8 @@ void BookRenderer::finishPageTexture(GLuint texture) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    // Small text on a tilted page stays legible with anisotropic filtering, where the GPU has it.
-    if (maxAnisotropy_ > 1.0f) glTexParameterf(GL_TEXTURE_2D, kTextureMaxAnisotropy, std::min(8.0f, maxAnisotropy_));
+    // Small text on a tilted page stays legible with anisotropic filtering, where the GPU does it right.
+    if (anisotropy_ > 1.0f) glTexParameterf(GL_TEXTURE_2D, kTextureMaxAnisotropy, anisotropy_);
 }
 
 void BookRenderer::makeMipmaps() {
@@ -67,6 +67,7 @@ void BookRenderer::makeMipmaps() {
         bindTexture(0, texture, true);
         glGenerateMipmap(GL_TEXTURE_2D);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        if (anisotropy_ > 1.0f) glTexParameterf(GL_TEXTURE_2D, kTextureMaxAnisotropy, anisotropy_);
     }
     withoutMipmaps_.clear();
 }

@@ -7,7 +7,8 @@
  * at the size drawn) and one a canvas (scaled on a canvas). Resolves with
  * - `shown`: each open page's red across a row at its middle, { page, min, max, mean, faintest } (faintest:
  *   the lightest of the darkest pixels of each stroke's span), once the book rests with its mipmaps;
- * - `uploads`: the faintest stroke of each striped page's image as it was handed to WebGL.
+ * - `uploads`: the faintest stroke of each striped page's image as it was handed to WebGL;
+ * - `anisotropy`: what the renderer's probe left its page textures (1: none).
  * Reduced 4x and more, a filtered pass shows 4-px strokes an even grey (a quarter black: about 191);
  * reduced 1.8x, every stroke still shows. A pass of one sample a pixel stripes the first and drops strokes
  * of the second.
@@ -52,8 +53,11 @@ export async function fineStrokesInPage({ width = 1600, height = 2000, period = 
     WebGL2RenderingContext.prototype.texImage2D = texImage2D;
   }
   const book = window.book;
-  // The page as a reader sees it once the book rests: the mipmaps idle time makes after the first view, made now.
+  // The page as a reader sees it once the book rests: the mipmaps idle time makes after the first view, made now,
+  // and the turn's programs idle time readies, with the probe of anisotropic filtering (a poll: the driver may
+  // still compile them, or a frame be coming).
   book.surface.renderer.finishFirstView();
+  while (!book.surface.prepareTurn()) await new Promise((resolve) => setTimeout(resolve, 10));
   book.surface.drawNow();
   const pixels = book.surface.readPixels();
   const ratio = pixels.width / book.surface.canvas.clientWidth;
@@ -67,7 +71,7 @@ export async function fineStrokesInPage({ width = 1600, height = 2000, period = 
       mean: Math.round(reds.reduce((a, b) => a + b, 0) / reds.length), faintest: faintestOf(reds, 0.6 * width),
     };
   });
-  return { shown, uploads };
+  return { shown, uploads, anisotropy: book.surface.renderer.anisotropy() };
 }
 
 /** Strokes every 8 px on a page 680 px wide: in the fixture its texture is 370 wide, a 1.8x reduction. */

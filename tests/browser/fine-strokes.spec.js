@@ -40,11 +40,13 @@ async function readStrokes(page, sampling) {
 
 const even = (page) => page.min > 150 && page.max < 232 && Math.abs(page.mean - 191) < 25;
 
-test('browser: Chromium filters a 5x reduction on both roads in one pass: the Blob page and the canvas page show their 1-px strokes as an even grey, no halving step made', async ({ page }) => {
+test('browser: Chromium filters a 5x reduction on both roads in one pass: the Blob page and the canvas page show their 1-px strokes as an even grey, no halving step made; its pages keep anisotropic filtering (the probe finds SwiftShader\'s right)', async ({ page }) => {
   const { pages, scaling, coarse } = await readStrokes(page, false);
   console.log(`filtered: ${JSON.stringify(pages)}; bitmaps asked ${JSON.stringify(scaling.bitmaps)}; coarse ${JSON.stringify(coarse)}`);
   expect(pages.map((p) => p.page)).toEqual([1, 2]);
   for (const p of pages) expect(even(p), JSON.stringify(p)).toBe(true);
+  // SwiftShader filters a page at rest with anisotropy as trilinear does: the probe keeps it (8 of its 16).
+  expect(coarse.anisotropy).toBe(8);
   // One resize of the Blob (and the probe's 16 -> 2); the canvas page drawn once from its 1600 px.
   expect(scaling.bitmaps.filter(([kind]) => kind === 'Blob').length).toBe(1);
   expect(scaling.draws.filter(([from, to]) => to > 2 && from !== 1600)).toEqual([]);

@@ -223,7 +223,9 @@ export interface BookRenderer {
   /** Fixed grid rows; 0 (default) chooses them from the canvas size for < 0.5 px error. */
   setGridRows(rows: number): void;
   maxTextureSize(): number;
-  /** Readies the programs a turning frame draws that resting frames do not (each is otherwise linked at its first draw): true once they are linked; false (ask again in a later idle task) while the driver still compiles them beside the page, where the browser has KHR_parallel_shader_compile (the first call asks for them, later ones ask whether they are done). */
+  /** The anisotropic filtering page textures get: 1 (none) until prepareTurn() has found, once a page, that this GPU filters a page at rest with it as trilinear does (Mesa's llvmpipe does not), then up to 8. */
+  anisotropy(): number;
+  /** Readies the programs a turning frame draws that resting frames do not (each is otherwise linked at its first draw), and with them asks once a page whether anisotropic filtering is right here (anisotropy()): true once they are linked; false (ask again in a later idle task) while the driver still compiles them beside the page, where the browser has KHR_parallel_shader_compile (the first call asks for them, later ones ask whether they are done). */
   prepareTurn(): boolean;
   /** Ends the first view: until then page textures go up without their mipmaps and frames take the drawing buffer's size from the canvas (neither waits on the GL). Makes the mipmaps and asks the buffer's size; true if that is not the size the last frame was drawn at (draw again). The first frame with a moving leaf calls it itself; later calls do nothing. A BookView calls it in idle time once its first frame is on screen. */
   finishFirstView(): boolean;
