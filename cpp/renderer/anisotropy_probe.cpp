@@ -10,7 +10,6 @@
 namespace conecurl {
 namespace {
 
-constexpr GLenum kTextureMaxAnisotropy = 0x84FE;  // EXT_texture_filter_anisotropic
 // A texture of 1-px black columns every 4 px on white, drawn into a target 2/3 its size: a page at rest, where
 // every pixel's footprint is square. Anisotropic filtering there must give what trilinear gives; Mesa's llvmpipe
 // filters from too fine a level instead (its pixels differ by up to 35, a stroke of 109 reading 135), a
@@ -39,8 +38,12 @@ void BookRenderer::settleAnisotropy() {
     if (anisotropy_ <= 1.0f) return;
     for (const auto& [page, texture] : pageTextures_) {
         bindTexture(0, texture, true);
-        glTexParameterf(GL_TEXTURE_2D, kTextureMaxAnisotropy, anisotropy_);
+        setBoundAnisotropy();
     }
+}
+
+void BookRenderer::setBoundAnisotropy() {
+    if (anisotropy_ > 1.0f) glTexParameterf(GL_TEXTURE_2D, kTextureMaxAnisotropy, anisotropy_);
 }
 
 bool BookRenderer::probeAnisotropy() {

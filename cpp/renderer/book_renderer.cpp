@@ -42,7 +42,6 @@ namespace conecurl {
 namespace {
 
 constexpr char kShaderPrelude[] = "#version 300 es\nprecision highp float;\n";
-constexpr GLenum kMaxTextureMaxAnisotropy = 0x84FF;   // EXT_texture_filter_anisotropic
 constexpr double kNormalStepOfHeight = 1e-3;         // the math doc's finite-difference step
 constexpr float kShadowStrength = 0.45f;
 constexpr float kShadowPenumbra = 0.015f;            // half the shadow's soft edge, a fraction of the page width

@@ -256,7 +256,10 @@ private:
         }
     } gridKey_;
     int maxTextureSize_ = 0;
-    float maxAnisotropy_ = 0.0f;  // the GPU's most (EXT_texture_filter_anisotropic), 0 without it
+    // EXT_texture_filter_anisotropic's enums: a texture's level, and the GPU's most.
+    static constexpr GLenum kTextureMaxAnisotropy = 0x84FE;
+    static constexpr GLenum kMaxTextureMaxAnisotropy = 0x84FF;
+    float maxAnisotropy_ = 0.0f;  // the GPU's most, 0 without the extension
     float anisotropy_ = 1.0f;     // what page textures get: 1 until this GPU is known to filter right (pageAnisotropy)
     // The anisotropy page textures get: 1 without the extension, or where it filters a page at rest otherwise
     // than trilinear (Mesa's llvmpipe), else up to 8. Found once a page by drawing (anisotropy_probe.cpp):
@@ -266,6 +269,7 @@ private:
     void settleAnisotropy();
     bool anisotropyUnknown() const;  // the GPU has it and the page has not probed it yet
     bool probeAnisotropy();  // draws, reads back and compares: a wait on the GL, for idle time
+    void setBoundAnisotropy();  // the page texture bound for editing gets anisotropy_ (no call where it is 1)
     int drawingWidth_ = 0;
     int drawingHeight_ = 0;
     bool firstView_ = true;  // see finishFirstView()

@@ -13,9 +13,6 @@ EM_JS(void, conecurl_canvas_size, (int* width, int* height), {
 });
 
 namespace conecurl {
-namespace {
-constexpr GLenum kTextureMaxAnisotropy = 0x84FE;  // EXT_texture_filter_anisotropic
-}  // namespace
 
 bool BookRenderer::finishFirstView() {
     if (!firstView_) return false;
@@ -59,7 +56,7 @@ void BookRenderer::finishPageTexture(GLuint texture) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     // Small text on a tilted page stays legible with anisotropic filtering, where the GPU does it right.
-    if (anisotropy_ > 1.0f) glTexParameterf(GL_TEXTURE_2D, kTextureMaxAnisotropy, anisotropy_);
+    setBoundAnisotropy();
 }
 
 void BookRenderer::makeMipmaps() {
@@ -67,7 +64,7 @@ void BookRenderer::makeMipmaps() {
         bindTexture(0, texture, true);
         glGenerateMipmap(GL_TEXTURE_2D);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-        if (anisotropy_ > 1.0f) glTexParameterf(GL_TEXTURE_2D, kTextureMaxAnisotropy, anisotropy_);
+        setBoundAnisotropy();
     }
     withoutMipmaps_.clear();
 }
