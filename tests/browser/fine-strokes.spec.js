@@ -66,3 +66,47 @@ test('browser: where drawImage and createImageBitmap\'s resize take one sample a
   expect(scaling.bitmaps.filter(([kind]) => kind === 'ImageBitmap').map(([, width]) => width).slice(0, 1)).toEqual([400]);
   expect(scaling.draws.filter(([from]) => from === 1600).map(([, to]) => to)).toContain(800);
 });
+
+test('browser: a book turned before its first idle moment still probes its anisotropic filtering once the leaf lands: idle time while the leaf moves asks again 250 ms later (not at each idle moment), and after the landing the probe runs (SwiftShader: 8) with no warm-up frame (the turn drew its own)', async ({ page }) => {
+  await openReady(page, FIXTURE);
+  const result = await page.evaluate(async () => {
+    const idleCallback = window.requestIdleCallback;
+    const held = [];  // the page's idle callbacks, held until the turn is under way
+    window.requestIdleCallback = (callback, options) => held.push([callback, options]);
+    const pages = Array.from({ length: 8 }, (_, i) => window.makeNumberedPage(i));
+    let book;
+    try {
+      book = await window.Flipbook.create(document.getElementById('container'), { pages, display: 'double', duration: 3000, startPage: 1 });
+    } finally {
+      window.requestIdleCallback = idleCallback;
+    }
+    window.book = book;
+    const asked = [];  // each prepareTurn() the book made: was a leaf moving, and what it answered
+    const prepareTurn = book.surface.prepareTurn.bind(book.surface);
+    book.surface.prepareTurn = () => {
+      const moving = book.surface.animating;
+      const done = prepareTurn();
+      asked.push({ moving, done, at: Math.round(performance.now()) });
+      return done;
+    };
+    const landing = book.next();
+    while (!book.surface.animating) await new Promise((resolve) => requestAnimationFrame(resolve));
+    // The leaf moves (a 3 s turn): the book's idle call comes now.
+    for (const [callback, options] of held.splice(0)) idleCallback(callback, options);
+    while (book.surface.animating && !asked.some((a) => a.moving)) await new Promise((resolve) => idleCallback(resolve));
+    const askedWhileMoving = asked.filter((a) => a.moving).length;
+    if (!(await landing)) throw new Error('the turn did not land');
+    const anisotropyAtLanding = book.surface.renderer.anisotropy();
+    for (let i = 0; i < 40 && !asked.some((a) => a.done); i++) await new Promise((resolve) => idleCallback(resolve));
+    return { askedWhileMoving, asked, anisotropyAtLanding, anisotropy: book.surface.renderer.anisotropy(), warmDraws: book.surface.renderer.framesDrawn() - book.surface.framesDrawn };  // frames drawn that never reached the screen
+  });
+  console.log(`prepareTurn around a first turn: ${JSON.stringify(result)}`);
+  expect(result.askedWhileMoving).toBeGreaterThanOrEqual(1);
+  const whileMoving = result.asked.filter((x) => x.moving);
+  for (const a of whileMoving) expect(a.done).toBe(false);
+  // Asked again a little later each time (250 ms), not at every idle moment between the turn's frames.
+  for (let i = 1; i < whileMoving.length; i++) expect(whileMoving[i].at - whileMoving[i - 1].at).toBeGreaterThanOrEqual(245);
+  expect(result.anisotropyAtLanding).toBe(1);  // no verdict yet: pages go without it
+  expect(result.anisotropy).toBe(8);
+  expect(result.warmDraws).toBe(0);
+});

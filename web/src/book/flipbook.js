@@ -1,7 +1,7 @@
 // The public entry point: a flipbook in a container element. Flipbook is the book controller
 // (book-controller.js) over the WebGL surface, BookView on the wasm engine, sharing the page's WebGL
 // contexts with other books; without WebGL2 or the engine, create() leaves a StaticBook in its place.
-import { idleAfterFirstFrame, whenIdle } from '../surfaces/after-first-frame.js';
+import { idleAfterFirstFrame, whenIdle, whenIdleAfter } from '../surfaces/after-first-frame.js';
 import { loadEngine } from '../engine/load-engine.js';
 import { BookView } from '../surfaces/book-view.js';
 import { leafThicknessOf } from '../engine/layout.js';
@@ -12,6 +12,7 @@ import { knownSoftwareWebGL, probeWebGL } from '../surfaces/software-gl.js';
 
 // Failures after which a book can still be shown, as still pages: Flipbook.create falls back on these.
 const FALLBACK_CODES = ['webgl2-unavailable', 'engine-unavailable'];
+const PREPARE_RETRY_MS = 250;  // how soon prepareTurn() is asked again while a leaf moves
 
 // The book's document in place of `pages`: `pdf` (a URL, ArrayBuffer or Uint8Array; pdf.js is imported
 // only then) or `document` (a published document's book.json URL: conecurl publish wrote it).
@@ -84,7 +85,12 @@ export class Flipbook extends BookController {
     // The first view is shown with the programs it draws (BookRenderer links each on first use): the
     // ones a turn draws are linked when the page is next idle once the first frame is on screen, so neither
     // the first page nor the first turn waits.
-    const prepare = () => { if (this._surface?.prepareTurn?.() === false) this._defer(whenIdle, prepare); };
+    // While a leaf moves it is asked again a little later (the renderer's page-wide checks wait for rest),
+    // not at each idle moment between the turn's frames.
+    const prepare = () => {
+      if (this._surface?.prepareTurn?.() !== false) return;
+      this._defer(this._surface.moving ? (task) => whenIdleAfter(PREPARE_RETRY_MS, task) : whenIdle, prepare);
+    };
     this._defer(idleAfterFirstFrame, prepare);
     return this;
   }

@@ -38,6 +38,13 @@ export function whenIdle(task) {
   return () => cancelIdleCallback(id);
 }
 
+/** Calls `task` when the page is next idle after `ms` (a later look, not one each idle moment). Returns its cancel. */
+export function whenIdleAfter(ms, task) {
+  let cancel = null;
+  const timer = setTimeout(() => { cancel = whenIdle(task); }, ms);
+  return () => (cancel ? cancel() : clearTimeout(timer));
+}
+
 /**
  * Calls `task` once, after `count` animation frames have run, or at once when the page is or becomes hidden
  * (a hidden page runs none). Frames, not time: each one the browser renders is a chance to paint. Returns its cancel.

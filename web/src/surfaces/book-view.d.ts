@@ -59,6 +59,8 @@ export class BookView {
    */
   edgeMarkPlaces(): Array<{ mark: number; page: number; kind: 'tab' | 'tick'; turned: boolean; x: number; y: number; width: number; height: number }>;
   readonly animating: boolean;
+  /** Frames with a moving leaf are being drawn now (a turn, a riffle, a held leaf settling); read without a call into the engine. */
+  readonly moving: boolean;
   /** Frames drawn so far: the book draws only while something moves or changes. */
   readonly framesDrawn: number;
   /** The share of the drawing buffer's width and height frames with moving leaves are drawn at now (the `resolution` option); 1 at rest too. */

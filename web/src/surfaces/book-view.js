@@ -47,6 +47,7 @@ export class BookView {
     this.contextLease = null;
     this._poseFrom = null;  // the settled position showTurn() poses from
     this._warmDraws = 0;  // frames drawn by prepareTurn() that never reached the screen
+    this._turned = false;  // a frame with a moving leaf has been drawn (prepareTurn's warm-up is then not needed)
     this._cancelFirstViewFinish = null;  // set once the first frame is drawn: cancels the first view's finish to come (see _drawn)
     this._resolution = new MovingResolution(options.resolution ?? 'auto');
     this._frames = new FrameScheduler({
@@ -96,6 +97,7 @@ export class BookView {
   get zoom() { return this.book.zoom().scale; }  // view magnification, 1 to MAX_ZOOM
   get maxTextureSize() { return this.renderer.maxTextureSize(); }
   get animating() { return this.book.animating(); }
+  get moving() { return this._frames.moving; }  // frames with a moving leaf are being drawn (no call into the engine)
   get framesDrawn() { return this.renderer.framesDrawn() - this._warmDraws; }  // so far: the book draws only while something moves
   get movingScale() { return this._resolution.scale; }  // of the buffer's size, frames with moving leaves are drawn at
   /** Turns asked for that wait for a leaf still in flight. */
@@ -271,11 +273,12 @@ export class BookView {
   readPixels() { return this.renderer.readPixels(); }
   /** Readies a turn's programs and draws a posed turning frame under the resting one (warm-turn.js): true
    * once done, false to be called again in a later idle task (a frame is coming, or the driver still
-   * compiles the programs beside the page: BookRenderer::prepareTurn); a turn under way links its own. */
+   * compiles the programs beside the page: BookRenderer::prepareTurn). A turn under way links its own, but
+   * the renderer's page-wide checks (its anisotropic filtering probe) wait for rest: asked again after it. */
   prepareTurn() {
-    if (this._frames.moving || this._context.lost || !this.renderer) return true;
-    if (this._frames.pending || !this.renderer.prepareTurn()) return false;
-    if (this._poseFrom === null) this._warmDraws += warmTurn(this.book, this.renderer, () => this.fitCanvas());
+    if (this._context.lost || !this.renderer) return true;
+    if (this._frames.moving || this._frames.pending || !this.renderer.prepareTurn()) return false;
+    if (this._poseFrom === null && !this._turned) this._warmDraws += warmTurn(this.book, this.renderer, () => this.fitCanvas());
     return true;
   }
 
@@ -337,6 +340,7 @@ export class BookView {
   // and draws (nothing while a parked context is away: the clock runs on). Returns its flags.
   _tick(now) {
     const drawing = !this._context.lost;
+    if (this._frames.moving) this._turned = true;  // a moving frame drew the turn's draw states: no warm-up needed
     if (drawing) this._size.fitIfStale();
     const scale = drawing ? this._resolution.nextScale(now, this._frames.moving, window.devicePixelRatio || 1) : null;
     if (scale !== null) this.renderer.setOptions({ movingScale: scale });  // only when it changes
