@@ -131,7 +131,7 @@ export class BookView {
   /** Draws at once (same task as a following readPixels()). */
   drawNow(): void;
   readPixels(): { width: number; height: number; data: Uint8ClampedArray };
-  /** Readies the programs a turn draws that a resting book does not, and at rest draws a posed turning frame under the resting one (a Flipbook does it in idle time once its first frame is on screen): true once done, or false while a frame is coming or the driver still compiles the programs beside the page (KHR_parallel_shader_compile: ask again in a later idle task). */
+  /** Readies the programs a turn draws that a resting book does not, and at rest draws a posed turning frame under the resting one (a Flipbook does it in idle time once its first frame is on screen): true once done, or false while a frame is coming, a leaf moves (the renderer's check of anisotropic filtering waits for rest) or the driver still compiles the programs beside the page (KHR_parallel_shader_compile: ask again in a later idle task). */
   prepareTurn(): boolean;
   requestRender(): void;
   /**
