@@ -47,7 +47,6 @@ export class BookView {
     this.contextLease = null;
     this._poseFrom = null;  // the settled position showTurn() poses from
     this._warmDraws = 0;  // frames drawn by prepareTurn() that never reached the screen
-    this._turned = false;  // a frame with a moving leaf has been drawn (prepareTurn's warm-up is then not needed)
     this._cancelFirstViewFinish = null;  // set once the first frame is drawn: cancels the first view's finish to come (see _drawn)
     this._resolution = new MovingResolution(options.resolution ?? 'auto');
     this._frames = new FrameScheduler({
@@ -278,7 +277,8 @@ export class BookView {
   prepareTurn() {
     if (this._context.lost || !this.renderer) return true;
     if (this._frames.moving || this._frames.pending || !this.renderer.prepareTurn()) return false;
-    if (this._poseFrom === null && !this._turned) this._warmDraws += warmTurn(this.book, this.renderer, () => this.fitCanvas());
+    // A frame that moved drew the turn's draw states already: no posed frame is needed then.
+    if (this._poseFrom === null && !this._frames.moved) this._warmDraws += warmTurn(this.book, this.renderer, () => this.fitCanvas());
     return true;
   }
 
@@ -340,7 +340,6 @@ export class BookView {
   // and draws (nothing while a parked context is away: the clock runs on). Returns its flags.
   _tick(now) {
     const drawing = !this._context.lost;
-    if (this._frames.moving) this._turned = true;  // a moving frame drew the turn's draw states: no warm-up needed
     if (drawing) this._size.fitIfStale();
     const scale = drawing ? this._resolution.nextScale(now, this._frames.moving, window.devicePixelRatio || 1) : null;
     if (scale !== null) this.renderer.setOptions({ movingScale: scale });  // only when it changes

@@ -14,12 +14,15 @@ export class FrameScheduler {
     this._flags = flags;
     this._frame = 0;       // the animation frame asked for, 0 for none
     this._moving = false;  // the last frame still moved
+    this._moved = false;   // some frame has moved
     this._settled = [];    // called once every leaf has landed
     this._run = (now) => this._tick(now);
   }
 
   /** The last frame still moved: the next one comes anyway. */
   get moving() { return this._moving; }
+  /** Some frame so far has moved (drawn a leaf in flight or held). */
+  get moved() { return this._moved; }
   /** A frame is asked for and not yet drawn. */
   get pending() { return this._frame !== 0; }
 
@@ -50,6 +53,7 @@ export class FrameScheduler {
     if (!this._view.runs()) return;
     const flags = this._view.tick(now);
     this._moving = Boolean(flags & this._flags.moving);
+    this._moved ||= this._moving;
     this._view.ticked();
     // One frame chain only: an upload or a resize in the step may have asked for the next frame already.
     if (this._moving && !this._frame) this._frame = requestAnimationFrame(this._run);
